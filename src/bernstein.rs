@@ -1,0 +1,176 @@
+//! Binomials, Bernstein polynomials, and the power basis ↔ Bernstein basis conversion.
+//!
+//! `B_i^n(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ`. A curve `Σ bᵢ B_i^n(t)` has the power form `Σ c_k t^k`
+//! with `c = A·b`, where `A[k][i] = (−1)^{k−i} C(n,k) C(k,i)` (seed 003's "matrix form"; for
+//! `n = 3` the rows are `1 0 0 0 / −3 3 0 0 / 3 −6 3 0 / −1 3 −3 1`). The inverse is
+//! `b_i = Σ_{k≤i} C(i,k)/C(n,k) · c_k`.
+
+use crate::point::Point;
+use crate::scalar::Scalar;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive};
+
+/// The binomial coefficient `C(n, k)` (0 when `k > n`), exact.
+///
+/// # Example
+/// ```
+/// assert_eq!(casteljau::bernstein::binomial(5, 2), 10.into());
+/// ```
+pub fn binomial(n: usize, k: usize) -> BigInt {
+    if k > n {
+        return BigInt::from(0);
+    }
+    let k = k.min(n - k);
+    let mut c = BigInt::one();
+    for i in 0..k {
+        c = c * (n - i) / (i + 1);
+    }
+    c
+}
+
+/// `C(n, k)` as a scalar (exact for exact scalars, rounded for `f64` when beyond 2⁵³).
+pub fn binomial_scalar<S: Scalar>(n: usize, k: usize) -> S {
+    let c = binomial(n, k);
+    match c.to_i64() {
+        Some(v) => S::from_i64(v),
+        None => S::from_ratio(&BigRational::from_integer(c)),
+    }
+}
+
+/// Row `n` of Pascal's triangle as scalars: `C(n, 0), …, C(n, n)`.
+pub fn binomial_row<S: Scalar>(n: usize) -> Vec<S> {
+    (0..=n).map(|k| binomial_scalar(n, k)).collect()
+}
+
+/// `tᵏ` for `k = 0..=n`.
+pub fn powers<S: Scalar>(t: &S, n: usize) -> Vec<S> {
+    let mut p = Vec::with_capacity(n + 1);
+    p.push(S::one());
+    for k in 1..=n {
+        let next = p[k - 1].clone() * t;
+        p.push(next);
+    }
+    p
+}
+
+/// The Bernstein polynomial `B_i^n(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ` (0 when `i > n`).
+///
+/// # Example
+/// ```
+/// use casteljau::{bernstein::bernstein, ratio};
+/// assert_eq!(bernstein(1, 3, &ratio(1, 3)), ratio(4, 9));
+/// ```
+pub fn bernstein<S: Scalar>(i: usize, n: usize, t: &S) -> S {
+    if i > n {
+        return S::zero();
+    }
+    let u = S::one() - t;
+    binomial_scalar::<S>(n, i) * pow(t, i) * pow(&u, n - i)
+}
+
+/// All `B_0^n(t), …, B_n^n(t)` (they sum to 1: the partition of unity).
+pub fn bernstein_all<S: Scalar>(n: usize, t: &S) -> Vec<S> {
+    let tp = powers(t, n);
+    let up = powers(&(S::one() - t), n);
+    (0..=n).map(|i| binomial_scalar::<S>(n, i) * &tp[i] * &up[n - i]).collect()
+}
+
+/// `x^e` by repeated squaring.
+pub fn pow<S: Scalar>(x: &S, mut e: usize) -> S {
+    let mut base = x.clone();
+    let mut acc = S::one();
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc * &base;
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.clone() * &base;
+        }
+    }
+    acc
+}
+
+/// The Bernstein sum `Σ bᵢ B_i^n(t)` evaluated term by term (an oracle independent of de
+/// Casteljau's recursion).
+pub fn bernstein_sum<S: Scalar>(points: &[Point<S>], t: &S) -> Point<S> {
+    let n = points.len() - 1;
+    let basis = bernstein_all(n, t);
+    let mut acc = Point::origin(points[0].dim());
+    for (b, p) in basis.iter().zip(points) {
+        acc = acc.add(&p.scale(b));
+    }
+    acc
+}
+
+/// The conversion matrix `A` with `power coefficients = A · control points`:
+/// `A[k][i] = (−1)^{k−i} C(n,k) C(k,i)` for `i ≤ k`, else 0.
+///
+/// # Example
+/// ```
+/// let a = casteljau::bernstein::bernstein_to_power_matrix(2);
+/// let rows: Vec<Vec<i64>> = a.iter().map(|r| r.iter().map(|x| x.try_into().unwrap()).collect()).collect();
+/// assert_eq!(rows, vec![vec![1, 0, 0], vec![-2, 2, 0], vec![1, -2, 1]]);
+/// ```
+pub fn bernstein_to_power_matrix(n: usize) -> Vec<Vec<BigInt>> {
+    (0..=n)
+        .map(|k| {
+            (0..=n)
+                .map(|i| {
+                    let v = binomial(n, k) * binomial(k, i);
+                    if (k - i.min(k)) % 2 == 1 { -v } else { v }
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The inverse conversion matrix: `b_i = Σ_k M[i][k] c_k` with `M[i][k] = C(i,k) / C(n,k)`.
+pub fn power_to_bernstein_matrix(n: usize) -> Vec<Vec<BigRational>> {
+    (0..=n).map(|i| (0..=n).map(|k| BigRational::new(binomial(i, k), binomial(n, k))).collect()).collect()
+}
+
+/// Power-form coefficients `c_0, …, c_n` (vectors) of the curve with control points `points`:
+/// `Σ bᵢ B_i^n(t) = Σ c_k t^k`, with `c_k = C(n,k) Σ_{i≤k} (−1)^{k−i} C(k,i) bᵢ`.
+pub fn to_power<S: Scalar>(points: &[Point<S>]) -> Vec<Point<S>> {
+    let n = points.len() - 1;
+    let dim = points[0].dim();
+    (0..=n)
+        .map(|k| {
+            let mut acc = Point::origin(dim);
+            for i in 0..=k {
+                let c: S = binomial_scalar(k, i);
+                let term = points[i].scale(&c);
+                acc = if (k - i) % 2 == 1 { acc.sub(&term) } else { acc.add(&term) };
+            }
+            acc.scale(&binomial_scalar(n, k))
+        })
+        .collect()
+}
+
+/// Control points of the degree-`n` curve `Σ c_k t^k` (`n = coeffs.len() − 1`):
+/// `b_i = Σ_{k≤i} C(i,k)/C(n,k) · c_k`.
+pub fn from_power<S: Scalar>(coeffs: &[Point<S>]) -> Vec<Point<S>> {
+    let n = coeffs.len() - 1;
+    let dim = coeffs[0].dim();
+    (0..=n)
+        .map(|i| {
+            let mut acc = Point::origin(dim);
+            for k in 0..=i {
+                let f = binomial_scalar::<S>(i, k) / binomial_scalar::<S>(n, k);
+                acc = acc.add(&coeffs[k].scale(&f));
+            }
+            acc
+        })
+        .collect()
+}
+
+/// Horner evaluation of the power form `Σ c_k t^k` (the third oracle).
+pub fn eval_power<S: Scalar>(coeffs: &[Point<S>], t: &S) -> Point<S> {
+    let mut acc = coeffs.last().expect("at least one coefficient").clone();
+    for c in coeffs.iter().rev().skip(1) {
+        acc = acc.scale(t).add(c);
+    }
+    acc
+}

@@ -1,0 +1,427 @@
+//! The `casteljau` command line: clap-derived command structs and their execution.
+//!
+//! Exit codes: `0` success, `1` a check failed (`prove` found a wrong verdict), `2` bad input
+//! (malformed number, wrong point count, bad option). In a batch every line is answered; a bad
+//! line gets an error (with its line number) and the exit code is 2 at the end.
+
+use crate::bezier::BezierCurve;
+use crate::casteljau::{subdivide_repeatedly, subdivision_intervals};
+use crate::claims;
+use crate::error::{Error, Position, Result};
+use crate::fraction_free;
+use crate::parse::{parse_number, parse_points};
+use crate::point::Point;
+use crate::scalar::Scalar;
+use clap::{Args, Parser, Subcommand};
+use num_rational::BigRational;
+use serde_json::{Value, json};
+use std::io::{BufRead, Read, Write};
+
+const AFTER_HELP: &str = "\
+CURVES: control points as exact numbers (integers, p/q, decimals such as 0.125 or 1.5e-3),
+commas between points: \"x0 y0, x1 y1, x2 y2\". With --input FILE (or '-' / no curve: stdin)
+each line is one curve; numbers may be separated by whitespace or commas, read --dim at a time.
+Blank lines and lines starting with '#' are skipped.
+
+EXIT CODES: 0 ok; 1 a check failed; 2 bad input (the message names the token and position).";
+
+/// casteljau: Bézier curves in exact arithmetic.
+#[derive(Parser, Debug)]
+#[command(name = "casteljau", version, about, after_help = AFTER_HELP)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Evaluate b(t) exactly (fraction-free de Casteljau).
+    Eval {
+        /// Parameter values (repeatable): exact numbers.
+        #[arg(long = "t", required = true, allow_hyphen_values = true)]
+        t: Vec<String>,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Split at t (Lemma 2) into the control polygons of [0,t] and [t,1]; with --depth, repeat.
+    Subdivide {
+        /// The split parameter.
+        #[arg(long = "t", default_value = "1/2", allow_hyphen_values = true)]
+        t: String,
+        /// Split every piece again, depth times (2^depth pieces, as in seed 001 Fig. 10).
+        #[arg(long, default_value_t = 1)]
+        depth: u32,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Degree elevation: the same curve with `by` more control points.
+    Elevate {
+        /// How many degrees to add.
+        #[arg(long, default_value_t = 1)]
+        by: usize,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Power form: coefficients c_k with b(t) = Σ c_k t^k, and the conversion matrix.
+    Power {
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The de Casteljau scheme: every b_i^r(t).
+    Triangle {
+        /// The parameter.
+        #[arg(long = "t", allow_hyphen_values = true)]
+        t: String,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The k-th derivative curve (hodograph for k = 1).
+    Derivative {
+        /// The order k.
+        #[arg(long, default_value_t = 1)]
+        order: usize,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Exact degree reduction: the true degree and the control points of that degree.
+    Reduce {
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Check the seeds' claims (identity (8) for n ≤ --max-n, seed 001/003 examples).
+    Prove {
+        /// Largest n for identity (8).
+        #[arg(long, default_value_t = 40)]
+        max_n: usize,
+        /// Only claims whose id contains this text.
+        #[arg(long)]
+        filter: Option<String>,
+        /// One JSON object per claim.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// Where the curves come from, and the output form.
+#[derive(Args, Debug)]
+pub struct CurveArgs {
+    /// One curve, e.g. "0 0, 1 2, 2 0". Omit to read --input or stdin.
+    #[arg(allow_hyphen_values = true)]
+    pub curve: Option<String>,
+    /// A batch file, one curve per line ('-' for stdin).
+    #[arg(long, short)]
+    pub input: Option<String>,
+    /// Dimension of the control points (2 or 3; any ≥ 1 works).
+    #[arg(long, default_value_t = 2)]
+    pub dim: usize,
+    /// JSON Lines output with exact strings.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Largest accepted `--dim`.
+pub const MAX_DIM: usize = 64;
+/// Largest batch input, in bytes.
+pub const MAX_INPUT_BYTES: u64 = 256 * 1024 * 1024;
+
+/// Parses the command line and runs it; returns the process exit code.
+pub fn main() -> i32 {
+    let cli = Cli::parse();
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let code = run(cli, &mut out);
+    let _ = out.flush();
+    code
+}
+
+/// Runs a parsed command, writing answers to `out` and errors to stderr; returns the exit code.
+pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
+    match cli.command {
+        Command::Prove { max_n, filter, json } => prove(max_n, filter.as_deref(), json, out),
+        Command::Eval { t, curve } => {
+            let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
+            with_param(ts, &curve, out, |c, ts| eval(c, ts))
+        }
+        Command::Subdivide { t, depth, curve } => {
+            with_param(option_number("--t", &t), &curve, out, |c, t0| subdivide(c, t0, depth))
+        }
+        Command::Elevate { by, curve } => batch(&curve, out, |c| {
+            let e = c.elevate(by)?;
+            Ok((e.to_string(), json!({"degree": e.degree(), "points": points_json(e.points())})))
+        }),
+        Command::Power { curve } => batch(&curve, out, |c| Ok(power(c))),
+        Command::Triangle { t, curve } => with_param(option_number("--t", &t), &curve, out, triangle),
+        Command::Derivative { order, curve } => batch(&curve, out, |c| {
+            let d = c.derivative(order);
+            Ok((d.to_string(), json!({"order": order, "degree": d.degree(), "points": points_json(d.points())})))
+        }),
+        Command::Reduce { curve } => batch(&curve, out, |c| {
+            let r = c.reduce_degree();
+            let text = format!("degree {} (written as {}): {}", r.degree(), c.degree(), r);
+            Ok((text, json!({"degree": c.degree(), "real_degree": r.degree(), "points": points_json(r.points())})))
+        }),
+    }
+}
+
+fn option_number(option: &str, s: &str) -> Result<BigRational> {
+    parse_number(s.trim(), Position { line: None, column: 1, token: 1 }).map_err(|e| match e {
+        Error::ParseNumber { token, reason, .. } => {
+            Error::InvalidArgument { message: format!("{option}: bad number {token:?}: {reason}") }
+        }
+        other => other,
+    })
+}
+
+fn with_param<P>(
+    param: Result<P>,
+    args: &CurveArgs,
+    out: &mut dyn Write,
+    f: impl Fn(&BezierCurve<BigRational>, &P) -> Result<(String, Value)>,
+) -> i32 {
+    match param {
+        Ok(p) => batch(args, out, |c| f(c, &p)),
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            2
+        }
+    }
+}
+
+/// Reads the curves (argument, file, or stdin) and answers each; exit 2 if any line was bad.
+fn batch(
+    args: &CurveArgs,
+    out: &mut dyn Write,
+    f: impl Fn(&BezierCurve<BigRational>) -> Result<(String, Value)>,
+) -> i32 {
+    if args.dim == 0 || args.dim > MAX_DIM {
+        eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
+        return 2;
+    }
+    let inputs: Vec<(Option<usize>, String)> = match (&args.curve, &args.input) {
+        (Some(_), Some(_)) => {
+            eprintln!("casteljau: give a curve or --input, not both");
+            return 2;
+        }
+        (Some(c), None) => vec![(None, c.clone())],
+        (None, source) => match read_lines(source.as_deref()) {
+            Ok(lines) => lines,
+            Err(e) => {
+                eprintln!("casteljau: {e}");
+                return 2;
+            }
+        },
+    };
+    let mut code = 0;
+    for (line, text) in inputs {
+        let answer = parse_points(&text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c));
+        let written = match answer {
+            Ok((text, mut value)) => {
+                if args.json {
+                    if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
+                        obj.insert("line".into(), json!(l));
+                    }
+                    writeln!(out, "{value}")
+                } else {
+                    writeln!(out, "{text}")
+                }
+            }
+            Err(e) => {
+                code = 2;
+                let e = match (e, line) {
+                    (Error::EmptyCurve { .. }, l) => Error::EmptyCurve { line: l },
+                    (e, _) => e,
+                };
+                if args.json {
+                    writeln!(out, "{}", json!({"line": line, "error": e.to_string()}))
+                } else {
+                    eprintln!("casteljau: {e}");
+                    Ok(())
+                }
+            }
+        };
+        if written.is_err() {
+            return code.max(2); // stdout closed (e.g. a pipe): stop quietly
+        }
+    }
+    code
+}
+
+fn read_lines(source: Option<&str>) -> std::result::Result<Vec<(Option<usize>, String)>, String> {
+    let mut text = String::new();
+    let read = match source {
+        None | Some("-") => std::io::stdin().lock().take(MAX_INPUT_BYTES + 1).read_to_string(&mut text),
+        Some(path) => std::fs::File::open(path)
+            .map_err(|e| format!("cannot open {path}: {e}"))?
+            .take(MAX_INPUT_BYTES + 1)
+            .read_to_string(&mut text),
+    };
+    read.map_err(|e| format!("cannot read input: {e}"))?;
+    if text.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!("input larger than {MAX_INPUT_BYTES} bytes"));
+    }
+    Ok(text
+        .as_bytes()
+        .lines()
+        .enumerate()
+        .filter_map(|(i, l)| {
+            let l = l.ok()?;
+            let trimmed = l.trim();
+            (!trimmed.is_empty() && !trimmed.starts_with('#')).then(|| (Some(i + 1), l))
+        })
+        .collect())
+}
+
+/// Exact strings of a point's coordinates.
+pub fn point_json<S: Scalar>(p: &Point<S>) -> Value {
+    Value::Array(p.coords.iter().map(|c| Value::String(c.to_string())).collect())
+}
+
+/// Exact strings of a polygon.
+pub fn points_json<S: Scalar>(ps: &[Point<S>]) -> Value {
+    Value::Array(ps.iter().map(point_json).collect())
+}
+
+fn eval(c: &BezierCurve<BigRational>, ts: &[BigRational]) -> Result<(String, Value)> {
+    let ic = fraction_free::IntegerCurve::new(c);
+    let values: Vec<Point<BigRational>> = ts.iter().map(|t| fraction_free::eval_integer(&ic, t)).collect();
+    let text = ts.iter().zip(&values).map(|(t, p)| format!("b({t}) = {p}")).collect::<Vec<_>>().join("\n");
+    let js: Vec<Value> =
+        ts.iter().zip(&values).map(|(t, p)| json!({"t": t.to_string(), "point": point_json(p)})).collect();
+    Ok((text, json!({"degree": c.degree(), "values": js})))
+}
+
+fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u32) -> Result<(String, Value)> {
+    if depth == 1 {
+        let (l, r) = fraction_free::subdivide(c, t0);
+        let text = format!("left:  {l}\nright: {r}");
+        return Ok((
+            text,
+            json!({"t": t0.to_string(), "left": points_json(l.points()), "right": points_json(r.points())}),
+        ));
+    }
+    let pieces = subdivide_repeatedly(c, t0, depth)?;
+    let ivs = subdivision_intervals(t0, depth);
+    let text = pieces.iter().zip(&ivs).map(|(p, (a, b))| format!("[{a}, {b}]: {p}")).collect::<Vec<_>>().join("\n");
+    let js: Vec<Value> = pieces
+        .iter()
+        .zip(&ivs)
+        .map(|(p, (a, b))| json!({"interval": [a.to_string(), b.to_string()], "points": points_json(p.points())}))
+        .collect();
+    Ok((text, json!({"t": t0.to_string(), "depth": depth, "pieces": js})))
+}
+
+fn triangle(c: &BezierCurve<BigRational>, t: &BigRational) -> Result<(String, Value)> {
+    let tri = fraction_free::triangle(c, t);
+    let text = tri
+        .rows
+        .iter()
+        .enumerate()
+        .map(|(r, row)| {
+            let pts: Vec<String> = row.iter().map(|p| p.to_string()).collect();
+            format!("r={r}: {}", pts.join(" "))
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let rows: Vec<Value> = tri.rows.iter().map(|r| points_json(r)).collect();
+    Ok((text, json!({"t": t.to_string(), "rows": rows, "point": point_json(tri.point())})))
+}
+
+fn power(c: &BezierCurve<BigRational>) -> (String, Value) {
+    let coeffs = c.power_coefficients();
+    let names = ["x", "y", "z"];
+    let lines: Vec<String> = (0..c.dim())
+        .map(|k| {
+            let name = names.get(k).map(|s| s.to_string()).unwrap_or(format!("x{k}"));
+            let poly: Vec<BigRational> = coeffs.iter().map(|p| p.coords[k].clone()).collect();
+            format!("{name}(t) = {}", format_polynomial(&poly, "t"))
+        })
+        .collect();
+    let matrix: Vec<Vec<String>> = crate::bernstein::bernstein_to_power_matrix(c.degree())
+        .iter()
+        .map(|r| r.iter().map(|v| v.to_string()).collect())
+        .collect();
+    (lines.join("\n"), json!({"degree": c.degree(), "coefficients": points_json(&coeffs), "matrix": matrix}))
+}
+
+/// `c0 + c1 t + c2 t^2 …` with exact coefficients, zero terms omitted (`0` for the zero polynomial).
+pub fn format_polynomial(coeffs: &[BigRational], var: &str) -> String {
+    let mut s = String::new();
+    for (k, c) in coeffs.iter().enumerate() {
+        if Scalar::is_zero(c) {
+            continue;
+        }
+        let neg = crate::scalar::Exact::sign(c) == std::cmp::Ordering::Less;
+        let mag = if neg { -c.clone() } else { c.clone() };
+        if s.is_empty() {
+            s.push_str(if neg { "-" } else { "" });
+        } else {
+            s.push_str(if neg { " - " } else { " + " });
+        }
+        let one = mag == crate::scalar::rat(1);
+        match k {
+            0 => s.push_str(&mag.to_string()),
+            _ => {
+                if !one {
+                    s.push_str(&mag.to_string());
+                    if !mag.is_integer() {
+                        s.push('*');
+                    }
+                }
+                s.push_str(var);
+                if k > 1 {
+                    s.push_str(&format!("^{k}"));
+                }
+            }
+        }
+    }
+    if s.is_empty() { "0".into() } else { s }
+}
+
+fn prove(max_n: usize, filter: Option<&str>, json_out: bool, out: &mut dyn Write) -> i32 {
+    if max_n > 200 {
+        eprintln!("casteljau: --max-n {max_n} exceeds the limit 200");
+        return 2;
+    }
+    let results = claims::check_all(max_n);
+    let (mut passed, mut failed) = (0, 0);
+    for r in results.iter().filter(|r| filter.is_none_or(|f| r.id.contains(f))) {
+        if r.passed() {
+            passed += 1;
+        } else {
+            failed += 1;
+        }
+        let line = if json_out {
+            json!({
+                "id": r.id, "source": r.source, "expected": r.expected.as_str(), "verdict": r.found.as_str(),
+                "passed": r.passed(), "method": r.method, "detail": r.detail, "seconds": r.seconds,
+            })
+            .to_string()
+        } else {
+            format!(
+                "{} {:<40} {:<17} {:<13} {:>8.4}s  {}",
+                if r.passed() { "ok  " } else { "FAIL" },
+                r.id,
+                r.found.as_str(),
+                r.method,
+                r.seconds,
+                r.detail
+            )
+        };
+        if writeln!(out, "{line}").is_err() {
+            return 2;
+        }
+    }
+    if !json_out {
+        let _ = writeln!(out, "{passed} passed, {failed} failed");
+    }
+    if failed == 0 { 0 } else { 1 }
+}

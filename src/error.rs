@@ -1,0 +1,110 @@
+//! The one error type of casteljau: every variant says what went wrong and where.
+
+use std::fmt;
+
+/// Where a token stands in the input: 1-based line (for batch input), 1-based character
+/// column, and 1-based index of the number among the line's numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Position {
+    /// 1-based line number, when the input has lines (batch files, stdin).
+    pub line: Option<usize>,
+    /// 1-based character column of the token's first character.
+    pub column: usize,
+    /// 1-based index of the token among the numbers of its line.
+    pub token: usize,
+}
+
+impl fmt::Display for Position {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(line) = self.line {
+            write!(f, "line {line}, ")?;
+        }
+        write!(f, "column {} (number {})", self.column, self.token)
+    }
+}
+
+/// Everything that can go wrong in casteljau's library and CLI.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A token is not an exact number (`1/3`, `-0.25`, `2E3` are; `nan`, `1/0`, `0x10` are not).
+    ParseNumber {
+        /// The offending token as written (shortened when very long).
+        token: String,
+        /// Where it stands.
+        position: Position,
+        /// Why it was rejected.
+        reason: String,
+    },
+    /// A curve's numbers do not group into points of the expected dimension.
+    PointCount {
+        /// How many numbers (or coordinates of the offending point) were found.
+        found: usize,
+        /// The dimension expected (2 or 3, or as given by `--dim`).
+        dim: usize,
+        /// Which point is malformed (1-based), when the input groups points with commas.
+        point: Option<usize>,
+        /// The line, for batch input.
+        line: Option<usize>,
+    },
+    /// A curve needs at least one control point.
+    EmptyCurve {
+        /// The line, for batch input.
+        line: Option<usize>,
+    },
+    /// Control points of one curve (or curves combined) differ in dimension.
+    DimensionMismatch {
+        /// The dimension of the first point.
+        expected: usize,
+        /// The dimension found.
+        found: usize,
+    },
+    /// A size beyond a documented limit (degree, depth, token length, exponent).
+    TooLarge {
+        /// What is too large.
+        what: &'static str,
+        /// The requested size.
+        value: usize,
+        /// The largest size allowed.
+        limit: usize,
+    },
+    /// An argument outside the operation's domain (e.g. a derivative order above the degree).
+    InvalidArgument {
+        /// What is wrong, in words.
+        message: String,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let at_line = |line: &Option<usize>| line.map(|l| format!("line {l}: ")).unwrap_or_default();
+        match self {
+            Error::ParseNumber { token, position, reason } => {
+                write!(f, "bad number {token:?} at {position}: {reason}")
+            }
+            Error::PointCount { found, dim, point: Some(p), line } => write!(
+                f,
+                "{}point {p} has {found} coordinate{}, expected {dim}",
+                at_line(line),
+                if *found == 1 { "" } else { "s" }
+            ),
+            Error::PointCount { found, dim, point: None, line } => write!(
+                f,
+                "{}{found} number{} cannot be split into {dim}D points",
+                at_line(line),
+                if *found == 1 { "" } else { "s" }
+            ),
+            Error::EmptyCurve { line } => write!(f, "{}a curve needs at least one control point", at_line(line)),
+            Error::DimensionMismatch { expected, found } => {
+                write!(f, "points of dimension {expected} and {found} cannot be combined")
+            }
+            Error::TooLarge { what, value, limit } => write!(f, "{what} {value} exceeds the limit {limit}"),
+            Error::InvalidArgument { message } => write!(f, "{message}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// `Result` with casteljau's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;

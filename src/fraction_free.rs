@@ -1,0 +1,189 @@
+//! Fraction-free exact kernels: integers over one common denominator, one reduction at the end.
+//!
+//! Naive `BigRational` de Casteljau reduces a fraction (a gcd) at every one of its `O(n²)`
+//! operations. Here a curve with rational control points is written `bᵢ = Nᵢ / D` with integer
+//! `Nᵢ` and `D = lcm` of all denominators, and `t = p/q` (reduced, `q > 0`). Then
+//!
+//! * evaluation (homogeneous Horner on the Bernstein form):
+//!   `b(t) = Σ C(n,i) Nᵢ pⁱ (q−p)ⁿ⁻ⁱ / (D qⁿ)`, computed as `s_n = a_n`,
+//!   `s_i = s_{i+1}·p + a_i·(q−p)^{n−i}` with `a_i = C(n,i) Nᵢ` — `O(n)` integer products;
+//! * the triangle (subdivision): `β_i^r = (q−p) β_i^{r−1} + p β_{i+1}^{r−1}` on integers,
+//!   with `b_i^r(t) = β_i^r / (D q^r)` — `O(n²)` integer products, no gcd until the output.
+//!
+//! Both try checked `i128` arithmetic first (most font-like inputs fit) and redo the work in
+//! `BigInt` on overflow, so the result is always exact.
+
+use crate::bezier::BezierCurve;
+use crate::casteljau::DeCasteljauTriangle;
+use crate::point::Point;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Pow, ToPrimitive};
+
+/// Integer arithmetic the kernels run on: exact (`BigInt`) or checked fixed width (`i128`).
+trait Int: Clone + Sized {
+    fn from_big(v: &BigInt) -> Option<Self>;
+    fn into_big(self) -> BigInt;
+    fn mul(&self, o: &Self) -> Option<Self>;
+    fn add(&self, o: &Self) -> Option<Self>;
+}
+
+impl Int for i128 {
+    fn from_big(v: &BigInt) -> Option<Self> {
+        v.to_i128()
+    }
+    fn into_big(self) -> BigInt {
+        BigInt::from(self)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+}
+
+impl Int for BigInt {
+    fn from_big(v: &BigInt) -> Option<Self> {
+        Some(v.clone())
+    }
+    fn into_big(self) -> BigInt {
+        self
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+}
+
+/// A curve with rational control points as integer numerators over one denominator.
+///
+/// # Invariants
+/// `denominator > 0`; `numerators[i·dim + c] / denominator` is coordinate `c` of point `i`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct IntegerCurve {
+    /// Dimension of the points.
+    pub dim: usize,
+    /// Flat numerators, point after point.
+    pub numerators: Vec<BigInt>,
+    /// The common denominator (the lcm of all coordinate denominators).
+    pub denominator: BigInt,
+}
+
+impl IntegerCurve {
+    /// Brings all coordinates of `curve` over their least common denominator.
+    pub fn new(curve: &BezierCurve<BigRational>) -> Self {
+        let denominator =
+            curve.points().iter().flat_map(|p| &p.coords).fold(BigInt::one(), |acc, c| acc.lcm(c.denom()));
+        let numerators =
+            curve.points().iter().flat_map(|p| &p.coords).map(|c| c.numer() * (&denominator / c.denom())).collect();
+        IntegerCurve { dim: curve.dim(), numerators, denominator }
+    }
+    /// The degree of the curve.
+    pub fn degree(&self) -> usize {
+        self.numerators.len() / self.dim - 1
+    }
+}
+
+/// `b(t)` exactly, fraction-free (see the module docs); equal to
+/// [`BezierCurve::eval`] over `BigRational`, but `O(n)` integer products and one gcd per
+/// coordinate instead of `O(n²)` reduced fractions.
+///
+/// # Example
+/// ```
+/// use casteljau::{BezierCurve, fraction_free, parse::parse_points, ratio};
+/// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
+/// // seed 003, example 2: x = 3t + t³, y = 1 + 6t − 3t² − 2t³
+/// assert_eq!(fraction_free::eval(&c, &ratio(1, 10)).to_string(), "(301/1000, 196/125)");
+/// ```
+pub fn eval(curve: &BezierCurve<BigRational>, t: &BigRational) -> Point<BigRational> {
+    eval_integer(&IntegerCurve::new(curve), t)
+}
+
+/// [`eval`] on a curve already brought over a common denominator (for repeated evaluation).
+pub fn eval_integer(curve: &IntegerCurve, t: &BigRational) -> Point<BigRational> {
+    let raw = horner::<i128>(curve, t.numer(), t.denom())
+        .unwrap_or_else(|| horner::<BigInt>(curve, t.numer(), t.denom()).expect("BigInt arithmetic does not overflow"));
+    let scale = &curve.denominator * Pow::pow(t.denom(), curve.degree());
+    Point::new(raw.into_iter().map(|s| BigRational::new(s, scale.clone())).collect())
+}
+
+/// Numerators `Σ C(n,i) Nᵢ pⁱ (q−p)ⁿ⁻ⁱ` per coordinate, or `None` on overflow of `I`.
+fn horner<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<Vec<BigInt>> {
+    let n = curve.degree();
+    let dim = curve.dim;
+    let pi = I::from_big(p)?;
+    let r = I::from_big(&(q - p))?;
+    // (q−p)^k for k = 0..=n and C(n, i) for i = 0..=n.
+    let mut rpow = Vec::with_capacity(n + 1);
+    rpow.push(I::from_big(&BigInt::one())?);
+    for k in 1..=n {
+        rpow.push(rpow[k - 1].mul(&r)?);
+    }
+    let mut binom = vec![BigInt::one(); n + 1];
+    for i in 1..=n {
+        binom[i] = &binom[i - 1] * (n - i + 1) / i;
+    }
+    let binom: Vec<I> = binom.iter().map(I::from_big).collect::<Option<_>>()?;
+    let nums: Vec<I> = curve.numerators.iter().map(I::from_big).collect::<Option<_>>()?;
+    let mut out = Vec::with_capacity(dim);
+    for c in 0..dim {
+        let mut s = binom[n].mul(&nums[n * dim + c])?;
+        for i in (0..n).rev() {
+            let a = binom[i].mul(&nums[i * dim + c])?;
+            s = s.mul(&pi)?.add(&a.mul(&rpow[n - i])?)?;
+        }
+        out.push(s.into_big());
+    }
+    Some(out)
+}
+
+/// The whole de Casteljau triangle at `t`, computed on integers (`β_i^r = (q−p)β_i^{r−1} +
+/// pβ_{i+1}^{r−1}`, `b_i^r = β_i^r / (D q^r)`), each entry reduced once at the end.
+pub fn triangle(curve: &BezierCurve<BigRational>, t: &BigRational) -> DeCasteljauTriangle<BigRational> {
+    let ic = IntegerCurve::new(curve);
+    let rows = integer_rows::<i128>(&ic, t.numer(), t.denom())
+        .unwrap_or_else(|| integer_rows::<BigInt>(&ic, t.numer(), t.denom()).expect("BigInt does not overflow"));
+    let dim = ic.dim;
+    let mut scale = ic.denominator.clone();
+    let mut out = Vec::with_capacity(rows.len());
+    for row in rows {
+        let pts = row
+            .chunks(dim)
+            .map(|c| Point::new(c.iter().map(|v| BigRational::new(v.clone(), scale.clone())).collect()))
+            .collect();
+        out.push(pts);
+        scale *= t.denom();
+    }
+    DeCasteljauTriangle { rows: out }
+}
+
+/// Splits at `t0` (Lemma 2) on the fraction-free triangle; equal to
+/// [`casteljau::subdivide`](crate::casteljau::subdivide) over `BigRational`.
+pub fn subdivide(
+    curve: &BezierCurve<BigRational>,
+    t0: &BigRational,
+) -> (BezierCurve<BigRational>, BezierCurve<BigRational>) {
+    let tri = triangle(curve, t0);
+    (BezierCurve::new(tri.left_polygon()).unwrap(), BezierCurve::new(tri.right_polygon()).unwrap())
+}
+
+/// Integer triangle rows (flat), or `None` on overflow of `I`.
+fn integer_rows<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<Vec<Vec<BigInt>>> {
+    let dim = curve.dim;
+    let n = curve.degree();
+    let pi = I::from_big(p)?;
+    let r = I::from_big(&(q - p))?;
+    let mut row: Vec<I> = curve.numerators.iter().map(I::from_big).collect::<Option<_>>()?;
+    let mut rows = vec![curve.numerators.clone()];
+    for _ in 1..=n {
+        let next: Vec<I> =
+            (0..row.len() - dim).map(|k| row[k].mul(&r)?.add(&row[k + dim].mul(&pi)?)).collect::<Option<_>>()?;
+        rows.push(next.iter().cloned().map(I::into_big).collect());
+        row = next;
+    }
+    Some(rows)
+}

@@ -1,0 +1,256 @@
+//! Exact quadratic extensions `K(√d)` of an exact field `K`.
+//!
+//! Irrational answers of the theory — double-point parameters `t_E ± √(−c)`, the `√3` and
+//! `√Δ` in the canonical cubic maps — are numbers `a + b√d` with `a, b, d ∈ K`. Nesting
+//! (`QuadraticExt<QuadraticExt<BigRational>>`) gives towers such as `Q(√3)(√Δ)`.
+//!
+//! # Invariants
+//! * `d` is not a square in `K` and is positive (so the extension is a real field and
+//!   [`Exact::sign`] is meaningful). [`QuadraticExt::sqrt`] checks squareness for `K = Q`.
+//! * Canonical form: when `b = 0` the radicand is stored as `0`, so that `==` is numeric
+//!   equality. Elements with `b ≠ 0` of different radicands never meet in one operation.
+//!
+//! # Panics
+//! **Arithmetic between two irrational elements with different radicands panics** (they live
+//! in different fields); so does division by zero.
+
+use crate::scalar::{Exact, Scalar, rat};
+use num_bigint::BigInt;
+
+use num_rational::BigRational;
+use num_traits::Signed;
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// The number `a + b√d` of the real field `K(√d)`.
+///
+/// # Example
+/// ```
+/// use casteljau::{QuadraticExt, Scalar, Exact, ratio};
+/// use num_rational::BigRational;
+/// let s3 = QuadraticExt::sqrt(ratio(3, 1));             // √3
+/// assert_eq!(s3.clone() * s3.clone(), QuadraticExt::from_i64(3));
+/// let x = QuadraticExt::new(ratio(1, 2), ratio(1, 2), ratio(3, 1)); // (1 + √3)/2
+/// assert_eq!((x.clone() * x.clone()).to_string(), "1 + 1/2*sqrt(3)");
+/// assert_eq!((x - QuadraticExt::from_i64(2)).sign(), std::cmp::Ordering::Less);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct QuadraticExt<K> {
+    a: K,
+    b: K,
+    d: K,
+}
+
+impl<K: Exact> QuadraticExt<K> {
+    /// `a + b√d`. `d` must be positive and not a square in `K` (see the module invariants).
+    pub fn new(a: K, b: K, d: K) -> Self {
+        assert!(d.sign() != Ordering::Less || b.is_zero(), "radicand must be positive");
+        let mut q = QuadraticExt { a, b, d };
+        q.normalise();
+        q
+    }
+
+    /// The rational part `a`.
+    pub fn rational_part(&self) -> &K {
+        &self.a
+    }
+    /// The coefficient `b` of `√d`.
+    pub fn radical_coefficient(&self) -> &K {
+        &self.b
+    }
+    /// The radicand `d` (`0` when the element lies in `K`).
+    pub fn radicand(&self) -> &K {
+        &self.d
+    }
+    /// The conjugate `a − b√d`.
+    pub fn conjugate(&self) -> Self {
+        QuadraticExt { a: self.a.clone(), b: -self.b.clone(), d: self.d.clone() }
+    }
+    /// The norm `(a + b√d)(a − b√d) = a² − b²d ∈ K`.
+    pub fn norm(&self) -> K {
+        self.a.clone() * &self.a - self.b.clone() * &self.b * &self.d
+    }
+    /// The element as a member of `K`, when it is one.
+    pub fn to_base(&self) -> Option<K> {
+        self.b.is_zero().then(|| self.a.clone())
+    }
+
+    fn normalise(&mut self) {
+        if self.b.is_zero() || self.d.is_zero() {
+            self.b = K::zero();
+            self.d = K::zero();
+        }
+    }
+
+    fn common_radicand(&self, other: &Self) -> K {
+        match (self.b.is_zero(), other.b.is_zero()) {
+            (true, _) => other.d.clone(),
+            (_, true) => self.d.clone(),
+            _ => {
+                assert!(self.d == other.d, "QuadraticExt: radicands {} and {} differ", self.d, other.d);
+                self.d.clone()
+            }
+        }
+    }
+}
+
+impl QuadraticExt<BigRational> {
+    /// `√d` for a non-negative rational `d`: rational when `d` is a square of a rational,
+    /// otherwise the generator of `Q(√d)` (radicand normalised to a square-free-ish integer is
+    /// *not* attempted; `√(4/3)` is stored as `1·√(4/3)`).
+    ///
+    /// # Panics
+    /// **Panics if `d < 0`.**
+    pub fn sqrt(d: BigRational) -> Self {
+        assert!(!d.is_negative(), "sqrt of a negative rational");
+        if let Some(r) = rational_sqrt(&d) {
+            return QuadraticExt::from_ratio(&r);
+        }
+        QuadraticExt::new(rat(0), rat(1), d)
+    }
+}
+
+/// The exact square root of a non-negative rational, when it is rational.
+pub fn rational_sqrt(d: &BigRational) -> Option<BigRational> {
+    if d.is_negative() {
+        return None;
+    }
+    let n = int_sqrt(d.numer())?;
+    let m = int_sqrt(d.denom())?;
+    Some(BigRational::new(n, m))
+}
+
+fn int_sqrt(n: &BigInt) -> Option<BigInt> {
+    let r = n.sqrt();
+    (&r * &r == *n).then_some(r)
+}
+
+impl<K: Exact> Scalar for QuadraticExt<K> {
+    fn zero() -> Self {
+        QuadraticExt { a: K::zero(), b: K::zero(), d: K::zero() }
+    }
+    fn one() -> Self {
+        QuadraticExt { a: K::one(), b: K::zero(), d: K::zero() }
+    }
+    fn from_i64(n: i64) -> Self {
+        QuadraticExt { a: K::from_i64(n), b: K::zero(), d: K::zero() }
+    }
+    fn from_ratio(r: &BigRational) -> Self {
+        QuadraticExt { a: K::from_ratio(r), b: K::zero(), d: K::zero() }
+    }
+    fn is_zero(&self) -> bool {
+        self.a.is_zero() && self.b.is_zero()
+    }
+    fn to_f64(&self) -> f64 {
+        self.a.to_f64() + self.b.to_f64() * self.d.to_f64().sqrt()
+    }
+}
+
+impl<K: Exact> Exact for QuadraticExt<K> {
+    /// Sign of `a + b√d` with `d > 0`: when `a` and `b` disagree, compare `a²` with `b²d`.
+    fn sign(&self) -> Ordering {
+        let (sa, sb) = (self.a.sign(), self.b.sign());
+        if sb == Ordering::Equal || sa == sb {
+            return if sa == Ordering::Equal { sb } else { sa };
+        }
+        if sa == Ordering::Equal {
+            return sb;
+        }
+        let a2 = self.a.clone() * &self.a;
+        let b2d = self.b.clone() * &self.b * &self.d;
+        match (a2 - b2d).sign() {
+            Ordering::Greater => sa,
+            Ordering::Less => sb,
+            Ordering::Equal => Ordering::Equal,
+        }
+    }
+}
+
+impl<K: Exact> fmt::Display for QuadraticExt<K> {
+    /// `a`, `b*sqrt(d)` or `a + b*sqrt(d)` / `a - b*sqrt(d)`, with `K`'s own formatting.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.b.is_zero() {
+            return write!(f, "{}", self.a);
+        }
+        let radical = |b: &K| {
+            if *b == K::one() { format!("sqrt({})", self.d) } else { format!("{}*sqrt({})", b, self.d) }
+        };
+        if self.a.is_zero() {
+            if self.b.sign() == Ordering::Less {
+                return write!(f, "-{}", radical(&-self.b.clone()));
+            }
+            return write!(f, "{}", radical(&self.b));
+        }
+        if self.b.sign() == Ordering::Less {
+            write!(f, "{} - {}", self.a, radical(&-self.b.clone()))
+        } else {
+            write!(f, "{} + {}", self.a, radical(&self.b))
+        }
+    }
+}
+
+impl<K: Exact> Neg for QuadraticExt<K> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        QuadraticExt { a: -self.a, b: -self.b, d: self.d }
+    }
+}
+
+impl<K: Exact> Add<&QuadraticExt<K>> for QuadraticExt<K> {
+    type Output = Self;
+    fn add(self, o: &Self) -> Self {
+        let d = self.common_radicand(o);
+        QuadraticExt::new_unchecked(self.a + &o.a, self.b + &o.b, d)
+    }
+}
+
+impl<K: Exact> Sub<&QuadraticExt<K>> for QuadraticExt<K> {
+    type Output = Self;
+    fn sub(self, o: &Self) -> Self {
+        let d = self.common_radicand(o);
+        QuadraticExt::new_unchecked(self.a - &o.a, self.b - &o.b, d)
+    }
+}
+
+impl<K: Exact> Mul<&QuadraticExt<K>> for QuadraticExt<K> {
+    type Output = Self;
+    /// `(a + b√d)(c + e√d) = (ac + be·d) + (ae + bc)√d`.
+    fn mul(self, o: &Self) -> Self {
+        let d = self.common_radicand(o);
+        let a = self.a.clone() * &o.a + self.b.clone() * &o.b * &d;
+        let b = self.a * &o.b + self.b * &o.a;
+        QuadraticExt::new_unchecked(a, b, d)
+    }
+}
+
+impl<K: Exact> Div<&QuadraticExt<K>> for QuadraticExt<K> {
+    type Output = Self;
+    /// `x / y = x · conj(y) / norm(y)`.
+    fn div(self, o: &Self) -> Self {
+        let n = o.norm();
+        assert!(!n.is_zero(), "QuadraticExt: division by zero");
+        let p = self * &o.conjugate();
+        QuadraticExt::new_unchecked(p.a / &n, p.b / &n, p.d)
+    }
+}
+
+impl<K: Exact> QuadraticExt<K> {
+    fn new_unchecked(a: K, b: K, d: K) -> Self {
+        let mut q = QuadraticExt { a, b, d };
+        q.normalise();
+        q
+    }
+}
+
+macro_rules! by_value {
+    ($($tr:ident $m:ident),*) => {$(
+        impl<K: Exact> $tr for QuadraticExt<K> {
+            type Output = Self;
+            fn $m(self, o: Self) -> Self {
+                <Self as $tr<&Self>>::$m(self, &o)
+            }
+        }
+    )*};
+}
+by_value!(Add add, Sub sub, Mul mul, Div div);

@@ -1,0 +1,160 @@
+//! Scalars: the numbers every algorithm in casteljau is generic over.
+//!
+//! [`Scalar`] is a field with by-value and by-reference operations; it is implemented for
+//! `f64` (fast, approximate) and [`BigRational`] (exact). [`Exact`] marks the types whose
+//! `==` is numeric equality and whose [`Exact::sign`] is decided without rounding: identity
+//! checks and classifications require `S: Exact`. The quadratic extension
+//! [`QuadraticExt`](crate::QuadraticExt) is another `Exact` scalar built on any `Exact` one.
+//!
+//! # Laws
+//! For every implementation (exactly for `Exact` types, up to rounding for `f64`):
+//! `a + 0 = a`, `a · 1 = a`, `a + (−a) = 0`, `a · (1/a) = 1` for `a ≠ 0`,
+//! `from_i64(m) + from_i64(n) = from_i64(m + n)` and `from_ratio(p/q) · from_i64(q) = from_i64(p)`.
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
+use std::fmt::{Debug, Display};
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// A field of numbers on which Bézier algorithms run.
+///
+/// Kept deliberately small (as `num_traits::Num` is): the field operations by value and by
+/// reference, the constants as functions (bignums cannot be `const`), integer and exact-ratio
+/// conversions, and a zero test.
+///
+/// # Example
+/// ```
+/// use casteljau::Scalar;
+/// use num_rational::BigRational;
+/// fn lerp<S: Scalar>(a: &S, b: &S, t: &S) -> S {
+///     (S::one() - t) * a + t.clone() * b
+/// }
+/// let r = lerp(&BigRational::from_i64(1), &BigRational::from_i64(4), &"1/3".parse().unwrap());
+/// assert_eq!(r, BigRational::from_i64(2));
+/// assert_eq!(lerp(&1.0f64, &4.0, &0.5), 2.5);
+/// ```
+pub trait Scalar:
+    Clone
+    + Debug
+    + Display
+    + PartialEq
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+{
+    /// The additive identity: `a + zero() = a`.
+    fn zero() -> Self;
+    /// The multiplicative identity: `a · one() = a`.
+    fn one() -> Self;
+    /// The image of an integer: a ring homomorphism (exact for exact types).
+    fn from_i64(n: i64) -> Self;
+    /// The image of an exact ratio (rounded to nearest for `f64`).
+    fn from_ratio(r: &BigRational) -> Self;
+    /// `self == 0` (exact for exact types).
+    fn is_zero(&self) -> bool;
+    /// An `f64` approximation, for plots and printing with `--float`.
+    fn to_f64(&self) -> f64;
+}
+
+/// Marker for scalars whose `==` is numeric equality and whose sign is exact.
+///
+/// Implementations keep a canonical form (reduced fractions with positive denominators,
+/// normalised extension elements), so equal numbers compare equal.
+pub trait Exact: Scalar + Eq {
+    /// The exact sign: `Less` for negative, `Equal` for zero, `Greater` for positive.
+    fn sign(&self) -> Ordering;
+}
+
+impl Scalar for f64 {
+    fn zero() -> Self {
+        0.0
+    }
+    fn one() -> Self {
+        1.0
+    }
+    fn from_i64(n: i64) -> Self {
+        n as f64
+    }
+    fn from_ratio(r: &BigRational) -> Self {
+        ratio_to_f64(r)
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0.0
+    }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+}
+
+impl Scalar for BigRational {
+    fn zero() -> Self {
+        Zero::zero()
+    }
+    fn one() -> Self {
+        One::one()
+    }
+    fn from_i64(n: i64) -> Self {
+        BigRational::from_integer(BigInt::from(n))
+    }
+    fn from_ratio(r: &BigRational) -> Self {
+        r.clone()
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn to_f64(&self) -> f64 {
+        ratio_to_f64(self)
+    }
+}
+
+impl Exact for BigRational {
+    fn sign(&self) -> Ordering {
+        if Signed::is_negative(self) {
+            Ordering::Less
+        } else if Zero::is_zero(self) {
+            Ordering::Equal
+        } else {
+            Ordering::Greater
+        }
+    }
+}
+
+/// Nearest-ish `f64` of an exact ratio, also for numerators and denominators beyond `f64` range.
+pub fn ratio_to_f64(r: &BigRational) -> f64 {
+    if let (Some(n), Some(d)) = (r.numer().to_f64(), r.denom().to_f64())
+        && n.is_finite()
+        && d.is_finite()
+    {
+        return n / d;
+    }
+    // Scale both to ~64 significant bits first so that huge operands do not overflow.
+    let nb = r.numer().bits() as i64;
+    let db = r.denom().bits() as i64;
+    let shift_n = (nb - 64).max(0);
+    let shift_d = (db - 64).max(0);
+    let n = (r.numer() >> shift_n as usize).to_f64().unwrap_or(0.0);
+    let d = (r.denom() >> shift_d as usize).to_f64().unwrap_or(1.0);
+    let e = (shift_n - shift_d).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+    n / d * 2f64.powi(e)
+}
+
+/// The integer `n` as a [`BigRational`].
+pub fn rat(n: i64) -> BigRational {
+    BigRational::from_i64(n)
+}
+
+/// The ratio `p/q` as a reduced [`BigRational`].
+///
+/// # Panics
+/// **Panics if `q == 0`.**
+pub fn ratio(p: i64, q: i64) -> BigRational {
+    BigRational::new(BigInt::from(p), BigInt::from(q))
+}
