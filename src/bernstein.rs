@@ -38,9 +38,26 @@ pub fn binomial_scalar<S: Scalar>(n: usize, k: usize) -> S {
     }
 }
 
-/// Row `n` of Pascal's triangle as scalars: `C(n, 0), …, C(n, n)`.
+/// Row `n` of Pascal's triangle as scalars: `C(n, 0), …, C(n, n)`, by the recurrence
+/// `C(n, k+1) = C(n, k)·(n−k)/(k+1)` on integers (`O(n)` operations).
 pub fn binomial_row<S: Scalar>(n: usize) -> Vec<S> {
-    (0..=n).map(|k| binomial_scalar(n, k)).collect()
+    let mut row = Vec::with_capacity(n + 1);
+    let mut small: Option<i64> = Some(1);
+    let mut big = BigInt::one();
+    for k in 0..=n {
+        row.push(match small {
+            Some(v) => S::from_i64(v),
+            None => S::from_ratio(&BigRational::from_integer(big.clone())),
+        });
+        if k < n {
+            big = big * (n - k) / (k + 1);
+            small = small.and_then(|v| v.checked_mul((n - k) as i64)).map(|v| v / (k as i64 + 1));
+            if small.is_none() {
+                small = big.to_i64();
+            }
+        }
+    }
+    row
 }
 
 /// `tᵏ` for `k = 0..=n`.
@@ -73,7 +90,7 @@ pub fn bernstein<S: Scalar>(i: usize, n: usize, t: &S) -> S {
 pub fn bernstein_all<S: Scalar>(n: usize, t: &S) -> Vec<S> {
     let tp = powers(t, n);
     let up = powers(&(S::one() - t), n);
-    (0..=n).map(|i| binomial_scalar::<S>(n, i) * &tp[i] * &up[n - i]).collect()
+    binomial_row::<S>(n).into_iter().enumerate().map(|(i, c)| c * &tp[i] * &up[n - i]).collect()
 }
 
 /// `x^e` by repeated squaring.

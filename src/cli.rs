@@ -391,9 +391,9 @@ fn prove(max_n: usize, filter: Option<&str>, json_out: bool, out: &mut dyn Write
         eprintln!("casteljau: --max-n {max_n} exceeds the limit 200");
         return 2;
     }
-    let results = claims::check_all(max_n);
+    let results = claims::check_all(max_n, &|id| filter.is_none_or(|f| id.contains(f)));
     let (mut passed, mut failed) = (0, 0);
-    for r in results.iter().filter(|r| filter.is_none_or(|f| r.id.contains(f))) {
+    for r in &results {
         if r.passed() {
             passed += 1;
         } else {

@@ -158,3 +158,113 @@ pub fn rat(n: i64) -> BigRational {
 pub fn ratio(p: i64, q: i64) -> BigRational {
     BigRational::new(BigInt::from(p), BigInt::from(q))
 }
+
+/// An exact rational with fast paths for integers: a thin wrapper around [`BigRational`].
+///
+/// `BigRational` reduces after every operation, and its gcd is slow when one side is `1`
+/// (Stein's algorithm then takes one step per bit): multiplying two 200-bit integers as ratios
+/// costs ~8 µs here against ~50 ns as `BigInt`. `Rational` adds, subtracts and multiplies
+/// integers (denominator 1) as integers and otherwise defers to `BigRational`, so the canonical
+/// form (reduced, positive denominator) and therefore `==` are the same. Use it for work that
+/// stays mostly in the integers, such as grid proofs on integer nodes.
+///
+/// # Example
+/// ```
+/// use casteljau::scalar::{Rational, Scalar};
+/// let a = Rational::from_i64(6) * Rational::from_i64(7);
+/// assert_eq!(a, Rational::from(casteljau::ratio(84, 2)));
+/// assert_eq!((a / Rational::from_i64(4)).to_string(), "21/2");
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Rational(pub BigRational);
+
+impl From<BigRational> for Rational {
+    fn from(r: BigRational) -> Self {
+        Rational(r)
+    }
+}
+
+impl From<Rational> for BigRational {
+    fn from(r: Rational) -> Self {
+        r.0
+    }
+}
+
+impl Display for Rational {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        Display::fmt(&self.0, f)
+    }
+}
+
+impl Scalar for Rational {
+    fn zero() -> Self {
+        Rational(<BigRational as Scalar>::zero())
+    }
+    fn one() -> Self {
+        Rational(<BigRational as Scalar>::one())
+    }
+    fn from_i64(n: i64) -> Self {
+        Rational(<BigRational as Scalar>::from_i64(n))
+    }
+    fn from_ratio(r: &BigRational) -> Self {
+        Rational(r.clone())
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(&self.0)
+    }
+    fn to_f64(&self) -> f64 {
+        ratio_to_f64(&self.0)
+    }
+}
+
+impl Exact for Rational {
+    fn sign(&self) -> Ordering {
+        self.0.sign()
+    }
+}
+
+impl Neg for Rational {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Rational(-self.0)
+    }
+}
+
+macro_rules! integer_fast_path {
+    ($tr:ident $m:ident, $int:expr) => {
+        impl $tr<&Rational> for Rational {
+            type Output = Rational;
+            fn $m(self, o: &Rational) -> Rational {
+                if self.0.is_integer() && o.0.is_integer() {
+                    let f: fn(&BigInt, &BigInt) -> BigInt = $int;
+                    Rational(BigRational::from_integer(f(self.0.numer(), o.0.numer())))
+                } else {
+                    Rational($tr::$m(self.0, &o.0))
+                }
+            }
+        }
+        impl $tr for Rational {
+            type Output = Rational;
+            fn $m(self, o: Rational) -> Rational {
+                $tr::$m(self, &o)
+            }
+        }
+    };
+}
+integer_fast_path!(Add add, |a, b| a + b);
+integer_fast_path!(Sub sub, |a, b| a - b);
+integer_fast_path!(Mul mul, |a, b| a * b);
+
+impl Div<&Rational> for Rational {
+    type Output = Rational;
+    fn div(self, o: &Rational) -> Rational {
+        Rational(self.0 / &o.0)
+    }
+}
+
+impl Div for Rational {
+    type Output = Rational;
+    fn div(self, o: Rational) -> Rational {
+        Rational(self.0 / o.0)
+    }
+}
