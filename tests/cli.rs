@@ -1,0 +1,154 @@
+//! The `casteljau` binary: answers, exit codes (0 ok, 1 check failed, 2 bad input), errors.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn run(args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    if let Some(s) = stdin {
+        child.stdin.take().unwrap().write_all(s.as_bytes()).unwrap();
+    }
+    drop(child.stdin.take());
+    child.wait_with_output().unwrap()
+}
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).unwrap()
+}
+
+#[test]
+fn cli_subdivide_seed_001_example_prints_both_polygons() {
+    let o = run(&["subdivide", "--t", "1/3", "-1 -1, -1/3 1, 1/3 -1, 1 1"], None);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        stdout(&o),
+        "left:  -1 -1, -7/9 -1/3, -5/9 -1/9, -1/3 -1/27\nright: -1/3 -1/27, 1/9 1/9, 5/9 -1/3, 1 1\n"
+    );
+}
+
+#[test]
+fn cli_subdivide_json_uses_exact_strings() {
+    let o = run(&["subdivide", "--json", "--t", "1/3", "-1 -1, -1/3 1, 1/3 -1, 1 1"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["left"][1], serde_json::json!(["-7/9", "-1/3"]));
+    assert_eq!(v["right"][0], serde_json::json!(["-1/3", "-1/27"]));
+}
+
+#[test]
+fn cli_subdivide_depth_gives_pieces_with_intervals() {
+    let o = run(&["subdivide", "--t", "1/2", "--depth", "4", "--json", "-1 -1, -1/3 1, 1/3 -1, 1 1"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["pieces"].as_array().unwrap().len(), 16);
+    assert_eq!(v["pieces"][15]["interval"], serde_json::json!(["15/16", "1"]));
+    assert_eq!(run(&["subdivide", "--depth", "99", "0 0, 1 1"], None).status.code(), Some(2));
+}
+
+#[test]
+fn cli_eval_power_elevate_triangle_derivative_reduce() {
+    let o = run(&["eval", "--t", "1/10", "--t", "1", "0 1, 1 3, 2 4, 4 2"], None);
+    assert_eq!(stdout(&o), "b(1/10) = (301/1000, 196/125)\nb(1) = (4, 2)\n");
+    let o = run(&["power", "0 1, 4 2, 2 4, 1 0"], None);
+    assert_eq!(stdout(&o), "x(t) = 12t - 18t^2 + 7t^3\ny(t) = 1 + 3t + 3t^2 - 7t^3\n");
+    let o = run(&["elevate", "0 0, 1 1, 2 0"], None);
+    assert_eq!(stdout(&o), "0 0, 2/3 2/3, 4/3 2/3, 2 0\n");
+    let o = run(&["triangle", "--t", "1/2", "0 0, 1 2, 2 0"], None);
+    assert_eq!(stdout(&o), "r=0: (0, 0) (1, 2) (2, 0)\nr=1: (1/2, 1) (3/2, 1)\nr=2: (1, 1)\n");
+    let o = run(&["derivative", "0 0, 1 2, 2 0"], None);
+    assert_eq!(stdout(&o), "2 4, 2 -4\n");
+    let o = run(&["reduce", "0 0, 2/3 2/3, 4/3 2/3, 2 0"], None);
+    assert_eq!(stdout(&o), "degree 2 (written as 3): 0 0, 1 1, 2 0\n");
+    let o = run(&["eval", "--dim", "3", "--t", "1/2", "0 0 0, 2 2 2"], None);
+    assert_eq!(stdout(&o), "b(1/2) = (1, 1, 1)\n");
+}
+
+#[test]
+fn cli_bad_numbers_exit_2_naming_token_and_position() {
+    for (curve, token) in [
+        ("0 0, 1 nan", "nan"),
+        ("0 0, inf 1", "inf"),
+        ("0 0, 1/0 1", "1/0"),
+        ("0 0, 1//2 1", "1//2"),
+        ("0 0, 0x10 1", "0x10"),
+        ("0 0, 1e5000 1", "1e5000"),
+        ("0 0, 1 1/-2", "1/-2"),
+    ] {
+        let o = run(&["eval", "--t", "1/2", curve], None);
+        assert_eq!(o.status.code(), Some(2), "{curve}");
+        let e = stderr(&o);
+        assert!(e.contains(&format!("{token:?}")) && e.contains("column"), "{curve}: {e}");
+        assert!(!e.contains("panicked"), "{e}");
+    }
+    let long = format!("0 0, 1 {}", "1".repeat(5000));
+    let o = run(&["eval", "--t", "1/2", &long], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("longer than 1000"));
+    let o = run(&["eval", "--t", "1/2", "0 0,, 1 1"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("empty number"));
+}
+
+#[test]
+fn cli_wrong_point_counts_and_bad_options_exit_2() {
+    let o = run(&["eval", "--t", "1/2", "0 0, 1 1 1"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("point 2 has 3 coordinates, expected 2"), "{}", stderr(&o));
+    let o = run(&["eval", "--t", "1/2", "0 0 1"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(run(&["eval", "--t", "one", "0 0, 1 1"], None).status.code(), Some(2));
+    assert_eq!(run(&["eval", "--t", "1/2", "--dim", "0", "0 0"], None).status.code(), Some(2));
+    assert_eq!(run(&["elevate", "--by", "20000", "0 0, 1 1"], None).status.code(), Some(2));
+    assert_eq!(run(&["frobnicate"], None).status.code(), Some(2));
+    assert_eq!(run(&["eval", "--t", "1/2", "--input", "/nonexistent/file"], None).status.code(), Some(2));
+    assert_eq!(run(&["eval", "--t", "1/2", ""], None).status.code(), Some(2));
+}
+
+#[test]
+fn cli_batch_answers_every_line_in_order_and_exits_2_on_a_bad_one() {
+    let input = "# curves\n0 0 1 1 2 0\n\n0,0,2,2\n1 2 3\n0 0, 1 x\n4 4 5 5\n";
+    let o = run(&["eval", "--t", "1/2", "--json"], Some(input));
+    assert_eq!(o.status.code(), Some(2));
+    let lines: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 5);
+    assert_eq!(lines[0]["line"], 2);
+    assert_eq!(lines[0]["values"][0]["point"], serde_json::json!(["1", "1/2"]));
+    assert_eq!(lines[1]["line"], 4);
+    assert_eq!(lines[2]["line"], 5);
+    assert!(lines[2]["error"].as_str().unwrap().contains("3 numbers"));
+    assert!(lines[3]["error"].as_str().unwrap().contains("line 6, column 8 (number 4)"));
+    assert_eq!(lines[4]["values"][0]["point"], serde_json::json!(["9/2", "9/2"]));
+    // text mode: answers on stdout, errors on stderr
+    let o = run(&["eval", "--t", "1/2", "--input", "-"], Some(input));
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(stdout(&o).lines().count(), 3);
+    assert!(stderr(&o).contains("line 5"));
+}
+
+#[test]
+fn cli_prove_checks_the_builtin_claims() {
+    let o = run(&["prove", "--max-n", "10"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    let out = stdout(&o);
+    assert!(out.lines().last().unwrap().ends_with("passed, 0 failed"));
+    assert!(out.contains("003-example-4-printed-formula") && out.contains("fails-as-printed"));
+    let o = run(&["prove", "--max-n", "3", "--filter", "identity-8", "--json"], None);
+    let n = stdout(&o)
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+        .filter(|v| v["passed"] == true)
+        .count();
+    assert_eq!(n, 4);
+}
+
+#[test]
+fn cli_help_documents_exit_codes() {
+    let o = run(&["--help"], None);
+    assert!(stdout(&o).contains("EXIT CODES"));
+}

@@ -1,0 +1,170 @@
+//! Properties with exact `==`: independent routes to the same answer must agree.
+
+use casteljau::bernstein::binomial;
+use casteljau::casteljau::{subdivide, triangle};
+use casteljau::parse::{parse_number, parse_points};
+use casteljau::scalar::{Rational, ratio_to_f64};
+use casteljau::{BezierCurve, Exact, Point, QuadraticExt, Scalar, fraction_free, rat};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use proptest::prelude::*;
+
+/// Small exact rationals p/q, |p| ≤ 200, 1 ≤ q ≤ 60.
+fn small_rational() -> impl Strategy<Value = BigRational> {
+    (-200i64..=200, 1i64..=60).prop_map(|(p, q)| BigRational::new(p.into(), q.into()))
+}
+
+/// Parameters, mostly in [0, 1] but also outside.
+fn parameter() -> impl Strategy<Value = BigRational> {
+    prop_oneof![(0i64..=97, 1i64..=97).prop_map(|(p, q)| BigRational::new(p.min(q).into(), q.into())), small_rational(),]
+}
+
+/// Curves of degree 0..=7 in dimension 1..=3.
+fn curve() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    (1usize..=3, 1usize..=8).prop_flat_map(|(dim, len)| {
+        prop::collection::vec(prop::collection::vec(small_rational(), dim), len)
+            .prop_map(|pts| BezierCurve::new(pts.into_iter().map(Point::new).collect()).unwrap())
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn eval_de_casteljau_equals_bernstein_sum_equals_power_form(c in curve(), t in parameter()) {
+        let a = c.eval(&t);
+        prop_assert_eq!(&a, &c.eval_bernstein(&t));
+        prop_assert_eq!(&a, &c.eval_power(&t));
+    }
+
+    #[test]
+    fn eval_fraction_free_equals_naive(c in curve(), t in parameter()) {
+        prop_assert_eq!(fraction_free::eval(&c, &t), c.eval(&t));
+    }
+
+    #[test]
+    fn eval_fraction_free_bigint_fallback_equals_naive(c in curve(), k in 60u32..=70) {
+        // t with a denominator near 2^k pushes the i128 path into overflow
+        let t = BigRational::new(BigInt::from(3) , BigInt::from(2).pow(k) + 1);
+        let big = c.elevate(12).unwrap();
+        prop_assert_eq!(fraction_free::eval(&big, &t), c.eval(&t));
+    }
+
+    #[test]
+    fn triangle_fraction_free_equals_naive(c in curve(), t in parameter()) {
+        prop_assert_eq!(fraction_free::triangle(&c, &t), triangle(&c, &t));
+    }
+
+    #[test]
+    fn subdivision_halves_reproduce_the_curve(c in curve(), t0 in parameter(), s in parameter()) {
+        let (l, r) = fraction_free::subdivide(&c, &t0);
+        prop_assert_eq!(l.eval(&s), c.eval(&(t0.clone() * &s)));
+        prop_assert_eq!(r.eval(&s), c.eval(&(t0.clone() + (rat(1) - &t0) * &s)));
+        prop_assert_eq!((l.clone(), r.clone()), subdivide(&c, &t0));
+    }
+
+    #[test]
+    fn elevation_preserves_the_curve_and_reduction_undoes_it(c in curve(), by in 0usize..=4, t in parameter()) {
+        let e = c.elevate(by).unwrap();
+        prop_assert_eq!(e.degree(), c.degree() + by);
+        prop_assert_eq!(e.eval(&t), c.eval(&t));
+        let r = e.reduce_degree();
+        prop_assert_eq!(r.degree(), c.real_degree());
+        prop_assert_eq!(&r, &c.reduce_degree());
+        // reduction then elevation back gives the original control points
+        prop_assert_eq!(r.elevate(c.degree() - r.degree()).unwrap(), c.clone());
+    }
+
+    #[test]
+    fn power_form_round_trips(c in curve()) {
+        prop_assert_eq!(BezierCurve::from_power(&c.power_coefficients()).unwrap(), c);
+    }
+
+    #[test]
+    fn derivative_matches_power_form_derivative(c in curve(), t in parameter()) {
+        let d = c.derivative(1);
+        let coeffs = c.power_coefficients();
+        let dc: Vec<Point<BigRational>> = coeffs.iter().enumerate().skip(1).map(|(k, p)| p.scale(&rat(k as i64))).collect();
+        let expected = if dc.is_empty() { Point::origin(c.dim()) } else { casteljau::bernstein::eval_power(&dc, &t) };
+        prop_assert_eq!(d.eval(&t), expected);
+        // second derivative is the derivative of the derivative
+        prop_assert_eq!(c.derivative(2).eval(&t), d.derivative(1).eval(&t));
+    }
+
+    /// f64 de Casteljau error bound for t ∈ [0, 1]: |fl(b(t)) − b(t)| ≤ (4n + 6)·u·M with
+    /// u = 2⁻⁵³ and M = max |b_i| (convex combinations; rounding of t, the points and the result).
+    #[test]
+    fn eval_f64_within_stated_error_bound(c in curve(), p in 0i64..=1000) {
+        let t = BigRational::new(p.into(), 1000.into());
+        let exact = c.eval(&t);
+        let approx = c.map(|v| v.to_f64()).eval(&ratio_to_f64(&t));
+        let m = c.points().iter().flat_map(|q| &q.coords).map(|v| ratio_to_f64(v).abs()).fold(0.0, f64::max);
+        let bound = (4.0 * c.degree() as f64 + 6.0) * f64::EPSILON / 2.0 * m;
+        for (e, a) in exact.coords.iter().zip(&approx.coords) {
+            prop_assert!((ratio_to_f64(e) - a).abs() <= bound, "{} vs {} bound {}", e, a, bound);
+        }
+    }
+
+    #[test]
+    fn parse_formats_round_trip(x in small_rational()) {
+        prop_assert_eq!(parse_number(&x.to_string(), Default::default()).unwrap(), x);
+    }
+
+    #[test]
+    fn parse_curve_display_round_trips(c in curve()) {
+        let text = c.to_string();
+        prop_assert_eq!(BezierCurve::new(parse_points(&text, c.dim(), None).unwrap()).unwrap(), c);
+    }
+
+    #[test]
+    fn rational_fast_paths_agree_with_bigrational(a in small_rational(), b in small_rational(), k in -50i64..50) {
+        let (ra, rb) = (Rational(a.clone()), Rational(b.clone()));
+        let ki = Rational::from_i64(k);
+        prop_assert_eq!((ra.clone() + &rb).0, a.clone() + &b);
+        prop_assert_eq!((ra.clone() - &rb).0, a.clone() - &b);
+        prop_assert_eq!((ra.clone() * &rb).0, a.clone() * &b);
+        prop_assert_eq!((ki.clone() * &ki).0, rat(k * k));
+        prop_assert_eq!((ki.clone() + &Rational::from_i64(3)).0, rat(k + 3));
+        if !b.is_zero() { prop_assert_eq!((ra / &rb).0, a / &b); }
+    }
+
+    #[test]
+    fn quadratic_extension_field_laws(a in small_rational(), b in small_rational(), c in small_rational(), e in small_rational(), d in 2i64..30) {
+        prop_assume!(casteljau::quadratic_field::rational_sqrt(&rat(d)).is_none());
+        let x = QuadraticExt::new(a.clone(), b.clone(), rat(d));
+        let y = QuadraticExt::new(c, e, rat(d));
+        prop_assert_eq!(x.clone() * &y, y.clone() * &x);
+        prop_assert_eq!((x.clone() + &y) - &y, x.clone());
+        if !y.is_zero() { prop_assert_eq!((x.clone() / &y) * &y, x.clone()); }
+        // the sign is exact: compare with the f64 value where it is far from 0
+        let f = x.to_f64();
+        if f.abs() > 1e-6 { prop_assert_eq!(x.sign(), if f > 0.0 { std::cmp::Ordering::Greater } else { std::cmp::Ordering::Less }); }
+        prop_assert_eq!(x.norm(), a.clone() * &a - b.clone() * &b * rat(d));
+    }
+}
+
+#[test]
+fn bernstein_partition_of_unity_and_binomial_symmetry() {
+    for n in 0..30 {
+        let t = BigRational::new(7.into(), 19.into());
+        let s = casteljau::bernstein::bernstein_all(n, &t).into_iter().fold(rat(0), |a, b| a + b);
+        assert_eq!(s, rat(1));
+        for k in 0..=n {
+            assert_eq!(binomial(n, k), binomial(n, n - k));
+        }
+    }
+    assert_eq!(casteljau::bernstein::binomial_row::<BigRational>(70)[35], BigRational::from_integer(binomial(70, 35)));
+}
+
+#[test]
+fn quadratic_extension_sign_of_near_cancellation() {
+    // 1351/780 is a convergent of √3 from above: 1351/780 − √3 > 0 but tiny.
+    let x = QuadraticExt::new(BigRational::new(1351.into(), 780.into()), rat(-1), rat(3));
+    assert_eq!(x.sign(), std::cmp::Ordering::Greater);
+    let y = QuadraticExt::new(BigRational::new(989.into(), 571.into()), rat(-1), rat(3));
+    assert_eq!(y.sign(), std::cmp::Ordering::Less); // 989/571 < √3
+    assert_eq!(
+        QuadraticExt::sqrt(BigRational::new(9.into(), 4.into())),
+        QuadraticExt::from_ratio(&BigRational::new(3.into(), 2.into()))
+    );
+}
