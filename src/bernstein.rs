@@ -131,16 +131,24 @@ pub fn bernstein_sum<S: Scalar>(points: &[Point<S>], t: &S) -> Point<S> {
 /// assert_eq!(rows, vec![vec![1, 0, 0], vec![-2, 2, 0], vec![1, -2, 1]]);
 /// ```
 pub fn bernstein_to_power_matrix(n: usize) -> Vec<Vec<BigInt>> {
+    let pascal: Vec<Vec<BigInt>> = (0..=n).map(binomial_row::<BigRational>).map(integers).collect();
     (0..=n)
         .map(|k| {
             (0..=n)
                 .map(|i| {
-                    let v = binomial(n, k) * binomial(k, i);
-                    if (k - i.min(k)) % 2 == 1 { -v } else { v }
+                    if i > k {
+                        return BigInt::from(0);
+                    }
+                    let v = &pascal[n][k] * &pascal[k][i];
+                    if (k - i) % 2 == 1 { -v } else { v }
                 })
                 .collect()
         })
         .collect()
+}
+
+fn integers(row: Vec<BigRational>) -> Vec<BigInt> {
+    row.into_iter().map(|r| r.to_integer()).collect()
 }
 
 /// The inverse conversion matrix: `b_i = Σ_k M[i][k] c_k` with `M[i][k] = C(i,k) / C(n,k)`.
@@ -153,15 +161,16 @@ pub fn power_to_bernstein_matrix(n: usize) -> Vec<Vec<BigRational>> {
 pub fn to_power<S: Scalar>(points: &[Point<S>]) -> Vec<Point<S>> {
     let n = points.len() - 1;
     let dim = points[0].dim();
+    let row_n = binomial_row::<S>(n);
     (0..=n)
         .map(|k| {
+            let row_k = binomial_row::<S>(k);
             let mut acc = Point::origin(dim);
             for i in 0..=k {
-                let c: S = binomial_scalar(k, i);
-                let term = points[i].scale(&c);
+                let term = points[i].scale(&row_k[i]);
                 acc = if (k - i) % 2 == 1 { acc.sub(&term) } else { acc.add(&term) };
             }
-            acc.scale(&binomial_scalar(n, k))
+            acc.scale(&row_n[k])
         })
         .collect()
 }
@@ -171,12 +180,14 @@ pub fn to_power<S: Scalar>(points: &[Point<S>]) -> Vec<Point<S>> {
 pub fn from_power<S: Scalar>(coeffs: &[Point<S>]) -> Vec<Point<S>> {
     let n = coeffs.len() - 1;
     let dim = coeffs[0].dim();
+    let scaled: Vec<Point<S>> =
+        binomial_row::<S>(n).iter().zip(coeffs).map(|(c, p)| p.scale(&(S::one() / c.clone()))).collect();
     (0..=n)
         .map(|i| {
+            let row_i = binomial_row::<S>(i);
             let mut acc = Point::origin(dim);
             for k in 0..=i {
-                let f = binomial_scalar::<S>(i, k) / binomial_scalar::<S>(n, k);
-                acc = acc.add(&coeffs[k].scale(&f));
+                acc = acc.add(&scaled[k].scale(&row_i[k]));
             }
             acc
         })

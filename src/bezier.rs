@@ -5,7 +5,7 @@
 //! subdivision by de Casteljau's scheme live in [`crate::casteljau`]; their fraction-free exact
 //! versions in [`crate::fraction_free`].
 
-use crate::bernstein::{self, binomial_scalar};
+use crate::bernstein::{self, binomial_row};
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::scalar::{Exact, Scalar};
@@ -152,14 +152,15 @@ impl<S: Scalar> BezierCurve<S> {
             value: n.saturating_add(r),
             limit: MAX_DEGREE,
         })?;
+        let (row_r, row_n, row_m) = (binomial_row::<S>(r), binomial_row::<S>(n), binomial_row::<S>(m));
         let points = (0..=m)
             .map(|i| {
                 let mut acc = Point::origin(self.dim());
                 for j in i.saturating_sub(r)..=i.min(n) {
-                    let w = binomial_scalar::<S>(r, i - j) * binomial_scalar::<S>(n, j);
+                    let w = row_r[i - j].clone() * &row_n[j];
                     acc = acc.add(&self.points[j].scale(&w));
                 }
-                acc.scale(&(S::one() / binomial_scalar::<S>(m, i)))
+                acc.scale(&(S::one() / row_m[i].clone()))
             })
             .collect();
         Ok(BezierCurve { points })

@@ -130,6 +130,17 @@ pub struct CurveArgs {
 
 /// Largest accepted `--dim`.
 pub const MAX_DIM: usize = 64;
+/// Largest degree whose conversion matrix `power --json` includes.
+pub const MAX_MATRIX_DEGREE: usize = 30;
+/// Largest degree `triangle` prints (its output has (n+1)(n+2)/2 points).
+pub const MAX_TRIANGLE_DEGREE: usize = 500;
+/// Largest number of control points `subdivide --depth` prints.
+pub const MAX_SUBDIVISION_POINTS: usize = 1 << 20;
+
+fn output_limit(what: &'static str, value: usize, limit: usize) -> Result<()> {
+    if value > limit { Err(Error::TooLarge { what, value, limit }) } else { Ok(()) }
+}
+
 /// Largest batch input, in bytes.
 pub const MAX_INPUT_BYTES: u64 = 256 * 1024 * 1024;
 
@@ -155,17 +166,20 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             with_param(option_number("--t", &t), &curve, out, |c, t0| subdivide(c, t0, depth))
         }
         Command::Elevate { by, curve } => batch(&curve, out, |c| {
-            let e = c.elevate(by)?;
+            let e = fraction_free::elevate(c, by)?;
             Ok((e.to_string(), json!({"degree": e.degree(), "points": points_json(e.points())})))
         }),
         Command::Power { curve } => batch(&curve, out, |c| Ok(power(c))),
-        Command::Triangle { t, curve } => with_param(option_number("--t", &t), &curve, out, triangle),
+        Command::Triangle { t, curve } => with_param(option_number("--t", &t), &curve, out, |c, t| {
+            output_limit("triangle of degree", c.degree(), MAX_TRIANGLE_DEGREE)?;
+            triangle(c, t)
+        }),
         Command::Derivative { order, curve } => batch(&curve, out, |c| {
             let d = c.derivative(order);
             Ok((d.to_string(), json!({"order": order, "degree": d.degree(), "points": points_json(d.points())})))
         }),
         Command::Reduce { curve } => batch(&curve, out, |c| {
-            let r = c.reduce_degree();
+            let r = fraction_free::reduce_degree(c);
             let text = format!("degree {} (written as {}): {}", r.degree(), c.degree(), r);
             Ok((text, json!({"degree": c.degree(), "real_degree": r.degree(), "points": points_json(r.points())})))
         }),
@@ -308,6 +322,7 @@ fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u32) -> Resu
             json!({"t": t0.to_string(), "left": points_json(l.points()), "right": points_json(r.points())}),
         ));
     }
+    output_limit("subdivision output (pieces × points)", (c.degree() + 1) << depth.min(40), MAX_SUBDIVISION_POINTS)?;
     let pieces = subdivide_repeatedly(c, t0, depth)?;
     let ivs = subdivision_intervals(t0, depth);
     let text = pieces.iter().zip(&ivs).map(|(p, (a, b))| format!("[{a}, {b}]: {p}")).collect::<Vec<_>>().join("\n");
@@ -336,7 +351,7 @@ fn triangle(c: &BezierCurve<BigRational>, t: &BigRational) -> Result<(String, Va
 }
 
 fn power(c: &BezierCurve<BigRational>) -> (String, Value) {
-    let coeffs = c.power_coefficients();
+    let coeffs = fraction_free::power_coefficients(c);
     let names = ["x", "y", "z"];
     let lines: Vec<String> = (0..c.dim())
         .map(|k| {
@@ -345,11 +360,15 @@ fn power(c: &BezierCurve<BigRational>) -> (String, Value) {
             format!("{name}(t) = {}", format_polynomial(&poly, "t"))
         })
         .collect();
-    let matrix: Vec<Vec<String>> = crate::bernstein::bernstein_to_power_matrix(c.degree())
-        .iter()
-        .map(|r| r.iter().map(|v| v.to_string()).collect())
-        .collect();
-    (lines.join("\n"), json!({"degree": c.degree(), "coefficients": points_json(&coeffs), "matrix": matrix}))
+    let mut value = json!({"degree": c.degree(), "coefficients": points_json(&coeffs)});
+    if c.degree() <= MAX_MATRIX_DEGREE {
+        let matrix: Vec<Vec<String>> = crate::bernstein::bernstein_to_power_matrix(c.degree())
+            .iter()
+            .map(|r| r.iter().map(|v| v.to_string()).collect())
+            .collect();
+        value["matrix"] = json!(matrix);
+    }
+    (lines.join("\n"), value)
 }
 
 /// `c0 + c1 t + c2 t^2 …` with exact coefficients, zero terms omitted (`0` for the zero polynomial).

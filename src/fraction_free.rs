@@ -15,7 +15,9 @@
 
 use crate::bezier::BezierCurve;
 use crate::casteljau::DeCasteljauTriangle;
+use crate::error::Result;
 use crate::point::Point;
+use crate::scalar::{Rational, Scalar};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -186,4 +188,52 @@ fn integer_rows<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<
         row = next;
     }
     Some(rows)
+}
+
+impl IntegerCurve {
+    /// The numerators as a curve over the integer-fast [`Rational`] (the curve scaled by `D`).
+    fn scaled_curve(&self) -> BezierCurve<Rational> {
+        let pts = self
+            .numerators
+            .chunks(self.dim)
+            .map(|c| Point::new(c.iter().map(|v| Rational(BigRational::from_integer(v.clone()))).collect()))
+            .collect();
+        BezierCurve::new(pts).expect("an IntegerCurve has points")
+    }
+
+    /// Divides points computed on [`Self::scaled_curve`] by `D`: the one reduction.
+    fn unscale(&self, pts: Vec<Point<Rational>>) -> Vec<Point<BigRational>> {
+        let d = BigRational::from_integer(self.denominator.clone());
+        pts.into_iter().map(|p| Point::new(p.coords.into_iter().map(|v| v.0 / &d).collect())).collect()
+    }
+}
+
+/// Power-form coefficients, fraction-free: `c_k = C(n,k) Σ_{i≤k} (−1)^{k−i} C(k,i) Nᵢ / D`
+/// with integer sums and one division per coefficient. Equal to
+/// [`BezierCurve::power_coefficients`].
+pub fn power_coefficients(curve: &BezierCurve<BigRational>) -> Vec<Point<BigRational>> {
+    let ic = IntegerCurve::new(curve);
+    ic.unscale(ic.scaled_curve().power_coefficients())
+}
+
+/// Degree elevation by `r`, fraction-free: integer sums `Σ_j C(r,i−j) C(n,j) N_j`, then one
+/// division by `C(n+r,i)·D` per coordinate. Equal to [`BezierCurve::elevate`].
+///
+/// # Errors
+/// As [`BezierCurve::elevate`].
+pub fn elevate(curve: &BezierCurve<BigRational>, r: usize) -> Result<BezierCurve<BigRational>> {
+    let ic = IntegerCurve::new(curve);
+    let e = ic.scaled_curve().elevate(r)?;
+    BezierCurve::new(ic.unscale(e.into_points()))
+}
+
+/// Exact degree reduction with the power form computed fraction-free: equal to
+/// [`BezierCurve::reduce_degree`].
+pub fn reduce_degree(curve: &BezierCurve<BigRational>) -> BezierCurve<BigRational> {
+    let c = power_coefficients(curve);
+    let m = (0..c.len()).rev().find(|&k| c[k].coords.iter().any(|x| !Scalar::is_zero(x))).unwrap_or(0);
+    if m == curve.degree() {
+        return curve.clone();
+    }
+    BezierCurve::new(crate::bernstein::from_power(&c[..=m])).expect("non-empty")
 }

@@ -106,6 +106,10 @@ fn cli_wrong_point_counts_and_bad_options_exit_2() {
     assert_eq!(run(&["eval", "--t", "1/2", "--dim", "0", "0 0"], None).status.code(), Some(2));
     assert_eq!(run(&["elevate", "--by", "20000", "0 0, 1 1"], None).status.code(), Some(2));
     assert_eq!(run(&["frobnicate"], None).status.code(), Some(2));
+    let big: Vec<String> = (0..=600).map(|i| format!("{i} {}", i % 7)).collect();
+    let o = run(&["triangle", "--t", "1/2", &big.join(", ")], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("triangle of degree 600 exceeds the limit 500"));
     assert_eq!(run(&["eval", "--t", "1/2", "--input", "/nonexistent/file"], None).status.code(), Some(2));
     assert_eq!(run(&["eval", "--t", "1/2", ""], None).status.code(), Some(2));
 }

@@ -76,6 +76,13 @@ proptest! {
     }
 
     #[test]
+    fn fraction_free_power_elevate_reduce_equal_generic(c in curve(), by in 0usize..=4) {
+        prop_assert_eq!(fraction_free::power_coefficients(&c), c.power_coefficients());
+        prop_assert_eq!(fraction_free::elevate(&c, by).unwrap(), c.elevate(by).unwrap());
+        prop_assert_eq!(fraction_free::reduce_degree(&c.elevate(by).unwrap()), c.reduce_degree());
+    }
+
+    #[test]
     fn power_form_round_trips(c in curve()) {
         prop_assert_eq!(BezierCurve::from_power(&c.power_coefficients()).unwrap(), c);
     }
