@@ -97,6 +97,16 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// Classify planar curves of degree ≤ 3 exactly: node type, double point, parameters,
+    /// segment features on [0,1].
+    Classify {
+        /// Also print f64 approximations of the exact parameters.
+        #[arg(long)]
+        float: bool,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
     /// Check the seeds' claims (identity (8) for n ≤ --max-n, seed 001/003 examples).
     Prove {
         /// Largest n for identity (8).
@@ -158,6 +168,7 @@ pub fn main() -> i32 {
 pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
     match cli.command {
         Command::Prove { max_n, filter, json } => prove(max_n, filter.as_deref(), json, out),
+        Command::Classify { float, curve } => batch(&curve, out, |c| classify(c, float)),
         Command::Eval { t, curve } => {
             let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
             with_param(ts, &curve, out, |c, ts| eval(c, ts))
@@ -403,6 +414,89 @@ pub fn format_polynomial(coeffs: &[BigRational], var: &str) -> String {
         }
     }
     if s.is_empty() { "0".into() } else { s }
+}
+
+fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)> {
+    use crate::classify::{classify, loop_blinn};
+    use crate::moving_line::MovingLines;
+    let k = classify(c)?;
+    let params = |ps: &[crate::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_string())).collect() };
+    let floats = |ps: &[crate::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_f64())).collect() };
+    let mut v = json!({
+        "degree": k.degree,
+        "real_degree": k.real_degree,
+        "collinear": k.collinear,
+        "class": k.class.as_str(),
+        "reason": k.reason,
+        "node_type": k.node_type.map(|n| n.as_str()),
+        "double_point": k.double_point.as_ref().map(point_json),
+        "double_point_parameters": params(&k.double_point_parameters),
+        "cusp_parameters": params(&k.cusp_parameters),
+        "inflection_parameters": params(&k.inflection_parameters),
+        "segment": {
+            "loop": k.segment.has_loop,
+            "cusp": k.segment.has_cusp,
+            "inflections": k.segment.inflections,
+            "category": k.segment.category.as_str(),
+        },
+        "invariants": {"A": k.invariants[0].to_string(), "B": k.invariants[1].to_string(), "C": k.invariants[2].to_string()},
+    });
+    if let Some((te, d)) = &k.t_e_and_d {
+        v["t_E"] = json!(te.to_string());
+        v["d"] = json!(d.to_string());
+    }
+    if c.degree() == 3 {
+        let ml = MovingLines::new(c)?;
+        let verified = ml.verify().is_ok();
+        let (lb, lb_node) = loop_blinn(c);
+        v["moving_lines"] = json!({
+            "L00": point_json(&ml.l0[0]), "L01": point_json(&ml.l0[1]),
+            "L10": point_json(&ml.l1[0]), "L11": point_json(&ml.l1[1]), "L12": point_json(&ml.l1[2]),
+            "D": point_json(&ml.double_point),
+            "t_E": ml.t_e().map(|t| t.to_string()),
+            "verified": verified,
+        });
+        v["loop_blinn"] = json!({
+            "d1": lb[0].to_string(), "d2": lb[1].to_string(), "d3": lb[2].to_string(),
+            "node_type": lb_node.map(|n| n.as_str()),
+        });
+    }
+    if float {
+        v["float"] = json!({
+            "double_point_parameters": floats(&k.double_point_parameters),
+            "cusp_parameters": floats(&k.cusp_parameters),
+            "inflection_parameters": floats(&k.inflection_parameters),
+            "double_point": k.double_point.as_ref().map(|p| p.to_f64().coords),
+        });
+    }
+    let show = |ps: &[crate::classify::Parameter]| -> String {
+        ps.iter()
+            .map(|p| if float { format!("{p} (≈{:.6})", p.to_f64()) } else { p.to_string() })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut text = format!("{}: {}", k.class, k.reason);
+    if let Some(dp) = &k.double_point {
+        text += &format!("; double point {dp}");
+    }
+    if !k.double_point_parameters.is_empty() {
+        text += &format!(" at t = {}", show(&k.double_point_parameters));
+    }
+    if !k.inflection_parameters.is_empty() {
+        text += &format!("; inflections at t = {}", show(&k.inflection_parameters));
+    }
+    if k.collinear && !k.cusp_parameters.is_empty() {
+        text += &format!("; turns back at t = {}", show(&k.cusp_parameters));
+    }
+    text += &format!(
+        "; on [0,1]: {}{}{} inflection{} ({})",
+        if k.segment.has_loop { "loop, " } else { "" },
+        if k.segment.has_cusp { "cusp, " } else { "" },
+        k.segment.inflections,
+        if k.segment.inflections == 1 { "" } else { "s" },
+        k.segment.category.as_str()
+    );
+    Ok((text, v))
 }
 
 fn prove(max_n: usize, filter: Option<&str>, json_out: bool, out: &mut dyn Write) -> i32 {

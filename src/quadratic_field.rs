@@ -18,7 +18,7 @@ use crate::scalar::{Exact, Scalar, rat};
 use num_bigint::BigInt;
 
 use num_rational::BigRational;
-use num_traits::Signed;
+use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -97,8 +97,8 @@ impl<K: Exact> QuadraticExt<K> {
 
 impl QuadraticExt<BigRational> {
     /// `√d` for a non-negative rational `d`: rational when `d` is a square of a rational,
-    /// otherwise the generator of `Q(√d)` (radicand normalised to a square-free-ish integer is
-    /// *not* attempted; `√(4/3)` is stored as `1·√(4/3)`).
+    /// otherwise `b·√m` with `m` a positive integer free of the squares of primes below 1000
+    /// (`√(4/3)` becomes `2/3·√3`), so equal radicals print alike.
     ///
     /// # Panics
     /// **Panics if `d < 0`.**
@@ -107,7 +107,23 @@ impl QuadraticExt<BigRational> {
         if let Some(r) = rational_sqrt(&d) {
             return QuadraticExt::from_ratio(&r);
         }
-        QuadraticExt::new(rat(0), rat(1), d)
+        // √(p/q) = √(p·q)/q, then pull out square factors k² of p·q.
+        let q = d.denom().clone();
+        let mut m = d.numer() * &q;
+        let mut b = BigRational::new(BigInt::from(1), q);
+        let mut k = 2u32;
+        while k < 1000 {
+            let kk = BigInt::from(k * k);
+            while (&m % &kk).is_zero() {
+                m /= &kk;
+                b *= BigRational::from_integer(BigInt::from(k));
+            }
+            k += if k == 2 { 1 } else { 2 };
+        }
+        if let Some(r) = int_sqrt(&m) {
+            return QuadraticExt::from_ratio(&(b * BigRational::from_integer(r)));
+        }
+        QuadraticExt::new(rat(0), b, BigRational::from_integer(m))
     }
 }
 

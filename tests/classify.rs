@@ -1,0 +1,278 @@
+//! Exact cubic classification: the 16 classes, constructed edge cases, and properties that
+//! check every exact answer independently (P(t1) = P(t2) in Q(√d), P'(cusp) = 0,
+//! P'×P'' = 0 at inflections) and against the seed's moving lines and Loop–Blinn.
+
+use casteljau::classify::{CurveClass, NodeType, Parameter, SegmentCategory, classify, loop_blinn};
+use casteljau::moving_line::MovingLines;
+use casteljau::parse::parse_points;
+use casteljau::{BezierCurve, Point, QuadraticExt, Scalar, rat, ratio};
+use num_rational::BigRational;
+use proptest::prelude::*;
+
+fn curve(s: &str) -> BezierCurve<BigRational> {
+    BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap()
+}
+
+/// The cubic with power form `x(t) = Σ x_k t^k`, `y(t) = Σ y_k t^k`, mapped by `x ↦ M x + o`.
+fn from_power(x: [BigRational; 4], y: [BigRational; 4], m: [i64; 4], o: [i64; 2]) -> BezierCurve<BigRational> {
+    let coeffs: Vec<Point<BigRational>> = (0..4)
+        .map(|k| {
+            let (u, v) = (x[k].clone(), y[k].clone());
+            let off = if k == 0 { (rat(o[0]), rat(o[1])) } else { (rat(0), rat(0)) };
+            Point::new(vec![rat(m[0]) * &u + rat(m[1]) * &v + off.0, rat(m[2]) * &u + rat(m[3]) * &v + off.1])
+        })
+        .collect();
+    BezierCurve::from_power(&coeffs).unwrap()
+}
+
+/// `(s², s³)` with `s = t − τ`: a cusp exactly at `t = τ`.
+fn cusp_at(tau: BigRational) -> BezierCurve<BigRational> {
+    let (a, a2) = (-tau.clone(), tau.clone() * &tau);
+    // s² = t² − 2τt + τ², s³ = t³ − 3τt² + 3τ²t − τ³
+    from_power(
+        [a2.clone(), rat(2) * &a, rat(1), rat(0)],
+        [-(a2.clone() * &tau), rat(3) * &a2, rat(3) * &a, rat(1)],
+        [2, 1, -1, 3],
+        [5, -7],
+    )
+}
+
+/// `(s² − 1, s³ − s)` with `s = 2t/t1 − 1`: double point at `t = 0` and `t = t1`.
+fn loop_between_0_and(t1: BigRational) -> BezierCurve<BigRational> {
+    let k = rat(2) / &t1; // s = k t − 1
+    let (k2, k3) = (k.clone() * &k, k.clone() * &k * &k);
+    // s² − 1 = k²t² − 2kt; s³ − s = k³t³ − 3k²t² + 3kt − 1 − kt + 1 = k³t³ − 3k²t² + 2kt
+    from_power(
+        [rat(0), rat(-2) * &k, k2.clone(), rat(0)],
+        [rat(0), rat(2) * &k, rat(-3) * &k2, k3],
+        [1, 0, 0, 1],
+        [0, 0],
+    )
+}
+
+fn class_of(s: &str) -> CurveClass {
+    classify(&curve(s)).unwrap().class
+}
+
+#[test]
+fn classify_all_16_classes() {
+    use CurveClass::*;
+    for (s, class) in [
+        ("1 2", Point),
+        ("0 0, 1 1", Line),
+        ("1 1, 1 1", LineReallyPoint),
+        ("0 0, 1 2, 2 0", Quadratic),
+        ("0 0, 2 2, 1 1", CollinearQuadratic),
+        ("0 0, 1 1, 2 2", QuadraticReallyLine),
+        ("3 3, 3 3, 3 3", QuadraticReallyPoint),
+        ("0 0, 2 2, -1 2, 1 0", Cubic(NodeType::Crunode)),
+        ("0 0, 1 1, 0 1, 1 0", Cubic(NodeType::Cusp)),
+        ("0 0, 1 2, 2 -1, 3 1", Cubic(NodeType::Explicit)),
+        ("0 0, 1 1, 2 1, 3 0", CubicReallyQuadratic),
+        ("0 0, 3 0, -1 0, 2 0", CollinearCubic),
+        ("0 0, 2 2, 3 3, 3 3", CubicReallyCollinearQuadratic),
+        ("0 0, 1/3 1/3, 2/3 2/3, 1 1", CubicReallyLine),
+        ("1/3 1/3, 1/3 1/3, 1/3 1/3, 1/3 1/3", CubicReallyPoint),
+    ] {
+        assert_eq!(class_of(s), class, "{s}");
+    }
+    // acnode: (s² + 1, s³ + 3s) on s ∈ [−1, 1]
+    let ac = from_power([rat(2), rat(-4), rat(4), rat(0)], [rat(-4), rat(12), rat(-12), rat(8)], [1, 0, 0, 1], [0, 0]);
+    assert_eq!(classify(&ac).unwrap().class, Cubic(NodeType::Acnode));
+}
+
+#[test]
+fn classify_json_fields_for_seed_kinds_figs_1_to_4() {
+    let k = classify(&curve("0 0, 2 2, -1 2, 1 0")).unwrap(); // Fig. 1 kind: crunode with a loop
+    assert_eq!((k.real_degree, k.collinear, k.node_type), (3, false, Some(NodeType::Crunode)));
+    assert_eq!(k.double_point.unwrap().to_string(), "(1/2, 3/5)");
+    assert_eq!(
+        k.double_point_parameters.iter().map(|p| p.to_string()).collect::<Vec<_>>(),
+        ["1/2 - 1/10*sqrt(15)", "1/2 + 1/10*sqrt(15)"]
+    );
+    assert!(k.segment.has_loop && !k.segment.has_cusp && k.segment.inflections == 0);
+    assert_eq!(k.segment.category, SegmentCategory::Loop);
+}
+
+#[test]
+fn classify_cusp_at_t0_from_coincident_points() {
+    let k = classify(&curve("0 0, 0 0, 1 1, 1 0")).unwrap();
+    assert_eq!(k.node_type, Some(NodeType::Cusp));
+    assert_eq!(k.cusp_parameters, vec![Parameter::from_i64(0)]);
+    assert_eq!(k.double_point.unwrap().to_string(), "(0, 0)");
+    assert!(k.segment.has_cusp);
+    assert_eq!(k.segment.category, SegmentCategory::Cusp);
+}
+
+#[test]
+fn classify_cusp_at_chosen_parameters_boundaries_included() {
+    for (tau, inside) in
+        [(ratio(0, 1), true), (ratio(1, 1), true), (ratio(1, 3), true), (ratio(-1, 7), false), (ratio(8, 7), false)]
+    {
+        let k = classify(&cusp_at(tau.clone())).unwrap();
+        assert_eq!(k.node_type, Some(NodeType::Cusp), "τ = {tau}");
+        assert_eq!(k.cusp_parameters, vec![Parameter::from_ratio(&tau)]);
+        assert_eq!(k.segment.has_cusp, inside, "τ = {tau}");
+    }
+}
+
+#[test]
+fn classify_loop_with_double_point_exactly_at_endpoints() {
+    let k = classify(&loop_between_0_and(rat(1))).unwrap();
+    assert_eq!(k.node_type, Some(NodeType::Crunode));
+    assert_eq!(k.double_point_parameters, vec![Parameter::from_i64(0), Parameter::from_i64(1)]);
+    assert!(k.segment.has_loop, "both double-point parameters on the closed interval");
+    let k = classify(&loop_between_0_and(ratio(1, 2))).unwrap();
+    assert!(k.segment.has_loop);
+    let k = classify(&loop_between_0_and(ratio(3, 2))).unwrap();
+    assert!(!k.segment.has_loop, "t = 3/2 is outside [0, 1]");
+    let k = classify(&loop_between_0_and(ratio(1000001, 1000000))).unwrap();
+    assert!(!k.segment.has_loop, "just outside");
+}
+
+#[test]
+fn classify_inflections_exactly_at_endpoints() {
+    // explicit (s, s³) with s = t and s = t − 1
+    let at0 = from_power([rat(0), rat(1), rat(0), rat(0)], [rat(0), rat(0), rat(0), rat(1)], [1, 0, 0, 1], [0, 0]);
+    let at1 = from_power([rat(-1), rat(1), rat(0), rat(0)], [rat(-1), rat(3), rat(-3), rat(1)], [1, 0, 0, 1], [0, 0]);
+    for c in [at0, at1] {
+        let k = classify(&c).unwrap();
+        assert_eq!(k.node_type, Some(NodeType::Explicit));
+        assert_eq!(k.segment.inflections, 1);
+        assert_eq!(k.segment.category, SegmentCategory::SingleInflection);
+    }
+    // acnode (s², s³ + 3s), s = 2t − 1: inflections at s = ±1, i.e. t = 0 and t = 1
+    let ac = from_power([rat(1), rat(-4), rat(4), rat(0)], [rat(-4), rat(12), rat(-12), rat(8)], [1, 0, 0, 1], [0, 0]);
+    let k = classify(&ac).unwrap();
+    assert_eq!(k.node_type, Some(NodeType::Acnode));
+    assert_eq!(k.inflection_parameters, vec![Parameter::from_i64(0), Parameter::from_i64(1)]);
+    assert_eq!(k.segment.inflections, 2);
+    assert_eq!(k.segment.category, SegmentCategory::DoubleInflection);
+}
+
+#[test]
+fn classify_degree_elevated_quadratic_with_thirds() {
+    let q = curve("1/3 2/3, 5/3 -7/3, 10/3 1/3");
+    let c = q.elevate(1).unwrap();
+    assert!(c.points().iter().any(|p| !p.coords[0].is_integer()));
+    let k = classify(&c).unwrap();
+    assert_eq!(k.class, CurveClass::CubicReallyQuadratic);
+    assert_eq!(k.real_degree, 2);
+    assert_eq!(k.node_type, None);
+    assert_eq!(k.segment.category, SegmentCategory::Parabola);
+}
+
+#[test]
+fn classify_near_cusp_is_not_a_cusp() {
+    for e in [10, 30, 100] {
+        let eps = BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(e));
+        for sign in [1, -1] {
+            let c = curve(&format!("0 0, 1 {}, 0 1, 1 0", rat(1) + rat(sign) * &eps));
+            let k = classify(&c).unwrap();
+            assert_ne!(k.node_type, Some(NodeType::Cusp), "10^-{e}");
+            assert!(matches!(k.node_type, Some(NodeType::Crunode | NodeType::Acnode)));
+        }
+    }
+}
+
+#[test]
+fn classify_rejects_degree_above_3_and_3d() {
+    assert!(classify(&curve("0 0, 1 1, 2 0, 3 1, 4 0")).is_err());
+    assert!(classify(&BezierCurve::new(parse_points("0 0 0, 1 1 1", 3, None).unwrap()).unwrap()).is_err());
+}
+
+fn small() -> impl Strategy<Value = BigRational> {
+    prop_oneof![(-8i64..=8).prop_map(rat), (-40i64..=40, 1i64..=6).prop_map(|(p, q)| ratio(p, q))]
+}
+fn cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    prop::collection::vec((small(), small()), 4)
+        .prop_map(|v| BezierCurve::new(v.into_iter().map(|(x, y)| Point::new(vec![x, y])).collect()).unwrap())
+}
+
+fn lift(c: &BezierCurve<BigRational>) -> BezierCurve<QuadraticExt<BigRational>> {
+    c.map(QuadraticExt::from_ratio)
+}
+fn cross(u: &Point<QuadraticExt<BigRational>>, v: &Point<QuadraticExt<BigRational>>) -> QuadraticExt<BigRational> {
+    u.coords[0].clone() * &v.coords[1] - u.coords[1].clone() * &v.coords[0]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn classify_parameters_are_exact(c in cubic()) {
+        let k = classify(&c).unwrap();
+        let q = lift(&c);
+        let (d1, d2) = (q.derivative(1), q.derivative(2));
+        match k.node_type {
+            Some(NodeType::Crunode) => {
+                let p = &k.double_point_parameters;
+                let dp = Point::new(k.double_point.clone().unwrap().coords.iter().map(QuadraticExt::from_ratio).collect());
+                prop_assert_eq!(q.eval(&p[0]), dp.clone());
+                prop_assert_eq!(q.eval(&p[1]), dp);
+                prop_assert!(p[0] != p[1]);
+            }
+            Some(NodeType::Cusp) => {
+                let t = &k.cusp_parameters[0];
+                prop_assert!(d1.eval(t).coords.iter().all(|x| x.is_zero()));
+            }
+            _ => {}
+        }
+        for t in &k.inflection_parameters {
+            prop_assert!(cross(&d1.eval(t), &d2.eval(t)).is_zero());
+        }
+    }
+
+    #[test]
+    fn classify_agrees_with_loop_blinn(c in cubic()) {
+        let k = classify(&c).unwrap();
+        let (_, lb) = loop_blinn(&c);
+        if k.real_degree == 3 && !k.collinear {
+            prop_assert_eq!(k.node_type, lb);
+        } else {
+            prop_assert!(k.node_type.is_none());
+        }
+    }
+
+    /// Seed 004 (3)–(8) as printed, against the power-form route.
+    #[test]
+    fn moving_lines_follow_the_curve_and_find_the_double_point(c in cubic()) {
+        let ml = MovingLines::new(&c).unwrap();
+        prop_assert!(ml.verify().is_ok());
+        let k = classify(&c).unwrap();
+        if let Some(node) = k.node_type {
+            let d = &ml.double_point;
+            match node {
+                NodeType::Explicit => prop_assert!(d.coords[2].is_zero() && !d.coords[..2].iter().all(|x| x.is_zero())),
+                _ => {
+                    prop_assert_eq!(d.from_homogeneous(), k.double_point.clone());
+                    let (te, _) = k.t_e_and_d.clone().unwrap();
+                    prop_assert_eq!(ml.t_e(), Some(te.clone()));
+                    let e = ml.e_point().unwrap().from_homogeneous().unwrap();
+                    prop_assert_eq!(e, c.eval(&te));
+                    let (_, disc) = ml.f_and_discriminant();
+                    let expected = match node { NodeType::Crunode => std::cmp::Ordering::Greater, NodeType::Cusp => std::cmp::Ordering::Equal, _ => std::cmp::Ordering::Less };
+                    prop_assert_eq!(casteljau::Exact::sign(&disc), expected);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn classify_is_invariant_under_reversal_and_affine_maps(c in cubic(), m in prop::array::uniform4(-3i64..=3)) {
+        prop_assume!(m[0] * m[3] - m[1] * m[2] != 0);
+        let k = classify(&c).unwrap();
+        let rev = BezierCurve::new(c.points().iter().rev().cloned().collect()).unwrap();
+        let kr = classify(&rev).unwrap();
+        prop_assert_eq!(kr.class, k.class);
+        prop_assert_eq!(&kr.segment, &k.segment);
+        let mapped = BezierCurve::new(c.points().iter().map(|p| Point::new(vec![
+            rat(m[0]) * &p.coords[0] + rat(m[1]) * &p.coords[1],
+            rat(m[2]) * &p.coords[0] + rat(m[3]) * &p.coords[1],
+        ])).collect()).unwrap();
+        let km = classify(&mapped).unwrap();
+        prop_assert_eq!(km.class, k.class);
+        prop_assert_eq!(&km.segment, &k.segment);
+        prop_assert_eq!(&km.double_point_parameters, &k.double_point_parameters);
+    }
+}
