@@ -25,6 +25,7 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod canonical;
 pub mod casteljau;
 pub mod claims;
 pub mod classify;

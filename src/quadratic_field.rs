@@ -51,6 +51,10 @@ impl<K: Exact> QuadraticExt<K> {
         q
     }
 
+    /// The element `a` of the base field `K`, embedded.
+    pub fn from_base(a: K) -> Self {
+        QuadraticExt { a, b: K::zero(), d: K::zero() }
+    }
     /// The rational part `a`.
     pub fn rational_part(&self) -> &K {
         &self.a
@@ -189,8 +193,16 @@ impl<K: Exact> fmt::Display for QuadraticExt<K> {
         if self.b.is_zero() {
             return write!(f, "{}", self.a);
         }
+        let paren = |x: &K| {
+            let s = x.to_string();
+            if s.contains(' ') { format!("({s})") } else { s }
+        };
         let radical = |b: &K| {
-            if *b == K::one() { format!("sqrt({})", self.d) } else { format!("{}*sqrt({})", b, self.d) }
+            if *b == K::one() {
+                format!("sqrt({})", paren(&self.d))
+            } else {
+                format!("{}*sqrt({})", paren(b), paren(&self.d))
+            }
         };
         if self.a.is_zero() {
             if self.b.sign() == Ordering::Less {
