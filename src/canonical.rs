@@ -29,7 +29,7 @@ use crate::error::{Error, Result};
 use crate::moving_line::MovingLines;
 use crate::point::Point;
 use crate::proof::{Certificate, Counterexample, GridProver};
-use crate::quadratic_field::{QuadraticExt, rational_sqrt};
+use crate::quadratic_field::QuadraticExt;
 use crate::scalar::{Exact, Scalar, rat};
 use num_rational::BigRational;
 use std::cmp::Ordering;
