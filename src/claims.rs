@@ -13,7 +13,7 @@ use crate::fraction_free;
 use crate::parse::{parse_number, parse_points};
 use crate::point::Point;
 use crate::proof::{self, Certificate, Counterexample};
-use crate::scalar::{Rational, Scalar};
+use crate::scalar::{Exact, Rational, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use serde::Deserialize;
@@ -190,6 +190,7 @@ pub fn check_all(max_n: usize, wanted: &dyn Fn(&str) -> bool) -> Vec<ClaimResult
             Err(e) => (Verdict::FailsAsPrinted, format!("j = {}: {e}", e.identity)),
         });
     }
+    seed_004_claims(&mut push);
     let fx: Fixture = serde_json::from_str(SEEDS_CORE_JSON).expect("embedded fixture is valid JSON");
     for pf in &fx.power_forms {
         let c = curve(&pf.points);
@@ -332,6 +333,107 @@ fn compare(computed: &[Point<BigRational>], expected: &[Point<BigRational>], wha
         None => (Verdict::Holds, format!("all {} {what} equal exactly", computed.len())),
         Some(k) => {
             (Verdict::FailsAsPrinted, format!("{what}: entry {k} printed {} but computed {}", expected[k], computed[k]))
+        }
+    }
+}
+
+/// Example cubics for seed 004's four kinds (Figs. 1–4 show one of each).
+pub const SEED_004_EXAMPLES: [(&str, &str); 5] = [
+    ("crunode", "0 0, 2 2, -1 2, 1 0"),
+    ("crunode-outside", "0 0, 1 0, 2 1, 3/2 3/2"),
+    ("cusp", "0 0, 1 1, 0 1, 1 0"),
+    ("acnode", "1 -4, -1/3 0, 1/3 -4, 1 4"),
+    ("explicit", "0 0, 1 2, 2 -1, 3 1"),
+];
+
+type Push<'a> = dyn FnMut(String, &str, Verdict, &'static str, &mut dyn FnMut() -> (Verdict, String)) + 'a;
+
+fn seed_004_claims(push: &mut Push<'_>) {
+    use crate::canonical::{Formulas, canonical_map};
+    use crate::classify::{NodeType, classify};
+    use crate::moving_line::MovingLines;
+    let src = "004_3773f109b5f2edbe.txt";
+    for (name, pts) in SEED_004_EXAMPLES {
+        let c = curve(pts);
+        let k = classify(&c).expect("planar cubic");
+        let node = k.node_type.expect("genuine cubic");
+        push(
+            format!("004-moving-lines-3-5-{name}"),
+            &format!("{src}, (2)-(5): P[t]·L0[t] = P[t]·L1[t] = 0"),
+            Verdict::Holds,
+            "grid",
+            &mut || match MovingLines::new(&c).expect("cubic").verify() {
+                Ok(cert) => (Verdict::Holds, cert.to_string()),
+                Err(e) => (Verdict::FailsAsPrinted, e.to_string()),
+            },
+        );
+        if node != NodeType::Explicit {
+            push(
+                format!("004-double-point-4-7-8-{name}"),
+                &format!("{src}, (4) D = L00×L01, (7) t_E, (8) E"),
+                Verdict::Holds,
+                "exact-compare",
+                &mut || {
+                    let ml = MovingLines::new(&c).expect("cubic");
+                    let (te, _) = k.t_e_and_d.clone().expect("A ≠ 0");
+                    let d_ok = ml.double_point.from_homogeneous() == k.double_point;
+                    let te_ok = ml.t_e() == Some(te.clone());
+                    let e_ok = ml.e_point().and_then(|e| e.from_homogeneous()) == Some(c.eval(&te));
+                    let (_, disc) = ml.f_and_discriminant();
+                    let sign_ok = disc.sign()
+                        == match node {
+                            NodeType::Crunode => std::cmp::Ordering::Greater,
+                            NodeType::Cusp => std::cmp::Ordering::Equal,
+                            _ => std::cmp::Ordering::Less,
+                        };
+                    if d_ok && te_ok && e_ok && sign_ok {
+                        (
+                            Verdict::Holds,
+                            format!(
+                                "D = {}, t_E = {te}, E = P(t_E), sign of the discriminant of L1[t]·D gives {}",
+                                k.double_point.as_ref().expect("D"),
+                                node.as_str()
+                            ),
+                        )
+                    } else {
+                        (
+                            Verdict::FailsAsPrinted,
+                            format!("D {d_ok}, t_E {te_ok}, E {e_ok}, discriminant sign {sign_ok}"),
+                        )
+                    }
+                },
+            );
+        }
+        let (eq, expected) = match node {
+            NodeType::Crunode => ("(9)-(11)", Verdict::FailsAsPrinted),
+            NodeType::Cusp => ("(12)-(14)", Verdict::FailsAsPrinted),
+            NodeType::Acnode => ("(15)-(18)", Verdict::Holds),
+            NodeType::Explicit => ("Case 4 (omitted in the seed; derived)", Verdict::Holds),
+        };
+        let check = |formulas: Formulas| -> (Verdict, String) {
+            match canonical_map(&c, formulas) {
+                Ok(m) => match m.prove(&c) {
+                    Ok(cert) => (Verdict::Holds, format!("M·C(t̃) ≡ P(t): {cert}")),
+                    Err(e) => {
+                        let pts: Vec<String> = m.points.iter().map(|(n, p)| format!("{n} = {p}")).collect();
+                        (Verdict::FailsAsPrinted, format!("{} ; {e}", pts.join(", ")))
+                    }
+                },
+                Err(e) => (Verdict::FailsAsPrinted, e.to_string()),
+            }
+        };
+        let label = if node == NodeType::Explicit { "derived" } else { "as-printed" };
+        push(format!("004-canonical-map-{label}-{name}"), &format!("{src}, {eq}"), expected, "grid", &mut || {
+            check(Formulas::AsPrinted)
+        });
+        if expected == Verdict::FailsAsPrinted {
+            push(
+                format!("004-canonical-map-corrected-{name}"),
+                &format!("{src}, {eq} corrected"),
+                Verdict::Holds,
+                "grid",
+                &mut || check(Formulas::Corrected),
+            );
         }
     }
 }

@@ -456,6 +456,19 @@ fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)
             "t_E": ml.t_e().map(|t| t.to_string()),
             "verified": verified,
         });
+        if let Ok(map) = crate::canonical::canonical_map(c, crate::canonical::Formulas::Corrected) {
+            let proved = map.prove(c);
+            v["canonical"] = json!({
+                "equation": crate::canonical::canonical_equation(map.node),
+                "matrix": map.matrix.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "t_E": map.t_e.to_string(),
+                "t_F": map.t_f.to_string(),
+                "parameter": "(t - t_E)/(t_F - t_E)",
+                "points": map.points.iter().map(|(n, p)| (n.to_string(), json!(p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()))).collect::<serde_json::Map<_, _>>(),
+                "proved": proved.is_ok(),
+                "certificate": match &proved { Ok(c) => c.to_string(), Err(e) => format!("counterexample {e}") },
+            });
+        }
         v["loop_blinn"] = json!({
             "d1": lb[0].to_string(), "d2": lb[1].to_string(), "d3": lb[2].to_string(),
             "node_type": lb_node.map(|n| n.as_str()),

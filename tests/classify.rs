@@ -276,3 +276,35 @@ proptest! {
         prop_assert_eq!(&km.double_point_parameters, &k.double_point_parameters);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(120))]
+
+    /// Seed 004 (9)–(18) and Case 4: the corrected map is proved for every genuine cubic; the
+    /// printed (9) and (12) fail on every crunode and cusp (their F, G coincide with D).
+    #[test]
+    fn canonical_map_corrected_proves_and_printed_9_12_fail(c in cubic()) {
+        use casteljau::canonical::{Formulas, canonical_map};
+        let k = classify(&c).unwrap();
+        let Some(node) = k.node_type else { return Ok(()) };
+        let fixed = canonical_map(&c, Formulas::Corrected).unwrap();
+        prop_assert!(fixed.prove(&c).is_ok(), "{}", c);
+        let printed = canonical_map(&c, Formulas::AsPrinted);
+        match node {
+            NodeType::Crunode | NodeType::Cusp => prop_assert!(printed.map(|m| m.prove(&c).is_err()).unwrap_or(true)),
+            _ => prop_assert!(printed.unwrap().prove(&c).is_ok()),
+        }
+    }
+}
+
+#[test]
+fn canonical_map_for_constructed_cusps_and_acnodes() {
+    use casteljau::canonical::{Formulas, canonical_map};
+    for tau in [ratio(0, 1), ratio(1, 3), ratio(1, 1)] {
+        let c = cusp_at(tau);
+        assert!(canonical_map(&c, Formulas::Corrected).unwrap().prove(&c).is_ok());
+    }
+    let ac = from_power([rat(1), rat(-4), rat(4), rat(0)], [rat(-4), rat(12), rat(-12), rat(8)], [1, 0, 0, 1], [0, 0]);
+    let m = canonical_map(&ac, Formulas::AsPrinted).unwrap();
+    assert!(m.prove(&ac).is_ok());
+}

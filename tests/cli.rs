@@ -156,3 +156,44 @@ fn cli_help_documents_exit_codes() {
     let o = run(&["--help"], None);
     assert!(stdout(&o).contains("EXIT CODES"));
 }
+
+#[test]
+fn cli_classify_json_schema_and_batch_order() {
+    let input = "0 0 2 2 -1 2 1 0\n0 0 1 1 0 1 1 0\n0 0 1 1 x 1 1 0\n0 0 1 2 2 -1 3 1\n0 0 1 1 2 2 3 3\n0 0 1 2 2 0\n";
+    let o = run(&["classify", "--json"], Some(input));
+    assert_eq!(o.status.code(), Some(2));
+    let v: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(v.len(), 6);
+    assert_eq!(v[0]["node_type"], "crunode");
+    assert_eq!(v[0]["real_degree"], 3);
+    assert_eq!(v[0]["collinear"], false);
+    assert_eq!(v[0]["double_point"], serde_json::json!(["1/2", "3/5"]));
+    assert_eq!(v[0]["segment"], serde_json::json!({"loop": true, "cusp": false, "inflections": 0, "category": "loop"}));
+    assert_eq!(v[0]["canonical"]["proved"], true);
+    assert_eq!(v[0]["moving_lines"]["verified"], true);
+    assert_eq!(v[1]["node_type"], "cusp");
+    assert_eq!(v[1]["double_point"], serde_json::json!(["1/2", "3/4"]));
+    assert_eq!(v[1]["segment"]["cusp"], true);
+    assert_eq!(v[2]["line"], 3);
+    assert!(v[2]["error"].as_str().unwrap().contains("\"x\""));
+    assert_eq!(v[3]["node_type"], "explicit");
+    assert_eq!(v[3]["double_point"], serde_json::Value::Null);
+    assert_eq!(v[3]["segment"]["inflections"], 1);
+    assert_eq!(v[4]["node_type"], serde_json::Value::Null);
+    assert_eq!(v[4]["real_degree"], 1);
+    assert_eq!(v[4]["collinear"], true);
+    assert_eq!(v[5]["class"], "quadratic");
+    assert_eq!(v[5]["real_degree"], 2);
+}
+
+#[test]
+fn cli_classify_text_and_float() {
+    let o = run(&["classify", "--float", "0 0, 2 2, -1 2, 1 0"], None);
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    assert!(out.starts_with("crunode: "), "{out}");
+    assert!(out.contains("1/2 - 1/10*sqrt(15) (≈0.112702)"), "{out}");
+    let o = run(&["classify", "0 0, 1 1, 2 0, 3 1, 4 0"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("degree to classify 4 exceeds the limit 3"));
+}
