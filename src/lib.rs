@@ -27,6 +27,7 @@ pub mod bernstein;
 pub mod bezier;
 pub mod canonical;
 pub mod casteljau;
+pub mod certified;
 pub mod claims;
 pub mod classify;
 pub mod cli;

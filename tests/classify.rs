@@ -308,3 +308,70 @@ fn canonical_map_for_constructed_cusps_and_acnodes() {
     let m = canonical_map(&ac, Formulas::AsPrinted).unwrap();
     assert!(m.prove(&ac).is_ok());
 }
+
+fn int_cubic() -> impl Strategy<Value = [[i64; 2]; 4]> {
+    prop::array::uniform4(prop::array::uniform2(-(1i64 << 16)..(1i64 << 16)))
+}
+fn to_curve(p: &[[i64; 2]; 4]) -> BezierCurve<BigRational> {
+    BezierCurve::new(p.iter().map(|q| Point::new(vec![rat(q[0]), rat(q[1])])).collect()).unwrap()
+}
+fn exact_summary(c: &BezierCurve<BigRational>) -> casteljau::certified::Summary {
+    let k = classify(c).unwrap();
+    (k.class, k.segment)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+
+    #[test]
+    fn certified_summary_equals_exact_classification(c in cubic()) {
+        prop_assert_eq!(casteljau::certified::summarize(&c), exact_summary(&c));
+    }
+
+    #[test]
+    fn certified_f64_filter_never_disagrees(p in int_cubic(), small in prop::array::uniform4(prop::array::uniform2(-3i64..=3)), pick in 0u8..3) {
+        // mix wide random coordinates with tiny ones (more degenerate cases)
+        let p = if pick == 0 { small } else { p };
+        let c = to_curve(&p);
+        let f = p.map(|q| q.map(|v| v as f64));
+        if let Some(s) = casteljau::certified::filter_f64(&f) {
+            prop_assert_eq!(s, exact_summary(&c));
+        }
+        prop_assert_eq!(casteljau::certified::decide(&p.map(|q| q.map(|v| v as i128))).unwrap(), exact_summary(&c));
+    }
+}
+
+#[test]
+fn certified_summary_on_constructed_edge_cases() {
+    let mut cases = vec![loop_between_0_and(rat(1)), loop_between_0_and(ratio(3, 2)), curve("0 0, 0 0, 1 1, 1 0")];
+    for tau in [ratio(0, 1), ratio(1, 1), ratio(1, 3), ratio(-1, 7)] {
+        cases.push(cusp_at(tau));
+    }
+    cases.push(from_power([rat(1), rat(-4), rat(4), rat(0)], [rat(-4), rat(12), rat(-12), rat(8)], [1, 0, 0, 1], [0, 0]));
+    cases.push(curve("0 0, 3 0, -1 0, 2 0"));
+    cases.push(curve("0 0, 2 2, 3 3, 3 3"));
+    for e in [10u32, 30] {
+        let eps = BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(e));
+        cases.push(curve(&format!("0 0, 1 {}, 0 1, 1 0", rat(1) + eps)));
+    }
+    for c in &cases {
+        assert_eq!(casteljau::certified::summarize(c), exact_summary(c), "{c}");
+    }
+    // near a cusp the filter either certifies the true answer for its exact f64 input, or abstains
+    let y = 1.0 + 1e-15;
+    let near = [[0.0, 0.0], [1.0, y], [0.0, 1.0], [1.0, 0.0]];
+    let exact_y = BigRational::from_float(y).unwrap();
+    let exact_curve = BezierCurve::new(vec![
+        Point::new(vec![rat(0), rat(0)]),
+        Point::new(vec![rat(1), exact_y]),
+        Point::new(vec![rat(0), rat(1)]),
+        Point::new(vec![rat(1), rat(0)]),
+    ])
+    .unwrap();
+    let truth = exact_summary(&exact_curve);
+    assert_ne!(truth.0, CurveClass::Cubic(NodeType::Cusp));
+    if let Some(s) = casteljau::certified::filter_f64(&near) {
+        assert_eq!(s, truth);
+    }
+}
+}
