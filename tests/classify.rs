@@ -347,7 +347,12 @@ fn certified_summary_on_constructed_edge_cases() {
     for tau in [ratio(0, 1), ratio(1, 1), ratio(1, 3), ratio(-1, 7)] {
         cases.push(cusp_at(tau));
     }
-    cases.push(from_power([rat(1), rat(-4), rat(4), rat(0)], [rat(-4), rat(12), rat(-12), rat(8)], [1, 0, 0, 1], [0, 0]));
+    cases.push(from_power(
+        [rat(1), rat(-4), rat(4), rat(0)],
+        [rat(-4), rat(12), rat(-12), rat(8)],
+        [1, 0, 0, 1],
+        [0, 0],
+    ));
     cases.push(curve("0 0, 3 0, -1 0, 2 0"));
     cases.push(curve("0 0, 2 2, 3 3, 3 3"));
     for e in [10u32, 30] {
@@ -373,5 +378,4 @@ fn certified_summary_on_constructed_edge_cases() {
     if let Some(s) = casteljau::certified::filter_f64(&near) {
         assert_eq!(s, truth);
     }
-}
 }
