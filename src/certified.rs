@@ -15,7 +15,8 @@
 //! [`decide`] runs these tests over any [`SignRing`]: checked `i128` (exact, `None` on overflow),
 //! [`Certified`] `f64` (a value with a rigorous error bound; `None` when a sign is not certain),
 //! `BigInt` (always exact), or plain `f64` (the uncertified baseline). [`summarize`] chains them:
-//! the filter, then `i128`, then `BigInt` — it never disagrees with the exact classification.
+//! unchecked `i128` where the input bound rules out overflow, checked `i128`, then `BigInt` — it
+//! never disagrees with the exact classification.
 
 use crate::bezier::BezierCurve;
 use crate::classify::{CurveClass, NodeType, SegmentCategory, SegmentFeatures};
@@ -78,6 +79,33 @@ impl SignRing for BigInt {
         } else {
             Ordering::Greater
         })
+    }
+}
+
+/// `i128` arithmetic without overflow checks, for control points with |coordinates| < 2²⁴:
+/// then `|a_k| < 2²⁹`, `|A|, |B|, |C| < 2⁵⁹` and every polynomial [`decide`] evaluates
+/// (at most degree 2 in `A, B, C` with coefficients ≤ 4) stays below 2¹²², so nothing wraps.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SmallInt(pub i128);
+
+/// Largest |coordinate| (exclusive) for which [`SmallInt`] arithmetic cannot overflow.
+pub const SMALL_INT_LIMIT: i64 = 1 << 24;
+
+impl SignRing for SmallInt {
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(SmallInt(self.0 + o.0))
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(SmallInt(self.0 - o.0))
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(SmallInt(self.0 * o.0))
+    }
+    fn scale(&self, k: i64) -> Option<Self> {
+        Some(SmallInt(self.0 * k as i128))
+    }
+    fn sign(&self) -> Option<Ordering> {
+        Some(self.0.cmp(&0))
     }
 }
 
@@ -285,9 +313,23 @@ pub fn filter_f64(p: &[[f64; 2]; 4]) -> Option<Summary> {
     decide(&p.map(|q| q.map(Certified::exact)))
 }
 
-/// Class and segment features of a planar cubic, exactly: the certified `f64` filter when the
-/// coordinates are integers below 2⁵³, else checked `i128`, else `BigInt` — all on the integer
-/// numerators over the common denominator (the features are invariant under that scaling).
+/// Class and segment features of a planar cubic with integer control points, exactly:
+/// unchecked [`SmallInt`] arithmetic when |coordinates| < 2²⁴ (font-like inputs; no overflow is
+/// possible), else checked `i128`, else `BigInt`. (For integers the certified `f64` filter is
+/// slower than exact `i128`; it serves inputs that are floats — see [`filter_f64`].)
+pub fn summarize_integers(p: &[[i64; 2]; 4]) -> Summary {
+    if p.iter().flatten().all(|v| v.abs() < SMALL_INT_LIMIT) {
+        return decide(&p.map(|q| q.map(|v| SmallInt(v as i128)))).expect("SmallInt never overflows below the limit");
+    }
+    if let Some(s) = decide(&p.map(|q| q.map(|v| v as i128))) {
+        return s;
+    }
+    decide(&p.map(|q| q.map(BigInt::from))).expect("BigInt decides every sign")
+}
+
+/// Class and segment features of a planar cubic, exactly, on the integer numerators over the
+/// common denominator (the features are invariant under that scaling): [`summarize_integers`]
+/// when they fit in `i64`, else `BigInt`.
 ///
 /// # Panics
 /// **Panics** unless `curve` is a planar cubic.
@@ -295,14 +337,8 @@ pub fn summarize(curve: &BezierCurve<BigRational>) -> Summary {
     assert!(curve.degree() == 3 && curve.dim() == 2, "summarize takes a planar cubic");
     let ic = IntegerCurve::new(curve);
     let n = &ic.numerators;
-    if let Some(v) = n.iter().map(|x| x.to_i64().filter(|v| v.unsigned_abs() < 1 << 53)).collect::<Option<Vec<i64>>>() {
-        let f = [0, 1, 2, 3].map(|i| [v[2 * i] as f64, v[2 * i + 1] as f64]);
-        if let Some(s) = filter_f64(&f) {
-            return s;
-        }
-        if let Some(s) = decide(&[0, 1, 2, 3].map(|i| [v[2 * i] as i128, v[2 * i + 1] as i128])) {
-            return s;
-        }
+    if let Some(v) = n.iter().map(ToPrimitive::to_i64).collect::<Option<Vec<i64>>>() {
+        return summarize_integers(&[0, 1, 2, 3].map(|i| [v[2 * i], v[2 * i + 1]]));
     }
     decide(&[0, 1, 2, 3].map(|i| [n[2 * i].clone(), n[2 * i + 1].clone()])).expect("BigInt decides every sign")
 }

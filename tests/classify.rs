@@ -379,3 +379,14 @@ fn certified_summary_on_constructed_edge_cases() {
         assert_eq!(s, truth);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// At the edge of the SmallInt bound (|coordinates| just below 2²⁴) nothing overflows.
+    #[test]
+    fn certified_small_int_limit_is_safe(p in prop::array::uniform4(prop::array::uniform2(prop_oneof![Just((1i64 << 24) - 1), Just(-(1i64 << 24) + 1), -(1i64 << 24) + 1..(1i64 << 24)]))) {
+        prop_assert_eq!(casteljau::certified::summarize_integers(&p), exact_summary(&to_curve(&p)));
+        prop_assert_eq!(casteljau::certified::decide(&p.map(|q| q.map(num_bigint::BigInt::from))).unwrap(), exact_summary(&to_curve(&p)));
+    }
+}
