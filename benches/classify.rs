@@ -58,6 +58,11 @@ fn classify_batch(c: &mut Criterion) {
     g.bench_function("exact_smallint_i128_bigint", |b| {
         b.iter(|| curves.iter().map(|p| summarize_integers(black_box(p)).0).collect::<Vec<_>>())
     });
+    g.bench_function("certified_f64_filter", |b| {
+        b.iter(|| {
+            floats.iter().map(|p| casteljau::certified::filter_f64(black_box(p)).map(|s| s.0)).collect::<Vec<_>>()
+        })
+    });
     g.bench_function("naive_bigrational_classify", |b| {
         b.iter(|| exact.iter().map(|c| classify(black_box(c)).unwrap().class).collect::<Vec<_>>())
     });
