@@ -39,6 +39,8 @@ pub mod point;
 pub mod proof;
 pub mod quadratic_field;
 pub mod scalar;
+#[cfg(feature = "proptest")]
+pub mod strategies;
 
 pub use bezier::BezierCurve;
 pub use error::{Error, Position, Result};

@@ -1,0 +1,176 @@
+//! proptest strategies for users' tests (feature `proptest`): exact rationals, random curves, and
+//! the edge cases float classifiers get wrong, each constructed so its answer is known exactly.
+//!
+//! Every edge-case curve is a random invertible affine image (small integer matrix, integer
+//! offset) of a canonical curve reparametrised so the feature sits exactly where promised; the
+//! control points are exact rationals (use [`crate::scalar::ratio_to_f64`] to feed float code).
+//!
+//! ```
+//! use casteljau::{classify::classify, strategies};
+//! use proptest::prelude::*;
+//! proptest!(|(c in strategies::cusp_at(strategies::unit_parameter()))| {
+//!     let (curve, tau) = c;
+//!     let k = classify(&curve).unwrap();
+//!     prop_assert_eq!(k.node_type, Some(casteljau::classify::NodeType::Cusp));
+//!     prop_assert!(k.segment.has_cusp, "cusp at t = {} in [0, 1]", tau);
+//! });
+//! ```
+
+use crate::bezier::BezierCurve;
+use crate::point::Point;
+use crate::scalar::{rat, ratio};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use proptest::prelude::*;
+
+/// Small exact rationals `p/q`, `|p| ≤ 200`, `1 ≤ q ≤ 60`.
+pub fn small_rational() -> impl Strategy<Value = BigRational> {
+    (-200i64..=200, 1i64..=60).prop_map(|(p, q)| ratio(p, q))
+}
+
+/// Parameters in `[0, 1]`, with the endpoints `0` and `1` drawn often.
+pub fn unit_parameter() -> impl Strategy<Value = BigRational> {
+    prop_oneof![Just(rat(0)), Just(rat(1)), (0i64..=97, 1i64..=97).prop_map(|(p, q)| ratio(p.min(q), q))]
+}
+
+/// Planar cubics with small rational control points.
+pub fn cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    prop::collection::vec((small_rational(), small_rational()), 4)
+        .prop_map(|v| BezierCurve::new(v.into_iter().map(|(x, y)| Point::new(vec![x, y])).collect()).unwrap())
+}
+
+/// An invertible integer matrix `[m00, m01, m10, m11]` and an integer offset.
+fn affine() -> impl Strategy<Value = ([i64; 4], [i64; 2])> {
+    (prop::array::uniform4(-4i64..=4), prop::array::uniform2(-50i64..=50))
+        .prop_filter("invertible", |(m, _)| m[0] * m[3] - m[1] * m[2] != 0)
+}
+
+/// The cubic with power form `(Σ x_k t^k, Σ y_k t^k)` mapped by `v ↦ M v + o`.
+pub fn cubic_from_power(
+    x: [BigRational; 4],
+    y: [BigRational; 4],
+    m: [i64; 4],
+    o: [i64; 2],
+) -> BezierCurve<BigRational> {
+    let coeffs: Vec<Point<BigRational>> = (0..4)
+        .map(|k| {
+            let (u, v) = (&x[k], &y[k]);
+            let (ox, oy) = if k == 0 { (rat(o[0]), rat(o[1])) } else { (rat(0), rat(0)) };
+            Point::new(vec![rat(m[0]) * u + rat(m[1]) * v + ox, rat(m[2]) * u + rat(m[3]) * v + oy])
+        })
+        .collect();
+    BezierCurve::from_power(&coeffs).expect("four coefficients")
+}
+
+/// Power coefficients of `(α t + β)^k`, `k = 0..=3`, as polynomials in `t`.
+fn linear_powers(alpha: &BigRational, beta: &BigRational) -> [[BigRational; 4]; 4] {
+    let (a, b) = (alpha.clone(), beta.clone());
+    [
+        [rat(1), rat(0), rat(0), rat(0)],
+        [b.clone(), a.clone(), rat(0), rat(0)],
+        [b.clone() * &b, rat(2) * &a * &b, a.clone() * &a, rat(0)],
+        [b.clone() * &b * &b, rat(3) * &a * &b * &b, rat(3) * &a * &a * &b, a.clone() * &a * &a],
+    ]
+}
+
+/// `Σ c_k s^k` with `s = α t + β`, as power coefficients in `t`.
+fn compose(c: [BigRational; 4], alpha: &BigRational, beta: &BigRational) -> [BigRational; 4] {
+    let p = linear_powers(alpha, beta);
+    let mut out = [rat(0), rat(0), rat(0), rat(0)];
+    for (k, ck) in c.iter().enumerate() {
+        for j in 0..4 {
+            out[j] = out[j].clone() + ck.clone() * &p[k][j];
+        }
+    }
+    out
+}
+
+/// A cusp exactly at `t = τ` (τ from `tau`): an affine image of `(s², s³)`, `s = t − τ`.
+/// Yields the curve and `τ`.
+pub fn cusp_at(
+    tau: impl Strategy<Value = BigRational>,
+) -> impl Strategy<Value = (BezierCurve<BigRational>, BigRational)> {
+    (tau, affine()).prop_map(|(tau, (m, o))| {
+        let (one, mt) = (rat(1), -tau.clone());
+        let x = compose([rat(0), rat(0), rat(1), rat(0)], &one, &mt);
+        let y = compose([rat(0), rat(0), rat(0), rat(1)], &one, &mt);
+        (cubic_from_power(x, y, m, o), tau)
+    })
+}
+
+/// A loop whose double point is reached exactly at `t = t0` and `t = t1` (`t0 < t1`, drawn from
+/// `{0, 1}` and `[0, 2]`, so boundary cases are frequent): an affine image of the crunode
+/// `(s² − 1, s³ − s)` with `s = −1` at `t0` and `s = 1` at `t1`. Yields the curve and `(t0, t1)`.
+pub fn loop_between() -> impl Strategy<Value = (BezierCurve<BigRational>, (BigRational, BigRational))> {
+    let end = prop_oneof![Just(rat(0)), Just(rat(1)), (0i64..=40).prop_map(|p| ratio(p, 20))];
+    (end.clone(), end, affine()).prop_filter_map("distinct parameters", |(a, b, (m, o))| {
+        let (t0, t1) = if a < b {
+            (a, b)
+        } else if b < a {
+            (b, a)
+        } else {
+            return None;
+        };
+        // s = α t + β with s(t0) = −1, s(t1) = 1
+        let alpha = rat(2) / (t1.clone() - &t0);
+        let beta = rat(-1) - alpha.clone() * &t0;
+        let x = compose([rat(-1), rat(0), rat(1), rat(0)], &alpha, &beta);
+        let y = compose([rat(0), rat(-1), rat(0), rat(1)], &alpha, &beta);
+        Some((cubic_from_power(x, y, m, o), (t0, t1)))
+    })
+}
+
+/// An inflection exactly at an endpoint: an affine image of `(s, s³)` (explicit cubic) with the
+/// inflection `s = 0` at `t = 0` or `t = 1`. Yields the curve and the endpoint.
+pub fn inflection_at_endpoint() -> impl Strategy<Value = (BezierCurve<BigRational>, BigRational)> {
+    (prop_oneof![Just(rat(0)), Just(rat(1))], 1i64..=5, affine()).prop_map(|(at, scale, (m, o))| {
+        let alpha = rat(scale);
+        let beta = -alpha.clone() * &at;
+        let x = compose([rat(0), rat(1), rat(0), rat(0)], &alpha, &beta);
+        let y = compose([rat(0), rat(0), rat(0), rat(1)], &alpha, &beta);
+        (cubic_from_power(x, y, m, o), at)
+    })
+}
+
+/// A quadratic with thirds in its coordinates, written as a cubic (degree-elevated): the class
+/// is `cubic_really_quadratic` (or collinear if the quadratic was).
+pub fn degree_elevated_quadratic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    prop::collection::vec((-30i64..=30, -30i64..=30), 3).prop_map(|v| {
+        let q = v.into_iter().map(|(x, y)| Point::new(vec![ratio(x, 3), ratio(y, 3)])).collect();
+        BezierCurve::new(q).unwrap().elevate(1).unwrap()
+    })
+}
+
+/// A cubic whose four control points lie on one line (random positions along it).
+pub fn collinear_cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    (prop::collection::vec(small_rational(), 4), (-5i64..=5, -5i64..=5), small_rational()).prop_map(
+        |(s, (dx, dy), c)| {
+            let d = if dx == 0 && dy == 0 { (1, 0) } else { (dx, dy) };
+            let pts = s.into_iter().map(|s| Point::new(vec![s.clone() * rat(d.0) + &c, s * rat(d.1)])).collect();
+            BezierCurve::new(pts).unwrap()
+        },
+    )
+}
+
+/// A cubic with two coincident control points (P0 = P1, P1 = P2 or P2 = P3).
+pub fn coincident_control_points() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    (cubic(), 0usize..3).prop_map(|(c, i)| {
+        let mut pts = c.into_points();
+        pts[i + 1] = pts[i].clone();
+        BezierCurve::new(pts).unwrap()
+    })
+}
+
+/// A near-cusp: the exact cusp `(0,0) (1,1) (0,1) (1,0)` (cusp at t = 1/2) with `P1.y` moved by
+/// `±10^-k`, `k` from `exponents`. Exactly a crunode or an acnode, never a cusp.
+pub fn near_cusp(exponents: std::ops::RangeInclusive<u32>) -> impl Strategy<Value = (BezierCurve<BigRational>, u32)> {
+    (exponents, prop_oneof![Just(1i64), Just(-1i64)]).prop_map(|(k, sign)| {
+        let eps = BigRational::new(BigInt::from(sign), BigInt::from(10).pow(k));
+        let pts = [(0, 0), (1, 1), (0, 1), (1, 0)]
+            .iter()
+            .enumerate()
+            .map(|(i, &(x, y))| Point::new(vec![rat(x), if i == 1 { rat(y) + &eps } else { rat(y) }]))
+            .collect();
+        (BezierCurve::new(pts).unwrap(), k)
+    })
+}
