@@ -103,6 +103,13 @@ pub enum Command {
         /// Also print f64 approximations of the exact parameters.
         #[arg(long)]
         float: bool,
+        /// Weights w0..w3 of a rational cubic (exact numbers): classified projectively.
+        #[arg(long, allow_hyphen_values = true)]
+        weights: Option<String>,
+        /// Read control points as homogeneous "X Y W" (W = 0: a point at infinity); implies a
+        /// rational cubic.
+        #[arg(long)]
+        homogeneous: bool,
         /// The curve(s) and output form.
         #[command(flatten)]
         curve: CurveArgs,
@@ -168,7 +175,23 @@ pub fn main() -> i32 {
 pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
     match cli.command {
         Command::Prove { max_n, filter, json } => prove(max_n, filter.as_deref(), json, out),
-        Command::Classify { float, curve } => batch(&curve, out, |c| classify(c, float)),
+        Command::Classify { float, weights, homogeneous, mut curve } => {
+            if homogeneous {
+                curve.dim = 3;
+            }
+            let weights = match weights.map(|w| parse_points(&w, 1, None)).transpose() {
+                Ok(w) => w.map(|w| w.into_iter().map(|p| p.coords[0].clone()).collect::<Vec<_>>()),
+                Err(e) => {
+                    eprintln!("casteljau: --weights: {e}");
+                    return 2;
+                }
+            };
+            if homogeneous || weights.is_some() {
+                batch(&curve, out, |c| classify_weighted(c, weights.as_deref(), homogeneous))
+            } else {
+                batch(&curve, out, |c| classify(c, float))
+            }
+        }
         Command::Eval { t, curve } => {
             let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
             with_param(ts, &curve, out, |c, ts| eval(c, ts))
@@ -509,6 +532,50 @@ fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)
         if k.segment.inflections == 1 { "" } else { "s" },
         k.segment.category.as_str()
     );
+    Ok((text, v))
+}
+
+fn classify_weighted(
+    c: &BezierCurve<BigRational>,
+    weights: Option<&[BigRational]>,
+    homogeneous: bool,
+) -> Result<(String, Value)> {
+    let h: Vec<Point<BigRational>> = if homogeneous {
+        if weights.is_some() {
+            return Err(Error::InvalidArgument { message: "give --weights or --homogeneous, not both".into() });
+        }
+        c.points().to_vec()
+    } else {
+        let w = weights.expect("weights given");
+        if w.len() != c.points().len() {
+            return Err(Error::InvalidArgument {
+                message: format!("{} weights for {} control points", w.len(), c.points().len()),
+            });
+        }
+        c.points().iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect()
+    };
+    let k = crate::rational_cubic::classify_rational(&h)?;
+    let params: Vec<String> = k.double_point_parameters.iter().map(|p| p.to_string()).collect();
+    let v = json!({
+        "rational": true,
+        "class": k.class,
+        "reason": k.reason,
+        "node_type": k.node_type.map(|n| n.as_str()),
+        "double_point": k.double_point.as_ref().map(point_json),
+        "double_point_homogeneous": k.double_point_homogeneous.as_ref().map(point_json),
+        "double_point_at_infinity": k.at_infinity,
+        "double_point_parameters": params,
+        "parameter_at_infinity": k.parameter_at_infinity,
+        "segment": {"loop": k.has_loop, "cusp": k.has_cusp},
+    });
+    let mut text = k.class.to_string();
+    if let Some(n) = k.node_type {
+        text += &format!(" ({})", n.as_str());
+    }
+    text += &format!(": {}", k.reason);
+    if !params.is_empty() {
+        text += &format!("; finite double-point parameters t = {}", params.join(", "));
+    }
     Ok((text, v))
 }
 

@@ -38,6 +38,7 @@ pub mod parse;
 pub mod point;
 pub mod proof;
 pub mod quadratic_field;
+pub mod rational_cubic;
 pub mod scalar;
 #[cfg(feature = "proptest")]
 pub mod strategies;

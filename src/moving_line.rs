@@ -56,7 +56,12 @@ impl MovingLines {
             return Err(Error::InvalidArgument { message: "moving lines need a planar cubic".into() });
         }
         let p = curve.points();
-        let q = [hom(&p[0], 1), hom(&p[1], 3), hom(&p[2], 3), hom(&p[3], 1)];
+        Ok(Self::from_homogeneous([hom(&p[0], 1), hom(&p[1], 3), hom(&p[2], 3), hom(&p[3], 1)]))
+    }
+
+    /// The moving lines from homogeneous `Q0..Q3` directly (`Q_i = C(3,i)·w_i·(x_i, y_i, 1)` for
+    /// a rational cubic; the construction (3)–(5) is projective).
+    pub fn from_homogeneous(q: [P3; 4]) -> Self {
         let v = |i: usize, j: usize, k: usize| q[i].dot(&x(&q[j], &q[k]));
         let (v023, v013, v012) = (v(0, 2, 3), v(0, 1, 3), v(0, 1, 2));
         let l00 = x(&q[0], &q[2])
@@ -72,7 +77,7 @@ impl MovingLines {
             .scale(&BigRational::new(1.into(), 2.into()));
         let l12 = x(&q[1], &q[3]).sub(&x(&q[0], &q[3])).sub(&x(&q[2], &q[3]));
         let double_point = x(&l00, &l01);
-        Ok(MovingLines { q, l0: [l00, l01], l1: [l10, l11, l12], double_point })
+        MovingLines { q, l0: [l00, l01], l1: [l10, l11, l12], double_point }
     }
 
     /// `P[t]` in homogeneous coordinates.

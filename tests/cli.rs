@@ -197,3 +197,29 @@ fn cli_classify_text_and_float() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("degree to classify 4 exceeds the limit 3"));
 }
+
+#[test]
+fn cli_classify_rational_cubics() {
+    // seed 000 example 2: the folium, node at the origin at t = 0 and t = ∞
+    let o = run(&["classify", "--json", "--weights", "1 1 1 2", "0 0, 1 0, 2 1, 3/2 3/2"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["node_type"], "crunode");
+    assert_eq!(v["double_point"], serde_json::json!(["0", "0"]));
+    assert_eq!(v["parameter_at_infinity"], true);
+    // homogeneous input with a point at infinity: the explicit cubic is a cusp at infinity
+    let o = run(&["classify", "--json", "--homogeneous", "0 0 1, 1 2 1, 2 -1 1, 3 1 1"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["node_type"], "cusp");
+    assert_eq!(v["double_point_at_infinity"], true);
+    assert_eq!(v["double_point"], serde_json::Value::Null);
+    // wrong weight count, zero weight: exit 2 with a clear message
+    let o = run(&["classify", "--weights", "1 1 1", "0 0, 1 0, 2 1, 3/2 3/2"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("3 weights for 4 control points"));
+    let o = run(&["classify", "--weights", "1 0 1 1", "0 0, 1 0, 2 1, 3/2 3/2"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("(0, 0, 0)"));
+    let o = run(&["classify", "--weights", "1 x 1 1", "0 0, 1 0, 2 1, 3/2 3/2"], None);
+    assert_eq!(o.status.code(), Some(2));
+}
