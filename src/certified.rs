@@ -342,3 +342,31 @@ pub fn summarize(curve: &BezierCurve<BigRational>) -> Summary {
     }
     decide(&[0, 1, 2, 3].map(|i| [n[2 * i].clone(), n[2 * i + 1].clone()])).expect("BigInt decides every sign")
 }
+
+/// Class and segment features of a cubic given in `f64` (each value taken as the exact binary
+/// number it is): the certified filter when it can decide, otherwise the exact rational path.
+/// Never disagrees with [`classify`](crate::classify::classify) on the exact input.
+///
+/// # Errors
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a NaN or infinite coordinate.
+///
+/// # Example
+/// ```
+/// use casteljau::certified::summarize_f64;
+/// use casteljau::classify::{CurveClass, NodeType};
+/// let s = summarize_f64(&[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]]).unwrap();
+/// assert_eq!(s.0, CurveClass::Cubic(NodeType::Cusp)); // exact cusp: the filter abstains, exact decides
+/// ```
+pub fn summarize_f64(p: &[[f64; 2]; 4]) -> crate::error::Result<Summary> {
+    if let Some(s) = filter_f64(p) {
+        return Ok(s);
+    }
+    let mut pts = Vec::with_capacity(4);
+    for (i, q) in p.iter().enumerate() {
+        let coords = q.iter().map(|&v| BigRational::from_float(v)).collect::<Option<Vec<_>>>().ok_or_else(|| {
+            crate::Error::InvalidArgument { message: format!("control point {} is not finite", i + 1) }
+        })?;
+        pts.push(crate::point::Point::new(coords));
+    }
+    Ok(summarize(&BezierCurve::new(pts)?))
+}

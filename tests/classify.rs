@@ -390,3 +390,15 @@ proptest! {
         prop_assert_eq!(casteljau::certified::decide(&p.map(|q| q.map(num_bigint::BigInt::from))).unwrap(), exact_summary(&to_curve(&p)));
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Float inputs (any binary64 values, including near-degenerate ones) are classified exactly.
+    #[test]
+    fn certified_summarize_f64_equals_exact_on_the_binary_values(p in prop::array::uniform4(prop::array::uniform2(prop_oneof![-1e3f64..1e3, (-4i32..=4).prop_map(|v| v as f64), Just(0.1f64), Just(1.0 + f64::EPSILON)]))) {
+        let s = casteljau::certified::summarize_f64(&p).unwrap();
+        let c = BezierCurve::new(p.iter().map(|q| Point::new(q.iter().map(|&v| BigRational::from_float(v).unwrap()).collect())).collect()).unwrap();
+        prop_assert_eq!(s, exact_summary(&c));
+    }
+}
