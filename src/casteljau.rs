@@ -79,13 +79,7 @@ pub fn subdivide<S: Scalar>(curve: &BezierCurve<S>, t0: &S) -> (BezierCurve<S>, 
 /// # Errors
 /// [`Error::TooLarge`] for `depth > MAX_SUBDIVISION_DEPTH`.
 pub fn subdivide_repeatedly<S: Scalar>(curve: &BezierCurve<S>, t0: &S, depth: u32) -> Result<Vec<BezierCurve<S>>> {
-    if depth > MAX_SUBDIVISION_DEPTH {
-        return Err(Error::TooLarge {
-            what: "subdivision depth",
-            value: depth as usize,
-            limit: MAX_SUBDIVISION_DEPTH as usize,
-        });
-    }
+    check_depth(depth)?;
     let mut pieces = vec![curve.clone()];
     for _ in 0..depth {
         pieces = pieces
@@ -97,6 +91,18 @@ pub fn subdivide_repeatedly<S: Scalar>(curve: &BezierCurve<S>, t0: &S, depth: u3
             .collect();
     }
     Ok(pieces)
+}
+
+/// [`Error::TooLarge`] for `depth > MAX_SUBDIVISION_DEPTH`.
+pub(crate) fn check_depth(depth: u32) -> Result<()> {
+    if depth > MAX_SUBDIVISION_DEPTH {
+        return Err(Error::TooLarge {
+            what: "subdivision depth",
+            value: depth as usize,
+            limit: MAX_SUBDIVISION_DEPTH as usize,
+        });
+    }
+    Ok(())
 }
 
 /// The parameter intervals of the pieces of [`subdivide_repeatedly`]: piece `k` covers

@@ -206,12 +206,13 @@ fn cross(u: &Point<BigRational>, v: &Point<BigRational>) -> BigRational {
     u.coords[0].clone() * &v.coords[1] - u.coords[1].clone() * &v.coords[0]
 }
 
-fn in_unit_interval(t: &Parameter) -> bool {
+/// `0 ≤ t ≤ 1`, exactly.
+pub(crate) fn in_unit_interval(t: &Parameter) -> bool {
     t.sign() != Ordering::Less && (Parameter::one() - t).sign() != Ordering::Less
 }
 
 /// `c + s·√r` for `s = ±1` (`r ≥ 0`).
-fn shifted(c: &BigRational, r: &BigRational, s: i64) -> Parameter {
+pub(crate) fn shifted(c: &BigRational, r: &BigRational, s: i64) -> Parameter {
     Parameter::from_ratio(c) + Parameter::sqrt(r.clone()) * Parameter::from_i64(s)
 }
 

@@ -5,7 +5,7 @@
 //! line gets an error (with its line number) and the exit code is 2 at the end.
 
 use crate::bezier::BezierCurve;
-use crate::casteljau::{subdivide_repeatedly, subdivision_intervals};
+use crate::casteljau::subdivision_intervals;
 use crate::claims;
 use crate::error::{Error, Position, Result};
 use crate::fraction_free;
@@ -357,7 +357,7 @@ fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u32) -> Resu
         ));
     }
     output_limit("subdivision output (pieces × points)", (c.degree() + 1) << depth.min(40), MAX_SUBDIVISION_POINTS)?;
-    let pieces = subdivide_repeatedly(c, t0, depth)?;
+    let pieces = fraction_free::subdivide_repeatedly(c, t0, depth)?;
     let ivs = subdivision_intervals(t0, depth);
     let text = pieces.iter().zip(&ivs).map(|(p, (a, b))| format!("[{a}, {b}]: {p}")).collect::<Vec<_>>().join("\n");
     let js: Vec<Value> = pieces

@@ -173,6 +173,25 @@ pub fn subdivide(
     (BezierCurve::new(tri.left_polygon()).unwrap(), BezierCurve::new(tri.right_polygon()).unwrap())
 }
 
+/// [`casteljau::subdivide_repeatedly`](crate::casteljau::subdivide_repeatedly) on the
+/// fraction-free kernel: `2^depth` pieces, each split at its own local `t0`.
+///
+/// # Errors
+/// [`Error::TooLarge`](crate::Error::TooLarge) for `depth` beyond
+/// [`MAX_SUBDIVISION_DEPTH`](crate::casteljau::MAX_SUBDIVISION_DEPTH).
+pub fn subdivide_repeatedly(
+    curve: &BezierCurve<BigRational>,
+    t0: &BigRational,
+    depth: u32,
+) -> Result<Vec<BezierCurve<BigRational>>> {
+    crate::casteljau::check_depth(depth)?;
+    let mut pieces = vec![curve.clone()];
+    for _ in 0..depth {
+        pieces = pieces.iter().flat_map(|c| <[_; 2]>::from(subdivide(c, t0))).collect();
+    }
+    Ok(pieces)
+}
+
 /// Integer triangle rows (flat), or `None` on overflow of `I`.
 fn integer_rows<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<Vec<Vec<BigInt>>> {
     let dim = curve.dim;

@@ -17,7 +17,7 @@
 //! whose double point is at infinity.
 
 use crate::bernstein::to_power;
-use crate::classify::{NodeType, Parameter};
+use crate::classify::{NodeType, Parameter, in_unit_interval, shifted};
 use crate::error::{Error, Result};
 use crate::moving_line::MovingLines;
 use crate::point::Point;
@@ -174,7 +174,6 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
     out.at_infinity = dw.is_zero();
     out.double_point = d.from_homogeneous();
     out.double_point_homogeneous = Some(d);
-    let in_unit = |t: &Parameter| t.sign() != Ordering::Less && (Parameter::one() - t).sign() != Ordering::Less;
     match g.len() {
         3 => {
             // t² + b t + c
@@ -189,14 +188,13 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
             out.node_type = Some(node);
             match node {
                 NodeType::Crunode => {
-                    let r = Parameter::sqrt(disc / rat(4));
-                    let c0 = Parameter::from_ratio(&center);
-                    out.double_point_parameters = vec![c0.clone() - &r, c0 + &r];
-                    out.has_loop = out.double_point_parameters.iter().all(in_unit);
+                    let r = disc / rat(4);
+                    out.double_point_parameters = vec![shifted(&center, &r, -1), shifted(&center, &r, 1)];
+                    out.has_loop = out.double_point_parameters.iter().all(in_unit_interval);
                 }
                 NodeType::Cusp => {
                     out.double_point_parameters = vec![Parameter::from_ratio(&center)];
-                    out.has_cusp = in_unit(&out.double_point_parameters[0]);
+                    out.has_cusp = in_unit_interval(&out.double_point_parameters[0]);
                 }
                 _ => {}
             }

@@ -13,17 +13,7 @@ fn curve(s: &str) -> BezierCurve<BigRational> {
     BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap()
 }
 
-/// The cubic with power form `x(t) = Σ x_k t^k`, `y(t) = Σ y_k t^k`, mapped by `x ↦ M x + o`.
-fn from_power(x: [BigRational; 4], y: [BigRational; 4], m: [i64; 4], o: [i64; 2]) -> BezierCurve<BigRational> {
-    let coeffs: Vec<Point<BigRational>> = (0..4)
-        .map(|k| {
-            let (u, v) = (x[k].clone(), y[k].clone());
-            let off = if k == 0 { (rat(o[0]), rat(o[1])) } else { (rat(0), rat(0)) };
-            Point::new(vec![rat(m[0]) * &u + rat(m[1]) * &v + off.0, rat(m[2]) * &u + rat(m[3]) * &v + off.1])
-        })
-        .collect();
-    BezierCurve::from_power(&coeffs).unwrap()
-}
+use casteljau::strategies::cubic_from_power as from_power;
 
 /// `(s², s³)` with `s = t − τ`: a cusp exactly at `t = τ`.
 fn cusp_at(tau: BigRational) -> BezierCurve<BigRational> {

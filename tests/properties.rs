@@ -64,6 +64,14 @@ proptest! {
     }
 
     #[test]
+    fn repeated_subdivision_fraction_free_equals_naive(c in curve(), t0 in parameter(), depth in 0u32..=3) {
+        prop_assert_eq!(
+            fraction_free::subdivide_repeatedly(&c, &t0, depth).unwrap(),
+            casteljau::casteljau::subdivide_repeatedly(&c, &t0, depth).unwrap()
+        );
+    }
+
+    #[test]
     fn elevation_preserves_the_curve_and_reduction_undoes_it(c in curve(), by in 0usize..=4, t in parameter()) {
         let e = c.elevate(by).unwrap();
         prop_assert_eq!(e.degree(), c.degree() + by);
