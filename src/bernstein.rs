@@ -6,7 +6,7 @@
 //! `b_i = Σ_{k≤i} C(i,k)/C(n,k) · c_k`.
 
 use crate::point::Point;
-use crate::scalar::Scalar;
+use crate::scalar::{Rational, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive};
@@ -21,12 +21,38 @@ pub fn binomial(n: usize, k: usize) -> BigInt {
     if k > n {
         return BigInt::from(0);
     }
+    if n <= PASCAL_ROWS {
+        return pascal()[n][k].clone();
+    }
     let k = k.min(n - k);
     let mut c = BigInt::one();
     for i in 0..k {
         c = c * (n - i) / (i + 1);
     }
     c
+}
+
+/// Rows of Pascal's triangle kept in memory (the rest are computed on demand).
+const PASCAL_ROWS: usize = 256;
+
+fn pascal() -> &'static Vec<Vec<BigInt>> {
+    static TABLE: std::sync::OnceLock<Vec<Vec<BigInt>>> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut rows: Vec<Vec<BigInt>> = vec![vec![BigInt::one()]];
+        for n in 1..=PASCAL_ROWS {
+            let prev = &rows[n - 1];
+            let row = (0..=n)
+                .map(|k| match (k.checked_sub(1).and_then(|j| prev.get(j)), prev.get(k)) {
+                    (Some(a), Some(b)) => a + b,
+                    (Some(a), None) => a.clone(),
+                    (None, Some(b)) => b.clone(),
+                    (None, None) => unreachable!("k ≤ n"),
+                })
+                .collect();
+            rows.push(row);
+        }
+        rows
+    })
 }
 
 /// `C(n, k)` as a scalar (exact for exact scalars, rounded for `f64` when beyond 2⁵³).
@@ -201,4 +227,32 @@ pub fn eval_power<S: Scalar>(coeffs: &[Point<S>], t: &S) -> Point<S> {
         acc = acc.scale(t).add(c);
     }
     acc
+}
+
+/// Identity (8) of seed 001 for one `n`, all `j` at once:
+/// `B_j^n(st) − Σ_{r=j}^{n} B_j^r(s) B_r^n(t) = 0`, degree ≤ n in `s` and in `t`.
+///
+/// `upper` replaces the sum's upper limit `n` (pass `n`; a smaller value is a wrong variant
+/// used to show the prover refutes it).
+///
+/// # Errors
+/// A counterexample `(s, t)` with the failing `j` as its `identity`.
+pub fn identity_8(n: usize, upper: usize) -> Result<crate::proof::Certificate, crate::proof::Counterexample<Rational>> {
+    // The grid varies t fastest: the B_j^r(s) table is rebuilt only when s changes.
+    let mut cache: Option<(Rational, Vec<Vec<Rational>>)> = None;
+    crate::proof::identities::<Rational>(&[n, n], |v| {
+        let (s, t) = (&v[0], &v[1]);
+        if cache.as_ref().is_none_or(|(cs, _)| cs != s) {
+            cache = Some((s.clone(), (0..=n).map(|r| bernstein_all(r, s)).collect()));
+        }
+        let b_s = &cache.as_ref().expect("just filled").1;
+        let lhs = bernstein_all(n, &(s.clone() * t));
+        let b_t = bernstein_all(n, t);
+        (0..=n)
+            .map(|j| {
+                let rhs = (j..=upper.min(n)).fold(Rational::zero(), |acc, r| acc + b_s[r][j].clone() * &b_t[r]);
+                lhs[j].clone() - rhs
+            })
+            .collect()
+    })
 }

@@ -6,7 +6,6 @@
 
 use crate::bezier::BezierCurve;
 use crate::casteljau::subdivision_intervals;
-use crate::claims;
 use crate::error::{Error, Position, Result};
 use crate::fraction_free;
 use crate::parse::{parse_number, parse_points};
@@ -114,17 +113,23 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
-    /// Check the seeds' claims (identity (8) for n ≤ --max-n, seed 001/003 examples).
+    /// Check the claim catalogue (default proofs/): one line per claim, exit 0 iff every
+    /// verdict is as expected, 1 otherwise, 2 on malformed claim files.
     Prove {
-        /// Largest n for identity (8).
-        #[arg(long, default_value_t = 40)]
-        max_n: usize,
+        /// Claim files or folders (default: proofs/).
+        paths: Vec<std::path::PathBuf>,
         /// Only claims whose id contains this text.
         #[arg(long)]
         filter: Option<String>,
         /// One JSON object per claim.
         #[arg(long)]
         json: bool,
+        /// Also write a JUnit XML report to this file.
+        #[arg(long)]
+        junit: Option<std::path::PathBuf>,
+        /// Regenerate the catalogue's README (default proofs/README.md) from this run.
+        #[arg(long, num_args = 0..=1, default_missing_value = "proofs/README.md")]
+        write_readme: Option<std::path::PathBuf>,
     },
 }
 
@@ -174,7 +179,9 @@ pub fn main() -> i32 {
 /// Runs a parsed command, writing answers to `out` and errors to stderr; returns the exit code.
 pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
     match cli.command {
-        Command::Prove { max_n, filter, json } => prove(max_n, filter.as_deref(), json, out),
+        Command::Prove { paths, filter, json, junit, write_readme } => {
+            prove(&paths, filter.as_deref(), json, junit.as_deref(), write_readme.as_deref(), out)
+        }
         Command::Classify { float, weights, homogeneous, mut curve } => {
             if homogeneous {
                 curve.dim = 3;
@@ -579,14 +586,43 @@ fn classify_weighted(
     Ok((text, v))
 }
 
-fn prove(max_n: usize, filter: Option<&str>, json_out: bool, out: &mut dyn Write) -> i32 {
-    if max_n > 200 {
-        eprintln!("casteljau: --max-n {max_n} exceeds the limit 200");
-        return 2;
-    }
-    let results = claims::check_all(max_n, &|id| filter.is_none_or(|f| id.contains(f)));
-    let (mut passed, mut failed) = (0, 0);
-    for r in &results {
+fn prove(
+    paths: &[std::path::PathBuf],
+    filter: Option<&str>,
+    json_out: bool,
+    junit: Option<&std::path::Path>,
+    write_readme: Option<&std::path::Path>,
+    out: &mut dyn Write,
+) -> i32 {
+    use crate::catalogue;
+    use std::io::IsTerminal;
+    let paths = if paths.is_empty() { vec![catalogue::default_path()] } else { paths.to_vec() };
+    let claims = match catalogue::load(&paths) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+    };
+    let claims: Vec<_> = claims.into_iter().filter(|c| filter.is_none_or(|f| c.id.contains(f))).collect();
+    let progress = std::io::stderr().is_terminal() && !json_out;
+    let (mut passed, mut failed, mut malformed) = (0, 0, 0);
+    let mut results = Vec::new();
+    for (k, c) in claims.iter().enumerate() {
+        if progress {
+            eprint!("\r\x1b[K[{}/{}] {}", k + 1, claims.len(), c.id);
+        }
+        let r = match catalogue::check(c) {
+            Ok(r) => r,
+            Err(e) => {
+                malformed += 1;
+                if progress {
+                    eprint!("\r\x1b[K");
+                }
+                eprintln!("casteljau: {e}");
+                continue;
+            }
+        };
         if r.passed() {
             passed += 1;
         } else {
@@ -594,13 +630,14 @@ fn prove(max_n: usize, filter: Option<&str>, json_out: bool, out: &mut dyn Write
         }
         let line = if json_out {
             json!({
-                "id": r.id, "source": r.source, "expected": r.expected.as_str(), "verdict": r.found.as_str(),
-                "passed": r.passed(), "method": r.method, "detail": r.detail, "seconds": r.seconds,
+                "id": r.id, "source": c.source, "statement": c.statement, "expected": r.expected.as_str(),
+                "verdict": r.found.as_str(), "passed": r.passed(), "method": r.method, "detail": r.detail,
+                "corrected": r.corrected_detail, "seconds": r.seconds,
             })
             .to_string()
         } else {
             format!(
-                "{} {:<40} {:<17} {:<13} {:>8.4}s  {}",
+                "{} {:<44} {:<17} {:<13} {:>8.4}s  {}",
                 if r.passed() { "ok  " } else { "FAIL" },
                 r.id,
                 r.found.as_str(),
@@ -609,12 +646,38 @@ fn prove(max_n: usize, filter: Option<&str>, json_out: bool, out: &mut dyn Write
                 r.detail
             )
         };
+        if progress {
+            eprint!("\r\x1b[K");
+        }
         if writeln!(out, "{line}").is_err() {
             return 2;
         }
+        results.push(r);
     }
     if !json_out {
         let _ = writeln!(out, "{passed} passed, {failed} failed");
     }
-    if failed == 0 { 0 } else { 1 }
+    if let Some(path) = junit
+        && let Err(e) = std::fs::write(path, catalogue::junit(&results))
+    {
+        eprintln!("casteljau: cannot write {}: {e}", path.display());
+        return 2;
+    }
+    if let Some(path) = write_readme {
+        if malformed > 0 || filter.is_some() {
+            eprintln!("casteljau: --write-readme needs the whole catalogue, checked without errors");
+            return 2;
+        }
+        if let Err(e) = std::fs::write(path, catalogue::readme(&claims, &results)) {
+            eprintln!("casteljau: cannot write {}: {e}", path.display());
+            return 2;
+        }
+    }
+    if malformed > 0 {
+        2
+    } else if failed == 0 {
+        0
+    } else {
+        1
+    }
 }

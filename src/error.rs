@@ -68,6 +68,24 @@ pub enum Error {
         /// The largest size allowed.
         limit: usize,
     },
+    /// A malformed expression (proofs/ identities, `--poly`).
+    Expression {
+        /// The expression text.
+        text: String,
+        /// 1-based character column of the problem.
+        column: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A malformed claim file in `proofs/`.
+    ClaimFile {
+        /// The file.
+        file: String,
+        /// 1-based line, when known.
+        line: Option<usize>,
+        /// What is wrong.
+        message: String,
+    },
     /// An argument outside the operation's domain (e.g. a derivative order above the degree).
     InvalidArgument {
         /// What is wrong, in words.
@@ -100,6 +118,11 @@ impl fmt::Display for Error {
             }
             Error::TooLarge { what, value, limit } => write!(f, "{what} {value} exceeds the limit {limit}"),
             Error::InvalidArgument { message } => write!(f, "{message}"),
+            Error::Expression { text, column, message } => {
+                write!(f, "in expression {text:?}, column {column}: {message}")
+            }
+            Error::ClaimFile { file, line: Some(l), message } => write!(f, "{file}:{l}: {message}"),
+            Error::ClaimFile { file, line: None, message } => write!(f, "{file}: {message}"),
         }
     }
 }

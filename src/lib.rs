@@ -12,7 +12,9 @@
 //! * [`casteljau`]: de Casteljau's scheme (the triangle) and subdivision (Lemma 2).
 //! * [`fraction_free`]: the exact kernels on integers over one denominator (the fast path).
 //! * [`proof`]: the grid prover — proof of polynomial identities by exact testing.
-//! * [`claims`]: the seeds' checkable claims built into `casteljau prove`.
+//! * [`expr`], [`catalogue`], [`claim_checks`]: the `proofs/` claim files and their exact checks.
+//! * [`classify`], [`certified`], [`moving_line`], [`canonical`], [`rational_cubic`]: exact cubic
+//!   classification.
 //! * [`parse`]: exact numbers and control polygons from text; [`cli`]: the command line.
 //!
 //! ```
@@ -27,11 +29,13 @@ pub mod bernstein;
 pub mod bezier;
 pub mod canonical;
 pub mod casteljau;
+pub mod catalogue;
 pub mod certified;
-pub mod claims;
+pub mod claim_checks;
 pub mod classify;
 pub mod cli;
 pub mod error;
+pub mod expr;
 pub mod fraction_free;
 pub mod moving_line;
 pub mod parse;

@@ -145,23 +145,39 @@ impl<S: Exact> GridProver<S> {
     /// # Errors
     /// The first failing point as a [`Counterexample`].
     pub fn check_all(&self, mut f: impl FnMut(&[S]) -> Vec<S>) -> std::result::Result<Certificate, Counterexample<S>> {
+        match self.try_check_all(|x| Ok::<_, std::convert::Infallible>(f(x))) {
+            Ok(r) => r,
+            Err(never) => match never {},
+        }
+    }
+
+    /// [`Self::check_all`] for a closure that may fail at a point (e.g. a vanishing
+    /// denominator): the closure's error stops the check and is returned as the outer `Err`,
+    /// so the caller can choose other grid values.
+    ///
+    /// # Errors
+    /// The closure's error.
+    pub fn try_check_all<E>(
+        &self,
+        mut f: impl FnMut(&[S]) -> std::result::Result<Vec<S>, E>,
+    ) -> std::result::Result<std::result::Result<Certificate, Counterexample<S>>, E> {
         let k = self.nodes.len();
         let mut index = vec![0usize; k];
         let mut point: Vec<S> = self.nodes.iter().map(|n| n[0].clone()).collect();
         let mut checked = 0;
         let mut identities = 0;
         loop {
-            let values = f(&point);
+            let values = f(&point)?;
             identities = identities.max(values.len());
             if let Some((i, v)) = values.into_iter().enumerate().find(|(_, v)| !v.is_zero()) {
-                return Err(Counterexample { point, value: v, identity: i });
+                return Ok(Err(Counterexample { point, value: v, identity: i }));
             }
             checked += 1;
             // advance the odometer, last variable fastest
             let mut j = k;
             loop {
                 if j == 0 {
-                    return Ok(self.certificate(checked, identities));
+                    return Ok(Ok(self.certificate(checked, identities)));
                 }
                 j -= 1;
                 index[j] += 1;

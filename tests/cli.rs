@@ -136,19 +136,34 @@ fn cli_batch_answers_every_line_in_order_and_exits_2_on_a_bad_one() {
 }
 
 #[test]
-fn cli_prove_checks_the_builtin_claims() {
-    let o = run(&["prove", "--max-n", "10"], None);
+fn cli_prove_checks_the_catalogue_with_json_junit_and_exit_codes() {
+    let o = run(&["prove", "--filter", "003-"], None);
     assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
     let out = stdout(&o);
     assert!(out.lines().last().unwrap().ends_with("passed, 0 failed"));
-    assert!(out.contains("003-example-4-printed-formula") && out.contains("fails-as-printed"));
-    let o = run(&["prove", "--max-n", "3", "--filter", "identity-8", "--json"], None);
-    let n = stdout(&o)
-        .lines()
-        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
-        .filter(|v| v["passed"] == true)
-        .count();
-    assert_eq!(n, 4);
+    assert!(out.contains("003-trinomial-5") && out.contains("fails-as-printed"));
+    let junit = std::env::temp_dir().join(format!("casteljau-junit-{}.xml", std::process::id()));
+    let o = run(&["prove", "--filter", "trinomial", "--json", "--junit", junit.to_str().unwrap()], None);
+    let lines: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 4);
+    assert!(lines.iter().all(|v| v["passed"] == true));
+    assert!(std::fs::read_to_string(&junit).unwrap().contains("tests=\"4\" failures=\"0\""));
+    std::fs::remove_file(junit).unwrap();
+    // a claim file with a wrong expected verdict: exit 1; a malformed one: exit 2 naming file:line
+    let dir = std::env::temp_dir().join(format!("casteljau-prove-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let wrong = dir.join("wrong.toml");
+    std::fs::write(&wrong, "seed = \"x\"\n[[claim]]\nid = \"w\"\nsource = \"s\"\nstatement = \"1 = 2\"\nexpect = \"holds\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"2\"\n").unwrap();
+    let o = run(&["prove", wrong.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("FAIL w"));
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "seed = \"x\"\n[[claim]]\nid = \"b\"\nsource = \"s\"\nstatement = \"?\"\nexpect = \"holds\"\nkind = \"identity\"\nlhs = \"(1\"\nrhs = \"2\"\n").unwrap();
+    let o = run(&["prove", bad.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("bad.toml:3: claim b"), "{}", stderr(&o));
+    assert_eq!(run(&["prove", "/nonexistent/proofs"], None).status.code(), Some(2));
+    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! and every j by the grid prover; a wrong variant is refuted with an exact counterexample.
 
 use casteljau::bernstein::bernstein;
-use casteljau::claims::identity_8;
+use casteljau::bernstein::identity_8;
 use casteljau::proof::{self, GridProver};
 use casteljau::scalar::{Rational, Scalar};
 
