@@ -68,6 +68,12 @@ pub enum Error {
         /// The largest size allowed.
         limit: usize,
     },
+    /// The denominator `Σ w_i B_i^n(t)` of a rational curve vanishes: at `t` when both ends are
+    /// equal, otherwise somewhere in the isolating interval `(a, b)`.
+    WeightsVanish {
+        /// The exact ends `a`, `b` of the interval.
+        interval: (String, String),
+    },
     /// A malformed expression (proofs/ identities, `--poly`).
     Expression {
         /// The expression text.
@@ -118,6 +124,13 @@ impl fmt::Display for Error {
             }
             Error::TooLarge { what, value, limit } => write!(f, "{what} {value} exceeds the limit {limit}"),
             Error::InvalidArgument { message } => write!(f, "{message}"),
+            Error::WeightsVanish { interval: (a, b) } if a == b => {
+                write!(f, "the weights make the curve undefined: the denominator vanishes at t = {a}")
+            }
+            Error::WeightsVanish { interval: (a, b) } => write!(
+                f,
+                "the weights make the curve undefined: the denominator vanishes at a t in the interval ({a}, {b})"
+            ),
             Error::Expression { text, column, message } => {
                 write!(f, "in expression {text:?}, column {column}: {message}")
             }

@@ -37,12 +37,16 @@ pub mod cli;
 pub mod error;
 pub mod expr;
 pub mod fraction_free;
+pub mod implicit;
+pub mod menelaus;
 pub mod moving_line;
 pub mod parse;
 pub mod point;
 pub mod proof;
 pub mod quadratic_field;
+pub mod rational_bezier;
 pub mod rational_cubic;
+pub mod roots;
 pub mod scalar;
 #[cfg(feature = "proptest")]
 pub mod strategies;

@@ -1,0 +1,182 @@
+//! Exact real root isolation for polynomials in Bernstein form.
+//!
+//! The polynomial `p(t) = Σ c_i B_i^n(t)` on `[0, 1]` is first made square-free
+//! (`p / gcd(p, p')`, exactly), then split by de Casteljau subdivision. On each piece the number
+//! of sign changes `V` of the Bernstein coefficients bounds the number of roots in the open
+//! interval and has the same parity (Descartes' rule for the Bernstein basis): `V = 0` means no
+//! root, `V = 1` exactly one. Roots that fall exactly on a split point or an end are reported
+//! exactly. Nothing is rounded.
+
+use crate::bernstein::{from_power, to_power};
+use crate::bezier::BezierCurve;
+use crate::point::Point;
+use crate::scalar::{Exact, Scalar, rat};
+use num_rational::BigRational;
+use std::cmp::Ordering;
+use std::fmt;
+
+/// A real root located exactly.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Root {
+    /// The root itself.
+    Exact(BigRational),
+    /// An open interval `(a, b)` containing exactly one (simple) root.
+    Isolated(BigRational, BigRational),
+}
+
+impl fmt::Display for Root {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Root::Exact(r) => write!(f, "t = {r}"),
+            Root::Isolated(a, b) => write!(f, "t in ({a}, {b})"),
+        }
+    }
+}
+
+/// Largest subdivision depth (each level halves the interval; 2⁻²⁰⁰ separates any roots of
+/// the polynomials this crate meets).
+pub const MAX_ISOLATION_DEPTH: usize = 200;
+
+fn poly_rem(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
+    let lb = b.last().expect("non-zero divisor").clone();
+    while a.len() >= b.len() && !a.is_empty() {
+        let f = a.last().expect("non-empty").clone() / &lb;
+        let shift = a.len() - b.len();
+        for (i, c) in b.iter().enumerate() {
+            a[shift + i] = a[shift + i].clone() - f.clone() * c;
+        }
+        while a.last().is_some_and(Scalar::is_zero) {
+            a.pop();
+        }
+    }
+    a
+}
+
+fn poly_div(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
+    let lb = b.last().expect("non-zero divisor").clone();
+    let mut q = vec![rat(0); a.len().saturating_sub(b.len()) + 1];
+    while a.len() >= b.len() && !a.is_empty() {
+        let f = a.last().expect("non-empty").clone() / &lb;
+        let shift = a.len() - b.len();
+        q[shift] = f.clone();
+        for (i, c) in b.iter().enumerate() {
+            a[shift + i] = a[shift + i].clone() - f.clone() * c;
+        }
+        a.pop();
+    }
+    q
+}
+
+/// The square-free part of a power-form polynomial (lowest degree first, non-zero).
+fn square_free(p: Vec<BigRational>) -> Vec<BigRational> {
+    let dp: Vec<BigRational> = p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * rat(k as i64)).collect();
+    let (mut a, mut b) = (p.clone(), dp);
+    while b.last().is_some_and(Scalar::is_zero) {
+        b.pop();
+    }
+    while !b.is_empty() {
+        let r = poly_rem(a, &b);
+        a = b;
+        b = r;
+    }
+    if a.len() <= 1 { p } else { poly_div(p, &a) }
+}
+
+fn sign_changes(c: &[BigRational]) -> usize {
+    let signs: Vec<Ordering> = c.iter().map(Exact::sign).filter(|s| *s != Ordering::Equal).collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+/// Isolates the real roots in `[0, 1]` of `p(t) = Σ c_i B_i^n(t)`, ascending.
+///
+/// Returns `None` when `p ≡ 0`.
+///
+/// # Example
+/// ```
+/// use casteljau::{ratio, rat, roots::{isolate_bernstein, Root}};
+/// // coefficients 1, −2, 1: 6t² − 6t + 1, roots 1/2 ± √3/6, each isolated
+/// let r = isolate_bernstein(&[rat(1), rat(-2), rat(1)]).unwrap();
+/// assert!(matches!(r.as_slice(), [Root::Isolated(..), Root::Isolated(..)]));
+/// // 1, −1, 1: (2t − 1)², one double root, found exactly
+/// assert_eq!(isolate_bernstein(&[rat(1), rat(-1), rat(1)]).unwrap(), vec![Root::Exact(ratio(1, 2))]);
+/// // 1, 0, −1: 1 − 2t
+/// assert_eq!(isolate_bernstein(&[rat(1), rat(0), rat(-1)]).unwrap(), vec![Root::Exact(ratio(1, 2))]);
+/// ```
+pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
+    if c.iter().all(Scalar::is_zero) {
+        return None;
+    }
+    let pts: Vec<Point<BigRational>> = c.iter().map(|v| Point::new(vec![v.clone()])).collect();
+    let mut power: Vec<BigRational> = to_power(&pts).into_iter().map(|p| p.coords[0].clone()).collect();
+    while power.last().is_some_and(Scalar::is_zero) {
+        power.pop();
+    }
+    let sf = square_free(power);
+    if sf.len() <= 1 {
+        return Some(vec![]); // a non-zero constant
+    }
+    if sf.len() == 2 {
+        // linear: the root −c0/c1 exactly
+        let r = -sf[0].clone() / &sf[1];
+        let inside = r.sign() != Ordering::Less && (rat(1) - &r).sign() != Ordering::Less;
+        return Some(if inside { vec![Root::Exact(r)] } else { vec![] });
+    }
+    let sf_pts: Vec<Point<BigRational>> = sf.iter().map(|v| Point::new(vec![v.clone()])).collect();
+    let bern: Vec<BigRational> = from_power(&sf_pts).into_iter().map(|p| p.coords[0].clone()).collect();
+    let mut out = Vec::new();
+    if bern[0].is_zero() {
+        out.push(Root::Exact(rat(0)));
+    }
+    split(&bern, rat(0), rat(1), 0, &mut out);
+    if bern.last().expect("coefficients").is_zero() {
+        out.push(Root::Exact(rat(1)));
+    }
+    Some(out)
+}
+
+/// Roots in the open interval `(a, b)`, coefficients on `[a, b]`.
+fn split(c: &[BigRational], a: BigRational, b: BigRational, depth: usize, out: &mut Vec<Root>) {
+    match sign_changes(c) {
+        0 => {}
+        1 if !c[0].is_zero() && !c[c.len() - 1].is_zero() => out.push(Root::Isolated(a, b)),
+        _ if depth >= MAX_ISOLATION_DEPTH => out.push(Root::Isolated(a, b)),
+        _ => {
+            let curve =
+                BezierCurve::new(c.iter().map(|v| Point::new(vec![v.clone()])).collect()).expect("coefficients");
+            let (l, r) = crate::fraction_free::subdivide(&curve, &BigRational::new(1.into(), 2.into()));
+            let m = (a.clone() + &b) / rat(2);
+            let lc: Vec<BigRational> = l.points().iter().map(|p| p.coords[0].clone()).collect();
+            let rc: Vec<BigRational> = r.points().iter().map(|p| p.coords[0].clone()).collect();
+            split(&lc, a, m.clone(), depth + 1, out);
+            if rc[0].is_zero() {
+                out.push(Root::Exact(m.clone()));
+            }
+            split(&rc, m, b, depth + 1, out);
+        }
+    }
+}
+
+/// Bernstein coefficients of the same polynomial on `[a, b]` (`0 ≤ a < b ≤ 1`), by two
+/// subdivisions.
+pub fn restrict(c: &[BigRational], a: &BigRational, b: &BigRational) -> Vec<BigRational> {
+    let curve = BezierCurve::new(c.iter().map(|v| Point::new(vec![v.clone()])).collect()).expect("coefficients");
+    let right = if a.is_zero() { curve } else { crate::fraction_free::subdivide(&curve, a).1 };
+    let s = (b.clone() - a) / (rat(1) - a);
+    let piece = if s == rat(1) { right } else { crate::fraction_free::subdivide(&right, &s).0 };
+    piece.points().iter().map(|p| p.coords[0].clone()).collect()
+}
+
+/// The roots of `p(t) = Σ c_i B_i^n(t)` in `[a, b]`, mapped back to `t`.
+pub fn isolate_in(c: &[BigRational], a: &BigRational, b: &BigRational) -> Option<Vec<Root>> {
+    let local = isolate_bernstein(&restrict(c, a, b))?;
+    let map = |s: BigRational| a.clone() + (b.clone() - a) * s;
+    Some(
+        local
+            .into_iter()
+            .map(|r| match r {
+                Root::Exact(s) => Root::Exact(map(s)),
+                Root::Isolated(s0, s1) => Root::Isolated(map(s0), map(s1)),
+            })
+            .collect(),
+    )
+}
