@@ -4,13 +4,12 @@
 //! (malformed number, wrong point count, bad option). In a batch every line is answered; a bad
 //! line gets an error (with its line number) and the exit code is 2 at the end.
 
+use crate::answers::{self, points_json};
 use crate::bezier::BezierCurve;
-use crate::casteljau::subdivision_intervals;
 use crate::error::{Error, Position, Result};
 use crate::fraction_free;
 use crate::parse::{parse_number, parse_points};
-use crate::point::Point;
-use crate::scalar::Scalar;
+use crate::rational_bezier::RationalBezier;
 use clap::{Args, Parser, Subcommand};
 use num_rational::BigRational;
 use serde_json::{Value, json};
@@ -41,6 +40,9 @@ pub enum Command {
         /// Parameter values (repeatable): exact numbers.
         #[arg(long = "t", required = true, allow_hyphen_values = true)]
         t: Vec<String>,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
         /// The curve(s) and output form.
         #[command(flatten)]
         curve: CurveArgs,
@@ -53,6 +55,9 @@ pub enum Command {
         /// Split every piece again, depth times (2^depth pieces, as in seed 001 Fig. 10).
         #[arg(long, default_value_t = 1)]
         depth: u32,
+        /// Rational curves (depth 1).
+        #[command(flatten)]
+        rational: RationalArgs,
         /// The curve(s) and output form.
         #[command(flatten)]
         curve: CurveArgs,
@@ -62,6 +67,9 @@ pub enum Command {
         /// How many degrees to add.
         #[arg(long, default_value_t = 1)]
         by: usize,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
         /// The curve(s) and output form.
         #[command(flatten)]
         curve: CurveArgs,
@@ -102,13 +110,30 @@ pub enum Command {
         /// Also print f64 approximations of the exact parameters.
         #[arg(long)]
         float: bool,
-        /// Weights w0..w3 of a rational cubic (exact numbers): classified projectively.
+        /// A rational cubic (classified projectively).
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Prove or refute that a (rational) curve lies on f = 0: exit 0 proved, 1 counterexample.
+    Implicit {
+        /// The polynomial f in x, y (and z), e.g. "x^3 - 3*x*y + y^3".
         #[arg(long, allow_hyphen_values = true)]
-        weights: Option<String>,
-        /// Read control points as homogeneous "X Y W" (W = 0: a point at infinity); implies a
-        /// rational cubic.
-        #[arg(long)]
-        homogeneous: bool,
+        poly: String,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The conic of a rational quadratic: ellipse, parabola, hyperbola (from w1² − w0·w2).
+    Conic {
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
         /// The curve(s) and output form.
         #[command(flatten)]
         curve: CurveArgs,
@@ -131,6 +156,65 @@ pub enum Command {
         #[arg(long, num_args = 0..=1, default_missing_value = "proofs/README.md")]
         write_readme: Option<std::path::PathBuf>,
     },
+}
+
+/// Weights of a rational curve (for eval, subdivide, elevate, implicit, conic, classify).
+#[derive(Args, Debug, Clone)]
+pub struct RationalArgs {
+    /// Weights w0..wn (exact numbers, one per control point): a rational curve.
+    #[arg(long, allow_hyphen_values = true)]
+    pub weights: Option<String>,
+    /// Read control points as homogeneous "w·x w·y w" (w = 0: a point at infinity, a direction).
+    #[arg(long)]
+    pub homogeneous: bool,
+}
+
+impl RationalArgs {
+    fn parse_weights(&self) -> Result<Option<Vec<BigRational>>> {
+        if self.homogeneous && self.weights.is_some() {
+            return Err(Error::InvalidArgument { message: "give --weights or --homogeneous, not both".into() });
+        }
+        let Some(w) = &self.weights else { return Ok(None) };
+        let pts =
+            parse_points(w, 1, None).map_err(|e| Error::InvalidArgument { message: format!("--weights: {e}") })?;
+        Ok(Some(pts.into_iter().map(|p| p.coords[0].clone()).collect()))
+    }
+}
+
+/// How a command's control points carry weights.
+#[derive(Clone, Copy, Debug)]
+pub enum Weights<'a> {
+    /// A polynomial curve (all weights 1).
+    Polynomial,
+    /// `--weights`.
+    Given(&'a [BigRational]),
+    /// `--homogeneous`.
+    Homogeneous,
+}
+
+/// The rational curve given by a parsed control polygon and its weights.
+fn rational_curve(c: &BezierCurve<BigRational>, weights: Weights<'_>) -> Result<RationalBezier<BigRational>> {
+    match weights {
+        Weights::Polynomial => RationalBezier::new(c.points().to_vec(), vec![crate::scalar::rat(1); c.points().len()]),
+        Weights::Given(w) => RationalBezier::new(c.points().to_vec(), w.to_vec()),
+        Weights::Homogeneous => RationalBezier::from_homogeneous(c.points().to_vec()),
+    }
+}
+
+/// One command's answer for one curve.
+pub struct Answer {
+    /// Text output.
+    pub text: String,
+    /// JSON output.
+    pub json: Value,
+    /// A check failed (exit code 1).
+    pub failed: bool,
+}
+
+impl From<(String, Value)> for Answer {
+    fn from((text, json): (String, Value)) -> Self {
+        Answer { text, json, failed: false }
+    }
 }
 
 /// Where the curves come from, and the output form.
@@ -159,7 +243,7 @@ pub const MAX_TRIANGLE_DEGREE: usize = 500;
 /// Largest number of control points `subdivide --depth` prints.
 pub const MAX_SUBDIVISION_POINTS: usize = 1 << 20;
 
-fn output_limit(what: &'static str, value: usize, limit: usize) -> Result<()> {
+pub(crate) fn output_limit(what: &'static str, value: usize, limit: usize) -> Result<()> {
     if value > limit { Err(Error::TooLarge { what, value, limit }) } else { Ok(()) }
 }
 
@@ -182,49 +266,96 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Prove { paths, filter, json, junit, write_readme } => {
             prove(&paths, filter.as_deref(), json, junit.as_deref(), write_readme.as_deref(), out)
         }
-        Command::Classify { float, weights, homogeneous, mut curve } => {
-            if homogeneous {
-                curve.dim = 3;
-            }
-            let weights = match weights.map(|w| parse_points(&w, 1, None)).transpose() {
-                Ok(w) => w.map(|w| w.into_iter().map(|p| p.coords[0].clone()).collect::<Vec<_>>()),
-                Err(e) => {
-                    eprintln!("casteljau: --weights: {e}");
-                    return 2;
-                }
-            };
-            if homogeneous || weights.is_some() {
-                batch(&curve, out, |c| classify_weighted(c, weights.as_deref(), homogeneous))
-            } else {
-                batch(&curve, out, |c| classify(c, float))
-            }
-        }
-        Command::Eval { t, curve } => {
+        Command::Eval { t, rational, curve } => {
             let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
-            with_param(ts, &curve, out, |c, ts| eval(c, ts))
+            rational_batch(&rational, curve, out, move |c, w| {
+                let ts = ts.clone()?;
+                match w {
+                    Weights::Polynomial => answers::eval(c, &ts).map(Answer::from),
+                    w => answers::eval_rational(&rational_curve(c, w)?, &ts).map(Answer::from),
+                }
+            })
         }
-        Command::Subdivide { t, depth, curve } => {
-            with_param(option_number("--t", &t), &curve, out, |c, t0| subdivide(c, t0, depth))
+        Command::Subdivide { t, depth, rational, curve } => {
+            let t0 = option_number("--t", &t);
+            rational_batch(&rational, curve, out, move |c, w| {
+                let t0 = t0.clone()?;
+                match w {
+                    Weights::Polynomial => answers::subdivide(c, &t0, depth).map(Answer::from),
+                    _ if depth != 1 => Err(Error::InvalidArgument {
+                        message: "--depth is for polynomial curves; rational curves split once".into(),
+                    }),
+                    w => answers::subdivide_rational(&rational_curve(c, w)?, &t0).map(Answer::from),
+                }
+            })
         }
-        Command::Elevate { by, curve } => batch(&curve, out, |c| {
-            let e = fraction_free::elevate(c, by)?;
-            Ok((e.to_string(), json!({"degree": e.degree(), "points": points_json(e.points())})))
+        Command::Elevate { by, rational, curve } => rational_batch(&rational, curve, out, move |c, w| match w {
+            Weights::Polynomial => {
+                let e = fraction_free::elevate(c, by)?;
+                Ok(Answer::from((e.to_string(), json!({"degree": e.degree(), "points": points_json(e.points())}))))
+            }
+            w => answers::elevate_rational(&rational_curve(c, w)?, by).map(Answer::from),
         }),
-        Command::Power { curve } => batch(&curve, out, |c| Ok(power(c))),
-        Command::Triangle { t, curve } => with_param(option_number("--t", &t), &curve, out, |c, t| {
-            output_limit("triangle of degree", c.degree(), MAX_TRIANGLE_DEGREE)?;
-            triangle(c, t)
-        }),
+        Command::Implicit { poly, rational, curve } => {
+            rational_batch(&rational, curve, out, move |c, w| answers::implicit(&rational_curve(c, w)?, &poly))
+        }
+        Command::Conic { rational, curve } => {
+            rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
+        }
+        Command::Power { curve } => batch(&curve, out, |c| Ok(answers::power(c).into())),
+        Command::Triangle { t, curve } => {
+            let t = option_number("--t", &t);
+            batch(&curve, out, move |c| {
+                output_limit("triangle of degree", c.degree(), MAX_TRIANGLE_DEGREE)?;
+                answers::triangle(c, &t.clone()?).map(Answer::from)
+            })
+        }
         Command::Derivative { order, curve } => batch(&curve, out, |c| {
             let d = c.derivative(order);
-            Ok((d.to_string(), json!({"order": order, "degree": d.degree(), "points": points_json(d.points())})))
+            Ok(Answer::from((
+                d.to_string(),
+                json!({"order": order, "degree": d.degree(), "points": points_json(d.points())}),
+            )))
         }),
         Command::Reduce { curve } => batch(&curve, out, |c| {
             let r = fraction_free::reduce_degree(c);
             let text = format!("degree {} (written as {}): {}", r.degree(), c.degree(), r);
-            Ok((text, json!({"degree": c.degree(), "real_degree": r.degree(), "points": points_json(r.points())})))
+            Ok(Answer::from((
+                text,
+                json!({"degree": c.degree(), "real_degree": r.degree(), "points": points_json(r.points())}),
+            )))
+        }),
+        Command::Classify { float, rational, curve } => rational_batch(&rational, curve, out, move |c, w| match w {
+            Weights::Polynomial => answers::classify(c, float).map(Answer::from),
+            w => answers::classify_weighted(&rational_curve(c, w)?).map(Answer::from),
         }),
     }
+}
+
+/// [`batch`] for commands that accept rational curves: parses `--weights` once and reads points
+/// with one more coordinate under `--homogeneous`.
+fn rational_batch(
+    rational: &RationalArgs,
+    mut curve: CurveArgs,
+    out: &mut dyn Write,
+    f: impl Fn(&BezierCurve<BigRational>, Weights<'_>) -> Result<Answer>,
+) -> i32 {
+    let weights = match rational.parse_weights() {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+    };
+    if rational.homogeneous {
+        curve.dim += 1;
+    }
+    let w = match (&weights, rational.homogeneous) {
+        (Some(w), _) => Weights::Given(w),
+        (None, true) => Weights::Homogeneous,
+        (None, false) => Weights::Polynomial,
+    };
+    batch(&curve, out, |c| f(c, w))
 }
 
 fn option_number(option: &str, s: &str) -> Result<BigRational> {
@@ -236,27 +367,8 @@ fn option_number(option: &str, s: &str) -> Result<BigRational> {
     })
 }
 
-fn with_param<P>(
-    param: Result<P>,
-    args: &CurveArgs,
-    out: &mut dyn Write,
-    f: impl Fn(&BezierCurve<BigRational>, &P) -> Result<(String, Value)>,
-) -> i32 {
-    match param {
-        Ok(p) => batch(args, out, |c| f(c, &p)),
-        Err(e) => {
-            eprintln!("casteljau: {e}");
-            2
-        }
-    }
-}
-
 /// Reads the curves (argument, file, or stdin) and answers each; exit 2 if any line was bad.
-fn batch(
-    args: &CurveArgs,
-    out: &mut dyn Write,
-    f: impl Fn(&BezierCurve<BigRational>) -> Result<(String, Value)>,
-) -> i32 {
+fn batch(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer>) -> i32 {
     if args.dim == 0 || args.dim > MAX_DIM {
         eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
         return 2;
@@ -276,10 +388,12 @@ fn batch(
         },
     };
     let mut code = 0;
+    let mut failed = false;
     for (line, text) in inputs {
         let answer = parse_points(&text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c));
         let written = match answer {
-            Ok((text, mut value)) => {
+            Ok(Answer { text, json: mut value, failed: f }) => {
+                failed |= f;
                 if args.json {
                     if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
                         obj.insert("line".into(), json!(l));
@@ -307,7 +421,7 @@ fn batch(
             return code.max(2); // stdout closed (e.g. a pipe): stop quietly
         }
     }
-    code
+    if code == 0 && failed { 1 } else { code }
 }
 
 fn read_lines(source: Option<&str>) -> std::result::Result<Vec<(Option<usize>, String)>, String> {
@@ -333,257 +447,6 @@ fn read_lines(source: Option<&str>) -> std::result::Result<Vec<(Option<usize>, S
             (!trimmed.is_empty() && !trimmed.starts_with('#')).then(|| (Some(i + 1), l))
         })
         .collect())
-}
-
-/// Exact strings of a point's coordinates.
-pub fn point_json<S: Scalar>(p: &Point<S>) -> Value {
-    Value::Array(p.coords.iter().map(|c| Value::String(c.to_string())).collect())
-}
-
-/// Exact strings of a polygon.
-pub fn points_json<S: Scalar>(ps: &[Point<S>]) -> Value {
-    Value::Array(ps.iter().map(point_json).collect())
-}
-
-fn eval(c: &BezierCurve<BigRational>, ts: &[BigRational]) -> Result<(String, Value)> {
-    let ic = fraction_free::IntegerCurve::new(c);
-    let values: Vec<Point<BigRational>> = ts.iter().map(|t| fraction_free::eval_integer(&ic, t)).collect();
-    let text = ts.iter().zip(&values).map(|(t, p)| format!("b({t}) = {p}")).collect::<Vec<_>>().join("\n");
-    let js: Vec<Value> =
-        ts.iter().zip(&values).map(|(t, p)| json!({"t": t.to_string(), "point": point_json(p)})).collect();
-    Ok((text, json!({"degree": c.degree(), "values": js})))
-}
-
-fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u32) -> Result<(String, Value)> {
-    if depth == 1 {
-        let (l, r) = fraction_free::subdivide(c, t0);
-        let text = format!("left:  {l}\nright: {r}");
-        return Ok((
-            text,
-            json!({"t": t0.to_string(), "left": points_json(l.points()), "right": points_json(r.points())}),
-        ));
-    }
-    output_limit("subdivision output (pieces × points)", (c.degree() + 1) << depth.min(40), MAX_SUBDIVISION_POINTS)?;
-    let pieces = fraction_free::subdivide_repeatedly(c, t0, depth)?;
-    let ivs = subdivision_intervals(t0, depth);
-    let text = pieces.iter().zip(&ivs).map(|(p, (a, b))| format!("[{a}, {b}]: {p}")).collect::<Vec<_>>().join("\n");
-    let js: Vec<Value> = pieces
-        .iter()
-        .zip(&ivs)
-        .map(|(p, (a, b))| json!({"interval": [a.to_string(), b.to_string()], "points": points_json(p.points())}))
-        .collect();
-    Ok((text, json!({"t": t0.to_string(), "depth": depth, "pieces": js})))
-}
-
-fn triangle(c: &BezierCurve<BigRational>, t: &BigRational) -> Result<(String, Value)> {
-    let tri = fraction_free::triangle(c, t);
-    let text = tri
-        .rows
-        .iter()
-        .enumerate()
-        .map(|(r, row)| {
-            let pts: Vec<String> = row.iter().map(|p| p.to_string()).collect();
-            format!("r={r}: {}", pts.join(" "))
-        })
-        .collect::<Vec<_>>()
-        .join("\n");
-    let rows: Vec<Value> = tri.rows.iter().map(|r| points_json(r)).collect();
-    Ok((text, json!({"t": t.to_string(), "rows": rows, "point": point_json(tri.point())})))
-}
-
-fn power(c: &BezierCurve<BigRational>) -> (String, Value) {
-    let coeffs = fraction_free::power_coefficients(c);
-    let names = ["x", "y", "z"];
-    let lines: Vec<String> = (0..c.dim())
-        .map(|k| {
-            let name = names.get(k).map(|s| s.to_string()).unwrap_or(format!("x{k}"));
-            let poly: Vec<BigRational> = coeffs.iter().map(|p| p.coords[k].clone()).collect();
-            format!("{name}(t) = {}", format_polynomial(&poly, "t"))
-        })
-        .collect();
-    let mut value = json!({"degree": c.degree(), "coefficients": points_json(&coeffs)});
-    if c.degree() <= MAX_MATRIX_DEGREE {
-        let matrix: Vec<Vec<String>> = crate::bernstein::bernstein_to_power_matrix(c.degree())
-            .iter()
-            .map(|r| r.iter().map(|v| v.to_string()).collect())
-            .collect();
-        value["matrix"] = json!(matrix);
-    }
-    (lines.join("\n"), value)
-}
-
-/// `c0 + c1 t + c2 t^2 …` with exact coefficients, zero terms omitted (`0` for the zero polynomial).
-pub fn format_polynomial(coeffs: &[BigRational], var: &str) -> String {
-    let mut s = String::new();
-    for (k, c) in coeffs.iter().enumerate() {
-        if Scalar::is_zero(c) {
-            continue;
-        }
-        let neg = crate::scalar::Exact::sign(c) == std::cmp::Ordering::Less;
-        let mag = if neg { -c.clone() } else { c.clone() };
-        if s.is_empty() {
-            s.push_str(if neg { "-" } else { "" });
-        } else {
-            s.push_str(if neg { " - " } else { " + " });
-        }
-        let one = mag == crate::scalar::rat(1);
-        match k {
-            0 => s.push_str(&mag.to_string()),
-            _ => {
-                if !one {
-                    s.push_str(&mag.to_string());
-                    if !mag.is_integer() {
-                        s.push('*');
-                    }
-                }
-                s.push_str(var);
-                if k > 1 {
-                    s.push_str(&format!("^{k}"));
-                }
-            }
-        }
-    }
-    if s.is_empty() { "0".into() } else { s }
-}
-
-fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)> {
-    use crate::classify::{classify, loop_blinn};
-    use crate::moving_line::MovingLines;
-    let k = classify(c)?;
-    let params = |ps: &[crate::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_string())).collect() };
-    let floats = |ps: &[crate::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_f64())).collect() };
-    let mut v = json!({
-        "degree": k.degree,
-        "real_degree": k.real_degree,
-        "collinear": k.collinear,
-        "class": k.class.as_str(),
-        "reason": k.reason,
-        "node_type": k.node_type.map(|n| n.as_str()),
-        "double_point": k.double_point.as_ref().map(point_json),
-        "double_point_parameters": params(&k.double_point_parameters),
-        "cusp_parameters": params(&k.cusp_parameters),
-        "inflection_parameters": params(&k.inflection_parameters),
-        "segment": {
-            "loop": k.segment.has_loop,
-            "cusp": k.segment.has_cusp,
-            "inflections": k.segment.inflections,
-            "category": k.segment.category.as_str(),
-        },
-        "invariants": {"A": k.invariants[0].to_string(), "B": k.invariants[1].to_string(), "C": k.invariants[2].to_string()},
-    });
-    if let Some((te, d)) = &k.t_e_and_d {
-        v["t_E"] = json!(te.to_string());
-        v["d"] = json!(d.to_string());
-    }
-    if c.degree() == 3 {
-        let ml = MovingLines::new(c)?;
-        let verified = ml.verify().is_ok();
-        let (lb, lb_node) = loop_blinn(c);
-        v["moving_lines"] = json!({
-            "L00": point_json(&ml.l0[0]), "L01": point_json(&ml.l0[1]),
-            "L10": point_json(&ml.l1[0]), "L11": point_json(&ml.l1[1]), "L12": point_json(&ml.l1[2]),
-            "D": point_json(&ml.double_point),
-            "t_E": ml.t_e().map(|t| t.to_string()),
-            "verified": verified,
-        });
-        if let Ok(map) = crate::canonical::canonical_map(c, crate::canonical::Formulas::Corrected) {
-            let proved = map.prove(c);
-            v["canonical"] = json!({
-                "equation": crate::canonical::canonical_equation(map.node),
-                "matrix": map.matrix.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
-                "t_E": map.t_e.to_string(),
-                "t_F": map.t_f.to_string(),
-                "parameter": "(t - t_E)/(t_F - t_E)",
-                "points": map.points.iter().map(|(n, p)| (n.to_string(), json!(p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()))).collect::<serde_json::Map<_, _>>(),
-                "proved": proved.is_ok(),
-                "certificate": match &proved { Ok(c) => c.to_string(), Err(e) => format!("counterexample {e}") },
-            });
-        }
-        v["loop_blinn"] = json!({
-            "d1": lb[0].to_string(), "d2": lb[1].to_string(), "d3": lb[2].to_string(),
-            "node_type": lb_node.map(|n| n.as_str()),
-        });
-    }
-    if float {
-        v["float"] = json!({
-            "double_point_parameters": floats(&k.double_point_parameters),
-            "cusp_parameters": floats(&k.cusp_parameters),
-            "inflection_parameters": floats(&k.inflection_parameters),
-            "double_point": k.double_point.as_ref().map(|p| p.to_f64().coords),
-        });
-    }
-    let show = |ps: &[crate::classify::Parameter]| -> String {
-        ps.iter()
-            .map(|p| if float { format!("{p} (≈{:.6})", p.to_f64()) } else { p.to_string() })
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let mut text = format!("{}: {}", k.class, k.reason);
-    if let Some(dp) = &k.double_point {
-        text += &format!("; double point {dp}");
-    }
-    if !k.double_point_parameters.is_empty() {
-        text += &format!(" at t = {}", show(&k.double_point_parameters));
-    }
-    if !k.inflection_parameters.is_empty() {
-        text += &format!("; inflections at t = {}", show(&k.inflection_parameters));
-    }
-    if k.collinear && !k.cusp_parameters.is_empty() {
-        text += &format!("; turns back at t = {}", show(&k.cusp_parameters));
-    }
-    text += &format!(
-        "; on [0,1]: {}{}{} inflection{} ({})",
-        if k.segment.has_loop { "loop, " } else { "" },
-        if k.segment.has_cusp { "cusp, " } else { "" },
-        k.segment.inflections,
-        if k.segment.inflections == 1 { "" } else { "s" },
-        k.segment.category.as_str()
-    );
-    Ok((text, v))
-}
-
-fn classify_weighted(
-    c: &BezierCurve<BigRational>,
-    weights: Option<&[BigRational]>,
-    homogeneous: bool,
-) -> Result<(String, Value)> {
-    let h: Vec<Point<BigRational>> = if homogeneous {
-        if weights.is_some() {
-            return Err(Error::InvalidArgument { message: "give --weights or --homogeneous, not both".into() });
-        }
-        c.points().to_vec()
-    } else {
-        let w = weights.expect("weights given");
-        if w.len() != c.points().len() {
-            return Err(Error::InvalidArgument {
-                message: format!("{} weights for {} control points", w.len(), c.points().len()),
-            });
-        }
-        c.points().iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect()
-    };
-    let k = crate::rational_cubic::classify_rational(&h)?;
-    let params: Vec<String> = k.double_point_parameters.iter().map(|p| p.to_string()).collect();
-    let v = json!({
-        "rational": true,
-        "class": k.class,
-        "reason": k.reason,
-        "node_type": k.node_type.map(|n| n.as_str()),
-        "double_point": k.double_point.as_ref().map(point_json),
-        "double_point_homogeneous": k.double_point_homogeneous.as_ref().map(point_json),
-        "double_point_at_infinity": k.at_infinity,
-        "double_point_parameters": params,
-        "parameter_at_infinity": k.parameter_at_infinity,
-        "segment": {"loop": k.has_loop, "cusp": k.has_cusp},
-    });
-    let mut text = k.class.to_string();
-    if let Some(n) = k.node_type {
-        text += &format!(" ({})", n.as_str());
-    }
-    text += &format!(": {}", k.reason);
-    if !params.is_empty() {
-        text += &format!("; finite double-point parameters t = {}", params.join(", "));
-    }
-    Ok((text, v))
 }
 
 fn prove(

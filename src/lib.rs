@@ -25,6 +25,7 @@
 //! assert_eq!(right.to_string(), "-1/3 -1/27, 1/9 1/9, 5/9 -1/3, 1 1");
 //! ```
 
+pub mod answers;
 pub mod bernstein;
 pub mod bezier;
 pub mod canonical;

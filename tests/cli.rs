@@ -234,7 +234,49 @@ fn cli_classify_rational_cubics() {
     assert!(stderr(&o).contains("3 weights for 4 control points"));
     let o = run(&["classify", "--weights", "1 0 1 1", "0 0, 1 0, 2 1, 3/2 3/2"], None);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("(0, 0, 0)"));
+    assert!(stderr(&o).contains("weight 2 is 0"), "{}", stderr(&o));
     let o = run(&["classify", "--weights", "1 x 1 1", "0 0, 1 0, 2 1, 3/2 3/2"], None);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn cli_rational_curves_eval_implicit_conic_subdivide_elevate() {
+    let folium = "0 0, 1 0, 2 1, 3/2 3/2";
+    let o = run(&["eval", "--weights", "1 1 1 2", "--t", "1/3", folium], None);
+    assert_eq!(stdout(&o), "x(1/3) = (27/28, 9/28)\n");
+    let o = run(&["implicit", "--weights", "1 1 1 2", "--poly", "x^3 - 3*x*y + y^3", folium], None);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).starts_with("proved"));
+    let o = run(&["implicit", "--json", "--weights", "1 1 1 2", "--poly", "x^3 - 2*x*y + y^3", folium], None);
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["proved"], false);
+    assert_eq!(v["value"], "9/4");
+    // seed 000 example 5 at s = π: the semicircle through the point at infinity
+    let o = run(&["implicit", "--homogeneous", "--poly", "x^2 + y^2 - 1", "1 0 1, 0 1 0, -1 0 1"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = run(&["conic", "--json", "--weights", "1 5/4 1", "1 0, 1 3/5, 17/8 15/8"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["conic"], "hyperbola");
+    assert_eq!(v["shape_factor"], "25/16");
+    let o = run(&["subdivide", "--weights", "1 1 1 2", "--t", "1/2", folium], None);
+    assert_eq!(
+        stdout(&o),
+        "left:  0 0 (w 1), 1/2 0 (w 1), 1 1/4 (w 1), 4/3 2/3 (w 9/8)\nright: 4/3 2/3 (w 9/8), 8/5 1 (w 5/4), 5/3 4/3 (w 3/2), 3/2 3/2 (w 2)\n"
+    );
+    let o = run(&["elevate", "--json", "--homogeneous", "1 0 1, 0 1 0, -1 0 1"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["weights"], serde_json::json!(["1", "1/3", "1/3", "1"]));
+    assert_eq!(v["points"][1], serde_json::json!(["1", "2"])); // seed 000 example 4's control points
+    // undefined curves and bad weights: exit 2 with the reason
+    let o = run(&["eval", "--weights", "1 -1 1", "--t", "1/2", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("denominator vanishes at t = 1/2"));
+    let o = run(&["eval", "--weights", "1 1/0 1", "--t", "1/2", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--weights") && stderr(&o).contains("zero denominator"));
+    let o = run(&["conic", "--weights", "1 1 1 1", "0 0, 1 1, 2 0, 3 3"], None);
+    assert_eq!(o.status.code(), Some(2));
+    let o = run(&["subdivide", "--depth", "2", "--weights", "1 1 1", "0 0, 1 1, 2 0"], None);
     assert_eq!(o.status.code(), Some(2));
 }
