@@ -13,6 +13,10 @@
 //! | `basis-table` | `degree`, `steps`, `rows` | `B_i^n(t_k)` exactly |
 //! | `classification` | `curve`, optional `class`, `node_type`, `double_point`, `parameters`, `segment_*` | exact classification |
 //! | `moving-lines` | `curve` | seed 004 (3)–(8) proved and compared with the power-form route |
+//! | `implicit` | `curve` + `weights`, or `homogeneous`; `poly` | `W^d f(X/W) ≡ 0`, degree ≤ `n·d`: proved at `n·d + 1` parameters (seed 000 examples) |
+//! | `rational-evaluations` | rational curve | closed form (14), seed 000's recursion and Saito–Hosaka (19)–(20) are rational functions of type ≤ `(n, n)` in `t`, so agreeing at `2n + 1` parameters proves them equal |
+//! | `rational-elevation` | rational curve | (22) gives the homogeneous elevation's points and weights |
+//! | `weight-pull` | rational curve, `index`, `weight` | raising a weight moves every point of `(0, 1)` strictly towards that control point: (23) with `γ_i = B_i^n` proved, `γ_iΔw > 0` and `W > 0` on `(0, 1)` |
 //! | `canonical-map` | `curve`, `formulas` | the affine map from the canonical cubic, proved in `Q(√3)(√r)` |
 
 use crate::BezierCurve;
@@ -51,6 +55,14 @@ pub struct Content {
     pub curve: Option<String>,
     /// Weights of a rational curve.
     pub weights: Option<String>,
+    /// Homogeneous control points `w·x w·y w, …` (a rational curve; `w = 0` at infinity).
+    pub homogeneous: Option<String>,
+    /// An implicit polynomial in `x, y[, z]`.
+    pub poly: Option<String>,
+    /// A control point index.
+    pub index: Option<usize>,
+    /// A new weight.
+    pub weight: Option<String>,
     /// Formula for x(t).
     pub x: Option<String>,
     /// Formula for y(t).
@@ -202,6 +214,87 @@ pub fn check(c: &Content) -> Result<Outcome> {
         }
         "classification" => classification(c),
         "moving-lines" => moving_lines(c),
+        "implicit" => {
+            use crate::implicit::{ImplicitVerdict, prove_implicit};
+            Ok(match prove_implicit(&rational_of(c)?, need(&c.poly, "poly")?)? {
+                ImplicitVerdict::Proved { degree_bound, parameters } => verdict(
+                    true,
+                    "grid",
+                    format!(
+                        "W^d f(X/W) has degree ≤ {degree_bound} in t and vanishes at {} parameters with W ≠ 0",
+                        parameters.len()
+                    ),
+                ),
+                ImplicitVerdict::Counterexample { t, point, value } => {
+                    verdict(false, "exact-eval", format!("at t = {t}, x(t) = {point} and f = {value}"))
+                }
+            })
+        }
+        "rational-evaluations" => rational_evaluations(&rational_of(c)?),
+        "rational-elevation" => {
+            let r = rational_of(c)?;
+            let (h, sh) = (r.elevate(1)?, r.elevate_saito_hosaka()?);
+            let same = h.points() == sh.points() && h.weights().iter().zip(sh.weights()).all(|(a, b)| *a == b);
+            Ok(verdict(
+                same,
+                "exact-compare",
+                if same {
+                    format!("(22) gives the {} control points and weights of the homogeneous elevation", r.degree() + 2)
+                } else {
+                    format!(
+                        "(22): {:?} / {:?}; homogeneous: {:?} / {:?}",
+                        sh.points(),
+                        sh.weights(),
+                        h.points(),
+                        h.weights()
+                    )
+                },
+            ))
+        }
+        "weight-pull" => weight_pull(c),
+        "rational-subdivision" => {
+            let r = rational_of(c)?;
+            let t0 = num(need(&c.t, "t")?)?;
+            let (l, rt) = r.subdivide(&t0);
+            let n = r.degree();
+            // the halves are rational of type ≤ (n, n) in s: 2n + 1 parameters decide each
+            let ts = parameters_where(2 * n + 1, |s| {
+                r.eval(&(t0.clone() * s)).is_ok() && r.eval(&(t0.clone() + (rat(1) - &t0) * s)).is_ok()
+            });
+            for s in &ts {
+                let (a, b) = (r.eval(&(t0.clone() * s))?, r.eval(&(t0.clone() + (rat(1) - &t0) * s))?);
+                if l.eval(s)? != a || rt.eval(s)? != b {
+                    return Ok(verdict(false, "exact-eval", format!("a half differs from the curve at s = {s}")));
+                }
+            }
+            // the left half's control points are the rational interpolation points of (19)–(20)
+            let mut row: Vec<Point<BigRational>> =
+                r.points().into_iter().collect::<Option<_>>().ok_or_else(|| bad("finite points"))?;
+            let mut left = vec![row[0].clone()];
+            for k in 1..=n {
+                let u = rat(1) - &t0;
+                row = (0..row.len() - 1)
+                    .map(|i| {
+                        let a = t0.clone() * r.shifted_weight(i + 1, k - 1, &t0);
+                        let b = u.clone() * r.shifted_weight(i, k - 1, &t0);
+                        crate::rational_bezier::divide(&a, &b, &row[i], &row[i + 1])
+                            .ok_or_else(|| bad("vanishing ratio"))
+                    })
+                    .collect::<Result<_>>()?;
+                left.push(row[0].clone());
+            }
+            let found: Vec<Point<BigRational>> =
+                l.points().into_iter().collect::<Option<_>>().ok_or_else(|| bad("finite points"))?;
+            Ok(verdict(
+                found == left,
+                "grid",
+                format!(
+                    "halves ≡ the curve on [0, t0] and [t0, 1] ({} parameters each); left control points = P0, Pa, Pd, …, P of (19)–(20): {}",
+                    ts.len(),
+                    found == left
+                ),
+            ))
+        }
         "canonical-map" => {
             let curve = curve_of(c)?;
             let formulas = match c.formulas.as_deref() {
@@ -240,15 +333,21 @@ fn compare(computed: &[Point<BigRational>], expected: &[Point<BigRational>], wha
     }
 }
 
-/// Grid values for one variable: family 0 is `0, 1, −1, 2, −2, …`; family `f > 0` shifts them
-/// by `f/7` — used when a denominator vanishes on the previous family.
-fn nodes(degree: usize, family: usize) -> Vec<Rational> {
-    let shift = Rational(BigRational::new((family as i64).into(), 7.into()));
+/// Grid values for variable `var`: family 0 is `0, 1, −1, 2, −2, …`; family 1 shifts them by an
+/// integer that differs per variable (integers keep the arithmetic on the fast path); family
+/// `f > 1` by a fraction that differs per variable and family — so that a denominator vanishing
+/// on one family (typically where variables are 0 or equal) misses the next grid.
+fn nodes(degree: usize, var: usize, family: usize) -> Vec<Rational> {
+    let shift = match family {
+        0 => Rational::zero(),
+        1 => Rational::from_i64(7 * var as i64 + 3),
+        _ => Rational(BigRational::new((((family * 37 + var * 61 + 11) % 97) as i64 + 1).into(), 101.into())),
+    };
     (0..=degree as i64).map(|i| Rational::from_i64(if i % 2 == 1 { (i + 1) / 2 } else { -(i / 2) }) + &shift).collect()
 }
 
 /// Families of grid values tried before a claim is declared undecidable on grids.
-pub const NODE_FAMILIES: usize = 8;
+pub const NODE_FAMILIES: usize = 12;
 
 /// Proves `f ≡ 0` for `f` of degree ≤ `degrees[j]` in variable `j`, replacing the grid when `f`
 /// is undefined at a point. `Ok(Ok(points))`, `Ok(Err(counterexample))`, or `Err` when no
@@ -258,7 +357,8 @@ fn grid_prove(
     mut f: impl FnMut(&[Rational]) -> std::result::Result<Vec<Rational>, EvalError>,
 ) -> Result<std::result::Result<usize, proof::Counterexample<Rational>>> {
     for family in 0..NODE_FAMILIES {
-        let grid = GridProver::with_nodes(degrees, degrees.iter().map(|&d| nodes(d, family)).collect())?;
+        let grid =
+            GridProver::with_nodes(degrees, degrees.iter().enumerate().map(|(v, &d)| nodes(d, v, family)).collect())?;
         match grid.try_check_all(&mut f) {
             Ok(Ok(cert)) => return Ok(Ok(cert.points_checked)),
             Ok(Err(ce)) => return Ok(Err(ce)),
@@ -396,22 +496,14 @@ fn identity_instance(diff: &Expr, vars: &[String], env: &Env) -> Result<Instance
 }
 
 fn curve_formula(c: &Content) -> Result<Outcome> {
-    let curve = curve_of(c)?;
+    let rational = rational_of(c)?;
     let formulas: Vec<Expr> =
         [&c.x, &c.y, &c.z].iter().filter_map(|f| f.as_ref()).map(|f| parse_expr(f)).collect::<Result<_>>()?;
-    if formulas.len() != curve.dim() {
-        return Err(bad(format!("{} formulas for a {}D curve", formulas.len(), curve.dim())));
+    if formulas.len() != rational.dim() {
+        return Err(bad(format!("{} formulas for a {}D curve", formulas.len(), rational.dim())));
     }
-    let weights: Option<Vec<BigRational>> = match &c.weights {
-        Some(w) => Some(parse_points(w, 1, None)?.into_iter().map(|p| p.coords[0].clone()).collect()),
-        None => None,
-    };
-    let hom = match &weights {
-        Some(w) if w.len() != curve.points().len() => return Err(bad("one weight per control point")),
-        Some(w) => curve.points().iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect(),
-        None => curve.points().iter().map(|p| p.to_homogeneous(&rat(1))).collect(),
-    };
-    let hom = BezierCurve::new(hom)?;
+    let hom = rational.homogeneous().clone();
+    let curve = &hom;
     let mut degree = 0;
     for f in &formulas {
         let (n, d) = f.degree("t", &mut Env::new()).map_err(|e| bad(format!("{e:?}")))?;
@@ -605,5 +697,96 @@ fn lemma_2(max: usize) -> Result<Outcome> {
         true,
         "grid",
         format!("proved for every curve of degree 1..={max} (control points as variables), {total} exact points"),
+    ))
+}
+
+fn rational_of(c: &Content) -> Result<crate::rational_bezier::RationalBezier<BigRational>> {
+    use crate::rational_bezier::RationalBezier;
+    if let Some(h) = &c.homogeneous {
+        let dim = h.split(',').next().map_or(3, |p| p.split_whitespace().count());
+        return RationalBezier::from_homogeneous(parse_points(h, dim, None)?);
+    }
+    let curve = curve_of(c)?;
+    let w = match &c.weights {
+        Some(w) => parse_points(w, 1, None)?.into_iter().map(|p| p.coords[0].clone()).collect(),
+        None => vec![rat(1); curve.points().len()],
+    };
+    RationalBezier::new(curve.points().to_vec(), w)
+}
+
+/// Parameters `0, 1, 1/2, 1/3, 2/3, …` where `keep` holds, `count` of them.
+fn parameters_where(count: usize, mut keep: impl FnMut(&BigRational) -> bool) -> Vec<BigRational> {
+    let mut out = Vec::new();
+    let mut q = 1i64;
+    while out.len() < count && q < 10_000 {
+        for p in 0..=q {
+            if num_integer::gcd(p, q) == 1 || (p == 0 && q == 1) {
+                let t = BigRational::new(p.into(), q.into());
+                if keep(&t) {
+                    out.push(t);
+                    if out.len() == count {
+                        break;
+                    }
+                }
+            }
+        }
+        q += 1;
+    }
+    out
+}
+
+fn rational_evaluations(r: &crate::rational_bezier::RationalBezier<BigRational>) -> Result<Outcome> {
+    let n = r.degree();
+    let ts = parameters_where(2 * n + 1, |t| r.eval_rational_de_casteljau(t).is_ok() && r.eval_saito_hosaka(t).is_ok());
+    if ts.len() < 2 * n + 1 {
+        return Err(bad("too few parameters where every route is defined"));
+    }
+    for t in &ts {
+        let x = r.eval(t)?;
+        for (name, y) in [
+            ("seed 000 recursion", r.eval_rational_de_casteljau(t)?),
+            ("Saito–Hosaka (19)–(20)", r.eval_saito_hosaka(t)?),
+        ] {
+            if y != x {
+                return Ok(verdict(false, "exact-eval", format!("at t = {t}: (14) gives {x}, {name} gives {y}")));
+            }
+        }
+    }
+    Ok(verdict(
+        true,
+        "grid",
+        format!("three routes, rational of type ≤ ({n}, {n}) in t, agree at {} parameters", ts.len()),
+    ))
+}
+
+fn weight_pull(c: &Content) -> Result<Outcome> {
+    let r = rational_of(c)?;
+    let i = *need(&c.index, "index")?;
+    let w_new = num(need(&c.weight, "weight")?)?;
+    let dw = w_new.clone() - &r.weights()[i];
+    if dw.sign() != std::cmp::Ordering::Greater {
+        return Err(bad("weight-pull needs a larger new weight"));
+    }
+    let moved = r.with_weight(i, w_new)?;
+    let open = (rat(0), rat(1));
+    for (name, curve) in [("W", &r), ("W'", &moved)] {
+        if let Err(e) = curve.check_defined(&open.0, &open.1) {
+            return Ok(verdict(false, "exact-eval", format!("{name}: {e}")));
+        }
+    }
+    let n = r.degree();
+    for t in parameters_where(2 * n + 1, |_| true) {
+        let (claimed, truth) = (r.weight_change(i, &dw, &t)?, moved.eval(&t)?);
+        if claimed != truth {
+            return Ok(verdict(false, "exact-eval", format!("(23) at t = {t}: {claimed} ≠ {truth}")));
+        }
+    }
+    Ok(verdict(
+        true,
+        "grid",
+        format!(
+            "(23) with γ = B_{i}^{n} proved (type ≤ ({n}, {n}), {} points); W, W' > 0 and γΔw > 0 on (0, 1): every point moves strictly towards b_{i}",
+            2 * n + 1
+        ),
     ))
 }
