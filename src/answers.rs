@@ -285,7 +285,25 @@ pub(crate) fn eval_rational(c: &RationalBezier<BigRational>, ts: &[BigRational])
     let text = ts.iter().zip(&values).map(|(t, p)| format!("x({t}) = {p}")).collect::<Vec<_>>().join("\n");
     let js: Vec<Value> =
         ts.iter().zip(&values).map(|(t, p)| json!({"t": t.to_string(), "point": point_json(p)})).collect();
-    Ok((text, json!({"degree": c.degree(), "rational": true, "values": js})))
+    let defined = c.check_defined(&crate::scalar::rat(0), &crate::scalar::rat(1)).is_ok();
+    Ok((text, json!({"degree": c.degree(), "rational": true, "values": js, "defined_on_0_1": defined})))
+}
+
+pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigRational) -> Result<crate::cli::Answer> {
+    let roots = c.denominator_roots(a, b);
+    let (text, failed, list) = match &roots {
+        None => ("undefined everywhere: the denominator is identically 0".to_string(), true, vec![]),
+        Some(r) if r.is_empty() => (format!("defined on [{a}, {b}]: the denominator has no root there"), false, vec![]),
+        Some(r) => {
+            let shown: Vec<String> = r.iter().map(|x| x.to_string()).collect();
+            (format!("undefined: the denominator vanishes at {}", shown.join("; ")), true, shown)
+        }
+    };
+    Ok(crate::cli::Answer {
+        text,
+        json: json!({"interval": [a.to_string(), b.to_string()], "defined": !failed, "roots": list}),
+        failed,
+    })
 }
 
 pub(crate) fn subdivide_rational(c: &RationalBezier<BigRational>, t0: &BigRational) -> Result<(String, Value)> {

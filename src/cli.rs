@@ -129,6 +129,22 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// Is the rational curve defined on [a, b] (default [0, 1])? Exact root isolation of the
+    /// denominator Σ w_i B_i(t): exit 0 defined, 1 with isolating intervals of its roots.
+    Defined {
+        /// Start of the interval.
+        #[arg(long, default_value = "0", allow_hyphen_values = true)]
+        from: String,
+        /// End of the interval.
+        #[arg(long, default_value = "1", allow_hyphen_values = true)]
+        to: String,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
     /// The conic of a rational quadratic: ellipse, parabola, hyperbola (from w1² − w0·w2).
     Conic {
         /// Rational curves.
@@ -298,6 +314,20 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         }),
         Command::Implicit { poly, rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::implicit(&rational_curve(c, w)?, &poly))
+        }
+        Command::Defined { from, to, rational, curve } => {
+            let range =
+                option_number("--from", &from).and_then(|a| Ok((a, option_number("--to", &to)?))).and_then(|(a, b)| {
+                    if a >= b || a < crate::scalar::rat(0) || b > crate::scalar::rat(1) {
+                        Err(Error::InvalidArgument { message: format!("need 0 <= --from < --to <= 1, got [{a}, {b}]") })
+                    } else {
+                        Ok((a, b))
+                    }
+                });
+            rational_batch(&rational, curve, out, move |c, w| {
+                let (a, b) = range.clone()?;
+                answers::defined(&rational_curve(c, w)?, &a, &b)
+            })
         }
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))

@@ -280,3 +280,24 @@ fn cli_rational_curves_eval_implicit_conic_subdivide_elevate() {
     let o = run(&["subdivide", "--depth", "2", "--weights", "1 1 1", "0 0, 1 1, 2 0"], None);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn cli_defined_isolates_denominator_roots_exactly() {
+    let o = run(&["defined", "--weights", "1 -2 1", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).starts_with("undefined: the denominator vanishes at t in ("), "{}", stdout(&o));
+    let o = run(&["defined", "--json", "--weights", "1 -1 1", "0 0, 1 1, 2 0"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["roots"], serde_json::json!(["t = 1/2"]));
+    let o = run(&["defined", "--from", "3/4", "--weights", "1 -2 1", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(1)); // 1/2 + √3/6 ≈ 0.789 is in [3/4, 1]
+    let o = run(&["defined", "--from", "1/4", "--to", "3/4", "--weights", "1 -2 1", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        run(&["defined", "--from", "1", "--to", "0", "--weights", "1 1", "0 0, 1 1"], None).status.code(),
+        Some(2)
+    );
+    let o = run(&["eval", "--json", "--weights", "1 -2 1", "--t", "1/4", "0 0, 1 1, 2 0"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["defined_on_0_1"], false);
+}
