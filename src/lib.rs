@@ -49,8 +49,11 @@ pub mod rational_bezier;
 pub mod rational_cubic;
 pub mod roots;
 pub mod scalar;
+pub mod spline;
+pub mod spline_net;
 #[cfg(feature = "proptest")]
 pub mod strategies;
+pub mod surface;
 
 pub use bezier::BezierCurve;
 pub use error::{Error, Position, Result};

@@ -257,6 +257,29 @@ impl<S: Scalar> RationalBezier<S> {
         Ok(Point::new((0..d).map(|k| (dh.coords[k].clone() * &w - h.coords[k].clone() * &dw) / w2.clone()).collect()))
     }
 
+    /// `x(t), x'(t), …, x^(k)(t)` exactly, from `W x = X` by Leibniz:
+    /// `x^(r) = (X^(r) − Σ_{i=1}^{r} C(r,i) W^(i) x^(r−i)) / W`.
+    ///
+    /// # Errors
+    /// [`Error::WeightsVanish`] where `W(t) = 0`.
+    pub fn derivatives_at(&self, t: &S, k: usize) -> Result<Vec<Point<S>>> {
+        let d = self.dim();
+        let hd: Vec<Point<S>> = (0..=k).map(|r| self.homogeneous.derivative(r).eval_bernstein(t)).collect();
+        let w = hd[0].coords[d].clone();
+        if w.is_zero() {
+            return Err(vanish_at(t));
+        }
+        let mut out: Vec<Point<S>> = Vec::with_capacity(k + 1);
+        for r in 0..=k {
+            let mut acc = Point::new(hd[r].coords[..d].to_vec());
+            for i in 1..=r {
+                acc = acc.sub(&out[r - i].scale(&(binomial_scalar::<S>(r, i) * &hd[i].coords[d])));
+            }
+            out.push(acc.scale(&(S::one() / w.clone())));
+        }
+        Ok(out)
+    }
+
     /// Weight change, seed 002 (23), *as printed*: the point of the curve with `w_i + Δw`,
     /// claimed to be `𝒱[γ_i(t)Δw : W_0(t;n)](x(t), P_i)` with `γ_i(t) = C(n,i)(1−t)^i t^{n−i}`.
     ///
