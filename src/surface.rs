@@ -164,16 +164,8 @@ impl RationalPatch {
 
     /// Splits at `u0`: the patches for `u ∈ [0, u0]` and `[u0, 1]` (every column subdivided).
     pub fn subdivide_u(&self, u0: &BigRational) -> (Self, Self) {
-        let n = self.degree().1;
-        let halves: Vec<_> = (0..=n).map(|j| Self::curve(self.column(j)).subdivide(u0)).collect();
-        let build =
-            |pick: &dyn Fn(&(RationalBezier<BigRational>, RationalBezier<BigRational>)) -> Vec<Point<BigRational>>| {
-                let cols: Vec<Vec<Point<BigRational>>> = halves.iter().map(pick).collect();
-                RationalPatch {
-                    rows: (0..cols[0].len()).map(|i| cols.iter().map(|c| c[i].clone()).collect()).collect(),
-                }
-            };
-        (build(&|h| h.0.homogeneous().points().to_vec()), build(&|h| h.1.homogeneous().points().to_vec()))
+        let (a, b) = self.transpose().subdivide_v(u0);
+        (a.transpose(), b.transpose())
     }
 
     /// Splits at `v0` (every row subdivided).
