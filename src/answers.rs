@@ -344,3 +344,164 @@ pub(crate) fn implicit(c: &RationalBezier<BigRational>, poly: &str) -> Result<cr
         },
     })
 }
+
+fn patch_json(p: &crate::surface::RationalPatch) -> Value {
+    let (m, n) = p.degree();
+    json!({
+        "degree": [m, n],
+        "homogeneous": p.homogeneous().iter().map(|r| points_json(r)).collect::<Vec<_>>(),
+        "weights": p.weights().iter().map(|r| r.iter().map(|w| w.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
+    })
+}
+
+fn patch_text(p: &crate::surface::RationalPatch) -> String {
+    p.homogeneous()
+        .iter()
+        .map(|r| {
+            r.iter()
+                .map(|h| {
+                    let d = h.dim() - 1;
+                    match h.from_homogeneous() {
+                        Some(q) => format!(
+                            "{} (w {})",
+                            q.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" "),
+                            h.coords[d]
+                        ),
+                        None => format!(
+                            "direction {} (w 0)",
+                            h.coords[..d].iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")
+                        ),
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join(", ")
+        })
+        .collect::<Vec<_>>()
+        .join(" ; ")
+}
+
+pub(crate) fn surface_eval(
+    p: &crate::surface::RationalPatch,
+    u: &BigRational,
+    v: &BigRational,
+) -> Result<(String, Value)> {
+    let s = p.eval(u, v)?;
+    let agree = p.eval_u_then_v(u, v).ok() == Some(s.clone()) && p.eval_v_then_u(u, v).ok() == Some(s.clone());
+    Ok((
+        format!("S({u}, {v}) = {s}"),
+        json!({"u": u.to_string(), "v": v.to_string(), "point": point_json(&s), "de_casteljau_u_then_v_and_v_then_u_agree": agree}),
+    ))
+}
+
+pub(crate) fn surface_subdivide(
+    p: &crate::surface::RationalPatch,
+    in_u: bool,
+    x: &BigRational,
+) -> Result<(String, Value)> {
+    let (a, b) = if in_u { p.subdivide_u(x) } else { p.subdivide_v(x) };
+    let dir = if in_u { "u" } else { "v" };
+    Ok((
+        format!("{dir} in [0, {x}]: {}\n{dir} in [{x}, 1]: {}", patch_text(&a), patch_text(&b)),
+        json!({"direction": dir, "at": x.to_string(), "first": patch_json(&a), "second": patch_json(&b)}),
+    ))
+}
+
+pub(crate) fn surface_elevate(p: &crate::surface::RationalPatch, u_by: usize, v_by: usize) -> Result<(String, Value)> {
+    let e = p.elevate(u_by, v_by)?;
+    Ok((patch_text(&e), patch_json(&e)))
+}
+
+pub(crate) fn surface_contour(
+    p: &crate::surface::RationalPatch,
+    z: &BigRational,
+    polyline: usize,
+) -> Result<(String, Value)> {
+    if p.dim() < 3 {
+        return Err(Error::InvalidArgument { message: "a contour z = c needs a 3D patch".into() });
+    }
+    let f = p.contour_polynomial(2, z);
+    let rows: Vec<String> = f.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")).collect();
+    let mut text = format!("F(u, v) = Σ B_i(u) B_j(v) c_ij with c = {}", rows.join(" ; "));
+    let mut v = json!({"z": z.to_string(), "bernstein_coefficients": f.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>()});
+    if polyline > 0 {
+        let segs = p.contour_polyline(2, z, polyline);
+        text += &format!("\n{} sampled segments", segs.len());
+        v["polyline"] = json!(segs.iter().map(|s| [[s[0].0, s[0].1], [s[1].0, s[1].1]]).collect::<Vec<_>>());
+    }
+    Ok((text, v))
+}
+
+pub(crate) fn spline_to_bezier(sp: &crate::spline::RationalSpline, method: &str) -> Result<(String, Value)> {
+    let segs: Vec<RationalBezier<BigRational>> = match (method, sp.degree) {
+        ("boehm", _) => sp.to_bezier_boehm(),
+        ("seed", 3) => (0..sp.segments()).map(|s| crate::spline::seed_cubic_segment(sp, s)).collect::<Result<_>>()?,
+        ("seed", 2) => (0..sp.segments())
+            .map(|s| crate::spline::seed_quadratic_segment(sp, s, crate::spline::Printed::Corrected))
+            .collect::<Result<_>>()?,
+        ("seed", n) => {
+            return Err(Error::InvalidArgument {
+                message: format!("the seed gives formulas for degrees 2 and 3, not {n}: use --method boehm"),
+            });
+        }
+        (m, _) => return Err(Error::InvalidArgument { message: format!("--method is seed or boehm, not {m:?}") }),
+    };
+    let text = segs
+        .iter()
+        .enumerate()
+        .map(|(s, c)| {
+            let (a, b) = sp.span(s);
+            format!("[{a}, {b}]: {}", weighted_text(c))
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let js: Vec<Value> = segs
+        .iter()
+        .enumerate()
+        .map(|(s, c)| {
+            let (a, b) = sp.span(s);
+            let mut v = weighted_json(c);
+            v["span"] = json!([a.to_string(), b.to_string()]);
+            v
+        })
+        .collect();
+    Ok((text, json!({"degree": sp.degree, "method": method, "segments": js})))
+}
+
+pub(crate) fn spline_check(sp: &crate::spline::RationalSpline) -> Result<crate::cli::Answer> {
+    use crate::spline::check_segments;
+    let boehm = sp.to_bezier_boehm();
+    let mut lines = Vec::new();
+    let mut failed = false;
+    let mut report = |name: &str, r: std::result::Result<usize, crate::spline::SegmentMismatch>| match r {
+        Ok(points) => lines.push(format!(
+            "{name}: every segment is the NURBS on its span ({points} exact points), joins C^{}",
+            sp.degree - 1
+        )),
+        Err(e) => {
+            failed = true;
+            lines.push(format!("{name}: FAILS: {e:?}"));
+        }
+    };
+    report("Boehm knot insertion", check_segments(sp, &boehm));
+    let seed: Option<Result<Vec<RationalBezier<BigRational>>>> = match sp.degree {
+        3 => Some((0..sp.segments()).map(|s| crate::spline::seed_cubic_segment(sp, s)).collect()),
+        2 => Some(
+            (0..sp.segments())
+                .map(|s| crate::spline::seed_quadratic_segment(sp, s, crate::spline::Printed::Corrected))
+                .collect(),
+        ),
+        _ => None,
+    };
+    if let Some(seed) = seed {
+        let seed = seed?;
+        report("seed formulas", check_segments(sp, &seed));
+        let same = seed.iter().zip(&boehm).all(|(a, b)| a.points() == b.points() && a.weights() == b.weights());
+        failed |= !same;
+        lines.push(format!("seed formulas = Boehm (points and weights): {same}"));
+    }
+    Ok(crate::cli::Answer {
+        text: lines.join("\n"),
+        json: json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines}),
+        failed,
+    })
+}

@@ -9,6 +9,7 @@ use crate::bezier::BezierCurve;
 use crate::error::{Error, Position, Result};
 use crate::fraction_free;
 use crate::parse::{parse_number, parse_points};
+use crate::point::Point;
 use crate::rational_bezier::RationalBezier;
 use clap::{Args, Parser, Subcommand};
 use num_rational::BigRational;
@@ -154,6 +155,18 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// Rational tensor-product Bézier patches: points row-major, (m+1)(n+1) of them.
+    Surface {
+        /// What to do with the patch.
+        #[command(subcommand)]
+        op: SurfaceOp,
+    },
+    /// Rational splines with scale ratios → C^(n-1)-joined rational Bézier segments.
+    Spline {
+        /// What to do with the spline.
+        #[command(subcommand)]
+        op: SplineOp,
+    },
     /// Check the claim catalogue (default proofs/): one line per claim, exit 0 iff every
     /// verdict is as expected, 1 otherwise, 2 on malformed claim files.
     Prove {
@@ -172,6 +185,147 @@ pub enum Command {
         #[arg(long, num_args = 0..=1, default_missing_value = "proofs/README.md")]
         write_readme: Option<std::path::PathBuf>,
     },
+}
+
+/// Patch operations.
+#[derive(Subcommand, Debug)]
+pub enum SurfaceOp {
+    /// S(u, v): the closed form (41), checked against de Casteljau u-then-v and v-then-u.
+    Eval {
+        /// Parameter u.
+        #[arg(long, allow_hyphen_values = true)]
+        u: String,
+        /// Parameter v.
+        #[arg(long, allow_hyphen_values = true)]
+        v: String,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+    /// Split at u = U (or v = V).
+    Subdivide {
+        /// Split in u here.
+        #[arg(long, allow_hyphen_values = true)]
+        u: Option<String>,
+        /// Split in v here.
+        #[arg(long, allow_hyphen_values = true)]
+        v: Option<String>,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+    /// Degree elevation in u and v.
+    Elevate {
+        /// Degrees added in u.
+        #[arg(long, default_value_t = 0)]
+        u_by: usize,
+        /// Degrees added in v.
+        #[arg(long, default_value_t = 0)]
+        v_by: usize,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+    /// The contour z = C as an exact implicit polynomial in (u, v), and a sampled polyline.
+    Contour {
+        /// The height C.
+        #[arg(long, allow_hyphen_values = true)]
+        z: String,
+        /// Sample the contour on an N×N grid (f64 segments, for plots).
+        #[arg(long, default_value_t = 0)]
+        polyline: usize,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+}
+
+/// A patch given as a curve line of (m+1)(n+1) points.
+#[derive(Args, Debug)]
+pub struct PatchArgs {
+    /// Degrees "m,n" (rows along u, columns along v).
+    #[arg(long)]
+    pub degree: String,
+    /// Weights, row-major (default all 1).
+    #[command(flatten)]
+    pub rational: RationalArgs,
+    /// The control net, row-major, and output form (3D by default).
+    #[command(flatten)]
+    pub curve: CurveArgs,
+}
+
+/// Spline operations.
+#[derive(Subcommand, Debug)]
+pub enum SplineOp {
+    /// The rational Bézier segments of the spline, with their weights.
+    ToBezier {
+        /// `seed` (the seed's rational interpolation formulas: cubic (25)-(29), quadratic (53)
+        /// corrected) or `boehm` (knot insertion, any degree).
+        #[arg(long, default_value = "boehm")]
+        method: String,
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+    /// Prove the segments: equal to the NURBS on each span, C^(n-1) joins, seed = Boehm.
+    Check {
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+}
+
+/// A rational spline.
+#[derive(Args, Debug)]
+pub struct SplineArgs {
+    /// The degree n.
+    #[arg(long, default_value_t = 3)]
+    pub degree: usize,
+    /// Scale ratios (knot intervals), m + n of them for m + 1 control points.
+    #[arg(long, allow_hyphen_values = true)]
+    pub ratios: String,
+    /// Weights k_i (default all 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub weights: Option<String>,
+    /// The control polygon, and output form.
+    #[command(flatten)]
+    pub curve: CurveArgs,
+}
+
+fn numbers(option: &str, text: &str) -> Result<Vec<BigRational>> {
+    let pts = parse_points(text, 1, None).map_err(|e| Error::InvalidArgument { message: format!("{option}: {e}") })?;
+    Ok(pts.into_iter().map(|p| p.coords[0].clone()).collect())
+}
+
+fn patch_of(
+    c: &BezierCurve<BigRational>,
+    degree: &str,
+    rational: &RationalArgs,
+) -> Result<crate::surface::RationalPatch> {
+    let bad = |m: String| Error::InvalidArgument { message: m };
+    let (m, n) = degree
+        .split_once(',')
+        .and_then(|(a, b)| Some((a.trim().parse::<usize>().ok()?, b.trim().parse::<usize>().ok()?)))
+        .ok_or_else(|| bad(format!("--degree must be \"m,n\", got {degree:?}")))?;
+    if m > crate::surface::MAX_PATCH_DEGREE || n > crate::surface::MAX_PATCH_DEGREE {
+        return Err(Error::TooLarge { what: "patch degree", value: m.max(n), limit: crate::surface::MAX_PATCH_DEGREE });
+    }
+    let pts = c.points();
+    if pts.len() != (m + 1) * (n + 1) {
+        return Err(bad(format!("a degree ({m}, {n}) patch needs {} points, got {}", (m + 1) * (n + 1), pts.len())));
+    }
+    let rows: Vec<Vec<Point<BigRational>>> = pts.chunks(n + 1).map(|r| r.to_vec()).collect();
+    if rational.homogeneous {
+        return crate::surface::RationalPatch::from_homogeneous(rows);
+    }
+    let w = match rational.parse_weights()? {
+        Some(w) if w.len() != pts.len() => {
+            return Err(bad(format!("{} weights for {} control points", w.len(), pts.len())));
+        }
+        Some(w) => w,
+        None => vec![crate::scalar::rat(1); pts.len()],
+    };
+    crate::surface::RationalPatch::new(rows, w.chunks(n + 1).map(|r| r.to_vec()).collect())
 }
 
 /// Weights of a rational curve (for eval, subdivide, elevate, implicit, conic, classify).
@@ -329,6 +483,8 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                 answers::defined(&rational_curve(c, w)?, &a, &b)
             })
         }
+        Command::Surface { op } => surface(op, out),
+        Command::Spline { op } => spline(op, out),
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
         }
@@ -477,6 +633,67 @@ fn read_lines(source: Option<&str>) -> std::result::Result<Vec<(Option<usize>, S
             (!trimmed.is_empty() && !trimmed.starts_with('#')).then(|| (Some(i + 1), l))
         })
         .collect())
+}
+
+fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
+    let run_patch =
+        |mut patch: PatchArgs, out: &mut dyn Write, f: &dyn Fn(&crate::surface::RationalPatch) -> Result<Answer>| {
+            if patch.curve.dim == 2 {
+                patch.curve.dim = 3; // patches are 3D unless --dim says otherwise
+            }
+            if patch.rational.homogeneous {
+                patch.curve.dim += 1;
+            }
+            let (degree, rational) = (patch.degree.clone(), patch.rational.clone());
+            batch(&patch.curve, out, |c| f(&patch_of(c, &degree, &rational)?))
+        };
+    match op {
+        SurfaceOp::Eval { u, v, patch } => {
+            let uv = option_number("--u", &u).and_then(|u| Ok((u, option_number("--v", &v)?)));
+            run_patch(patch, out, &|p| {
+                let (u, v) = uv.clone()?;
+                answers::surface_eval(p, &u, &v).map(Answer::from)
+            })
+        }
+        SurfaceOp::Subdivide { u, v, patch } => {
+            let at = match (&u, &v) {
+                (Some(u), None) => option_number("--u", u).map(|x| (true, x)),
+                (None, Some(v)) => option_number("--v", v).map(|x| (false, x)),
+                _ => Err(Error::InvalidArgument { message: "give exactly one of --u and --v".into() }),
+            };
+            run_patch(patch, out, &|p| {
+                let (in_u, x) = at.clone()?;
+                answers::surface_subdivide(p, in_u, &x).map(Answer::from)
+            })
+        }
+        SurfaceOp::Elevate { u_by, v_by, patch } => {
+            run_patch(patch, out, &|p| answers::surface_elevate(p, u_by, v_by).map(Answer::from))
+        }
+        SurfaceOp::Contour { z, polyline, patch } => {
+            let z = option_number("--z", &z);
+            let polyline = polyline.min(1000);
+            run_patch(patch, out, &|p| answers::surface_contour(p, &z.clone()?, polyline).map(Answer::from))
+        }
+    }
+}
+
+fn spline(op: SplineOp, out: &mut dyn Write) -> i32 {
+    let (args, method) = match op {
+        SplineOp::ToBezier { method, spline } => (spline, Some(method)),
+        SplineOp::Check { spline } => (spline, None),
+    };
+    let ratios = numbers("--ratios", &args.ratios);
+    let weights = args.weights.as_deref().map(|w| numbers("--weights", w)).transpose();
+    let degree = args.degree;
+    batch(&args.curve, out, |c| {
+        let ratios = ratios.clone()?;
+        let weights = weights.clone()?.unwrap_or_else(|| vec![crate::scalar::rat(1); c.points().len()]);
+        let sp = crate::spline::RationalSpline::new(degree, c.points(), &weights, &ratios)?;
+        match &method {
+            Some(m) => answers::spline_to_bezier(&sp, m).map(Answer::from),
+            None => answers::spline_check(&sp),
+        }
+    })
 }
 
 fn prove(

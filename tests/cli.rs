@@ -301,3 +301,55 @@ fn cli_defined_isolates_denominator_roots_exactly() {
     let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
     assert_eq!(v["defined_on_0_1"], false);
 }
+
+#[test]
+fn cli_spline_to_bezier_and_check() {
+    let pts = "0 0, 1 3, 3 4, 5 1, 7 2, 8 5";
+    let args = ["--degree", "3", "--weights", "1 2 1/2 3 1 2/3", "--ratios", "1 2 1 3 2 1 2 1", pts];
+    let mut a = vec!["spline", "to-bezier", "--method", "seed", "--json"];
+    a.extend(args);
+    let o = run(&a, None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["segments"].as_array().unwrap().len(), 3);
+    assert_eq!(v["segments"][0]["weights"], serde_json::json!(["25/16", "7/4", "1", "29/20"]));
+    assert_eq!(v["segments"][0]["span"], serde_json::json!(["4", "7"]));
+    let mut c = vec!["spline", "check"];
+    c.extend(args);
+    let o = run(&c, None);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).contains("seed formulas = Boehm (points and weights): true"));
+    let o = run(&["spline", "to-bezier", "--degree", "2", "--ratios", "1 2 1", pts], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("need 7 scale ratios, got 3"));
+    let o =
+        run(&["spline", "to-bezier", "--method", "seed", "--degree", "4", "--ratios", "1 1 1 1 1 1 1 1 1", pts], None);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn cli_surface_eval_subdivide_elevate_contour() {
+    let p = "0 0 0, 1 0 1, 2 0 0, 0 1 1, 1 1 2, 2 1 1";
+    let o = run(
+        &["surface", "eval", "--degree", "1,2", "--weights", "1 2 1 1 3 1", "--u", "1/2", "--v", "1/3", "--json", p],
+        None,
+    );
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["point"], serde_json::json!(["4/5", "17/30", "37/30"]));
+    assert_eq!(v["de_casteljau_u_then_v_and_v_then_u_agree"], true);
+    let o = run(&["surface", "subdivide", "--degree", "1,2", "--v", "1/2", "--json", p], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["first"]["degree"], serde_json::json!([1, 2]));
+    let o = run(&["surface", "elevate", "--degree", "1,2", "--u-by", "1", "--v-by", "1", "--json", p], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["degree"], serde_json::json!([2, 3]));
+    let o = run(&["surface", "contour", "--degree", "1,2", "--z", "1/2", "--json", p], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["bernstein_coefficients"], serde_json::json!([["-1/2", "1/2", "-1/2"], ["1/2", "3/2", "1/2"]]));
+    assert_eq!(
+        run(&["surface", "eval", "--degree", "1,2", "--u", "0", "--v", "0", "0 0 0, 1 0 1"], None).status.code(),
+        Some(2)
+    );
+    assert_eq!(run(&["surface", "eval", "--degree", "x", "--u", "0", "--v", "0", p], None).status.code(), Some(2));
+    assert_eq!(run(&["surface", "subdivide", "--degree", "1,2", p], None).status.code(), Some(2));
+}
