@@ -17,6 +17,10 @@
 //! | `rational-evaluations` | rational curve | closed form (14), seed 000's recursion and Saito–Hosaka (19)–(20) are rational functions of type ≤ `(n, n)` in `t`, so agreeing at `2n + 1` parameters proves them equal |
 //! | `rational-elevation` | rational curve | (22) gives the homogeneous elevation's points and weights |
 //! | `weight-pull` | rational curve, `index`, `weight` | raising a weight moves every point of `(0, 1)` strictly towards that control point: (23) with `γ_i = B_i^n` proved, `γ_iΔw > 0` and `W > 0` on `(0, 1)` |
+//! | `spline-segments` | `curve`, `weights`, `ratios`, `degree`, `method` | the rational Bézier segments equal the NURBS on each span (type-bounded grid) and join `C^{n−1}` |
+//! | `patch-evaluations` | `net` (one patch), `net_weights` | closed form (41), de Casteljau `u`-then-`v` and `v`-then-`u` agree on a `(2m+1)×(2n+1)` grid (rational of type `(m,m)×(n,n)`) |
+//! | `patch-weight-change` | patch, `index`, `index_v`, `weight` (Δw), `formulas` | (48)–(49) with the printed `γ` or the Bernstein one, on the type-bounded grid |
+//! | `net` | `net`, `net_weights`, `ratios`, `ratios_v`, `degrees`, `method` | every patch equals the tensor NURBS, joins are `C^{min−1}`, and rows-first = columns-first |
 //! | `canonical-map` | `curve`, `formulas` | the affine map from the canonical cubic, proved in `Q(√3)(√r)` |
 
 use crate::BezierCurve;
@@ -63,6 +67,20 @@ pub struct Content {
     pub index: Option<usize>,
     /// A new weight.
     pub weight: Option<String>,
+    /// A second index (the `v` index of a patch control point).
+    pub index_v: Option<usize>,
+    /// Scale ratios along `u` (splines, nets).
+    pub ratios: Option<String>,
+    /// Scale ratios along `v` (nets).
+    pub ratios_v: Option<String>,
+    /// A patch or net: rows separated by `;`, points by `,`.
+    pub net: Option<String>,
+    /// Weights of a patch or net: rows separated by `;`.
+    pub net_weights: Option<String>,
+    /// Degrees `"nu,nv"` of a net (default `2,2`).
+    pub degrees: Option<String>,
+    /// `seed`, `seed-printed` or `boehm` (spline and net conversions).
+    pub method: Option<String>,
     /// Formula for x(t).
     pub x: Option<String>,
     /// Formula for y(t).
@@ -252,6 +270,141 @@ pub fn check(c: &Content) -> Result<Outcome> {
             ))
         }
         "weight-pull" => weight_pull(c),
+        "spline-segments" => {
+            use crate::spline::{Printed, RationalSpline, check_segments, seed_cubic_segment, seed_quadratic_segment};
+            let curve = curve_of(c)?;
+            let n = *need(&c.degree, "degree")?;
+            let ratios = scalars(need(&c.ratios, "ratios")?)?;
+            let weights = match &c.weights {
+                Some(w) => scalars(w)?,
+                None => vec![rat(1); curve.points().len()],
+            };
+            let sp = RationalSpline::new(n, curve.points(), &weights, &ratios)?;
+            let segs: Vec<crate::rational_bezier::RationalBezier<BigRational>> =
+                match (c.method.as_deref().unwrap_or("boehm"), n) {
+                    ("boehm", _) => sp.to_bezier_boehm(),
+                    ("seed", 3) | ("seed-printed", 3) => {
+                        (0..sp.segments()).map(|s| seed_cubic_segment(&sp, s)).collect::<Result<_>>()?
+                    }
+                    ("seed", 2) => (0..sp.segments())
+                        .map(|s| seed_quadratic_segment(&sp, s, Printed::Corrected))
+                        .collect::<Result<_>>()?,
+                    ("seed-printed", 2) => (0..sp.segments())
+                        .map(|s| seed_quadratic_segment(&sp, s, Printed::AsPrinted))
+                        .collect::<Result<_>>()?,
+                    (m, n) => return Err(bad(format!("no method {m:?} for degree {n}"))),
+                };
+            Ok(match check_segments(&sp, &segs) {
+                Ok(points) => verdict(
+                    true,
+                    "grid",
+                    format!(
+                        "{} segments, each the NURBS on its span ({points} exact points, type ≤ ({n}, {n})), joins C^{}",
+                        segs.len(),
+                        n - 1
+                    ),
+                ),
+                Err(e) => verdict(false, "grid", format!("{e:?}")),
+            })
+        }
+        "patch-evaluations" => {
+            let p = patch_of(c)?;
+            let (m, n) = p.degree();
+            for i in 0..=2 * m {
+                for j in 0..=2 * n {
+                    let (u, v) = (
+                        BigRational::new((i as i64).into(), ((2 * m).max(1) as i64).into()),
+                        BigRational::new((j as i64).into(), ((2 * n).max(1) as i64).into()),
+                    );
+                    let s = p.eval(&u, &v)?;
+                    if p.eval_u_then_v(&u, &v)? != s || p.eval_v_then_u(&u, &v)? != s {
+                        return Ok(verdict(false, "exact-eval", format!("routes differ at (u, v) = ({u}, {v})")));
+                    }
+                }
+            }
+            Ok(verdict(
+                true,
+                "grid",
+                format!(
+                    "closed form (41) = u-then-v = v-then-u on a {}×{} grid (rational of type ({m},{m})×({n},{n}))",
+                    2 * m + 1,
+                    2 * n + 1
+                ),
+            ))
+        }
+        "patch-weight-change" => {
+            let p = patch_of(c)?;
+            let (i, j) = (*need(&c.index, "index")?, *need(&c.index_v, "index_v")?);
+            let dw = num(need(&c.weight, "weight")?)?;
+            let printed = c.formulas.as_deref() != Some("corrected");
+            let changed = p.with_weight_change(i, j, &dw)?;
+            let (m, n) = p.degree();
+            for a in 0..=2 * m {
+                for b in 0..=2 * n {
+                    let (u, v) = (
+                        BigRational::new((a as i64).into(), ((2 * m) as i64 + 1).into()),
+                        BigRational::new((b as i64).into(), ((2 * n) as i64 + 1).into()),
+                    );
+                    let (claimed, truth) = (p.weight_change(i, j, &dw, &u, &v, printed)?, changed.eval(&u, &v)?);
+                    if claimed != truth {
+                        return Ok(verdict(
+                            false,
+                            "exact-eval",
+                            format!("at (u, v) = ({u}, {v}): (49) gives {claimed}, the changed patch is at {truth}"),
+                        ));
+                    }
+                }
+            }
+            Ok(verdict(
+                true,
+                "grid",
+                format!(
+                    "(49) ≡ the patch with w_{i}{j} + Δw on a {}×{} grid (type ({m},{m})×({n},{n}))",
+                    2 * m + 1,
+                    2 * n + 1
+                ),
+            ))
+        }
+        "net" => {
+            use crate::spline::Printed;
+            use crate::spline_net::{Conversion, SplineNet, check_net};
+            let (rows, weights) = net_rows(c)?;
+            let (nu, nv) = match &c.degrees {
+                None => (2, 2),
+                Some(d) => d
+                    .split_once(',')
+                    .and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)))
+                    .ok_or_else(|| bad(format!("degrees must be \"nu,nv\", not {d:?}")))?,
+            };
+            let net = SplineNet::new(
+                (nu, nv),
+                rows,
+                weights,
+                scalars(need(&c.ratios, "ratios")?)?,
+                scalars(need(&c.ratios_v, "ratios_v")?)?,
+            )?;
+            let how = match c.method.as_deref().unwrap_or("boehm") {
+                "boehm" => Conversion::Boehm,
+                "seed" => Conversion::SeedQuadratic(Printed::Corrected),
+                "seed-printed" => Conversion::SeedQuadratic(Printed::AsPrinted),
+                m => return Err(bad(format!("no net method {m:?}"))),
+            };
+            let r = check_net(&net, how)?;
+            let ok = r.order_independent && r.equals_nurbs && r.smooth_joins;
+            Ok(verdict(
+                ok,
+                "grid",
+                format!(
+                    "{} patches; equal to the tensor NURBS: {}; C^{} joins: {}; rows-first = columns-first: {}{}",
+                    r.patches,
+                    r.equals_nurbs,
+                    nu.min(nv) - 1,
+                    r.smooth_joins,
+                    r.order_independent,
+                    r.problem.map(|p| format!(" ({p})")).unwrap_or_default()
+                ),
+            ))
+        }
         "rational-subdivision" => {
             let r = rational_of(c)?;
             let t0 = num(need(&c.t, "t")?)?;
@@ -789,4 +942,26 @@ fn weight_pull(c: &Content) -> Result<Outcome> {
             2 * n + 1
         ),
     ))
+}
+
+fn scalars(text: &str) -> Result<Vec<BigRational>> {
+    Ok(parse_points(text, 1, None)?.into_iter().map(|p| p.coords[0].clone()).collect())
+}
+
+type Grid = (Vec<Vec<Point<BigRational>>>, Vec<Vec<BigRational>>);
+
+fn net_rows(c: &Content) -> Result<Grid> {
+    let text = need(&c.net, "net")?;
+    let rows: Vec<Vec<Point<BigRational>>> =
+        text.split(';').map(|r| parse_points(r.trim(), 3, None)).collect::<Result<_>>()?;
+    let weights: Vec<Vec<BigRational>> = match &c.net_weights {
+        Some(w) => w.split(';').map(|r| scalars(r.trim())).collect::<Result<_>>()?,
+        None => rows.iter().map(|r| vec![rat(1); r.len()]).collect(),
+    };
+    Ok((rows, weights))
+}
+
+fn patch_of(c: &Content) -> Result<crate::surface::RationalPatch> {
+    let (rows, weights) = net_rows(c)?;
+    crate::surface::RationalPatch::new(rows, weights)
 }
