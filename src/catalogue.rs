@@ -316,8 +316,21 @@ rhs = \"sum(r, j, n, B(j, r, s) * B(r, n, t))\"
 Kinds: `identity` (expressions with `+ - * / ^`, `C(n,k)`, `B(i,n,x)`, `sum(r,a,b,e)`,
 `prod(r,a,b,e)`; degree bounds derived, denominators cross-multiplied, poles avoided by switching
 grid values), `curve-formula`, `power-form`, `subdivision`, `repeated-subdivision`, `matrix`,
-`table`, `basis-table`, `classification`, `moving-lines`, `canonical-map` (see
-`src/claim_checks.rs`).
+`table`, `basis-table`, `classification`, `moving-lines`, `moving-line-2`, `canonical-map`,
+`implicit`, `rational-evaluations`, `rational-elevation`, `rational-subdivision`, `weight-pull`,
+`spline-segments`, `patch-evaluations`, `patch-weight-change`, `net` (see `src/claim_checks.rs`).
+
+## What is not encoded, and why
+
+- Seed 002 (57)–(59): the appendix's proof of (5) names auxiliary points of Fig. 15 whose labels
+  the OCR lost (`OP : OP' = w1 : 1`, `OP : OP = …`); the statements cannot be reconstructed. Their
+  conclusion (60) is (5), proved below (`002-eq-5-60`).
+- Seed 002 (1)–(3) and (24) are definitions: (1)–(3) are used by the Menelaus claims, and the NURBS
+  of (24) is the exact de Boor evaluator every spline claim is compared with.
+- Seed 003 §3.1 item 2 prints the matrix form with a stray first row `t^3 t^2 t 1` (a J display
+  artefact); the matrix itself is checked (`003-matrix-degree-3`).
+- Seeds 002 (30)–(32) are proved for every weight and for scale ratios in 1..2 (each parameter
+  instance a proof); with symbolic ratios the grids exceed the prover's size limit.
 ";
 
 /// The generated `proofs/README.md`: format, errata with counterexamples, every claim's verdict.

@@ -21,6 +21,7 @@
 //! | `patch-evaluations` | `net` (one patch), `net_weights` | closed form (41), de Casteljau `u`-then-`v` and `v`-then-`u` agree on a `(2m+1)×(2n+1)` grid (rational of type `(m,m)×(n,n)`) |
 //! | `patch-weight-change` | patch, `index`, `index_v`, `weight` (Δw), `formulas` | (48)–(49) with the printed `γ` or the Bernstein one, on the type-bounded grid |
 //! | `net` | `net`, `net_weights`, `ratios`, `ratios_v`, `degrees`, `method` | every patch equals the tensor NURBS, joins are `C^{min−1}`, and rows-first = columns-first |
+//! | `moving-line-2` | `curve`, `formulas` | seed 004 (2): `P[τ] × P[t] = (t − τ)·r(τ)·M·c(t)`, degree ≤ 3 in `τ` and `t` (4×4 grid); as printed `r(τ)` is the scalar `(1−τ)²(1−t)τ − τ²` applied to the sum of the rows |
 //! | `canonical-map` | `curve`, `formulas` | the affine map from the canonical cubic, proved in `Q(√3)(√r)` |
 
 use crate::BezierCurve;
@@ -232,6 +233,7 @@ pub fn check(c: &Content) -> Result<Outcome> {
         }
         "classification" => classification(c),
         "moving-lines" => moving_lines(c),
+        "moving-line-2" => moving_line_2(c),
         "implicit" => {
             use crate::implicit::{ImplicitVerdict, prove_implicit};
             Ok(match prove_implicit(&rational_of(c)?, need(&c.poly, "poly")?)? {
@@ -964,4 +966,46 @@ fn net_rows(c: &Content) -> Result<Grid> {
 fn patch_of(c: &Content) -> Result<crate::surface::RationalPatch> {
     let (rows, weights) = net_rows(c)?;
     crate::surface::RationalPatch::new(rows, weights)
+}
+
+/// Seed 004 (2): `L[t] = P[τ] × P[t] = (t − τ)·r(τ)·M·c(t)` with `c(t) = ((1−t)², (1−t)t, t²)` and
+/// `M` the matrix of cross products `Q_i × Q_j`.
+fn moving_line_2(c: &Content) -> Result<Outcome> {
+    let curve = curve_of(c)?;
+    let ml = MovingLines::new(&curve)?;
+    let q = &ml.q;
+    let x = |a: &Point<BigRational>, b: &Point<BigRational>| a.cross(b).expect("3-vectors");
+    let m = [
+        [x(&q[0], &q[1]), x(&q[0], &q[2]), x(&q[0], &q[3])],
+        [x(&q[0], &q[2]), x(&q[0], &q[3]).add(&x(&q[1], &q[2])), x(&q[1], &q[3])],
+        [x(&q[0], &q[3]), x(&q[1], &q[3]), x(&q[2], &q[3])],
+    ];
+    let printed = c.formulas.as_deref() != Some("corrected");
+    let res = proof::identities::<BigRational>(&[3, 3], |v| {
+        let (tau, t) = (&v[0], &v[1]);
+        let (u, ut) = (rat(1) - tau, rat(1) - t);
+        let col = [ut.clone() * &ut, ut.clone() * t, t.clone() * t];
+        let row: [BigRational; 3] = if printed {
+            let s = u.clone() * &u * &ut * tau - tau.clone() * tau;
+            [s.clone(), s.clone(), s]
+        } else {
+            [u.clone() * &u, u.clone() * tau, tau.clone() * tau]
+        };
+        let mut rhs = Point::origin(3);
+        for a in 0..3 {
+            for b in 0..3 {
+                rhs = rhs.add(&m[a][b].scale(&(row[a].clone() * &col[b])));
+            }
+        }
+        let rhs = rhs.scale(&(t.clone() - tau));
+        x(&ml.point(tau), &ml.point(t)).sub(&rhs).coords
+    });
+    Ok(match res {
+        Ok(cert) => verdict(true, "grid", format!("P[τ] × P[t] ≡ (t − τ) r(τ) M c(t): {cert}")),
+        Err(e) => verdict(
+            false,
+            "grid",
+            format!("at (τ, t) = ({}, {}) coordinate {} differs by {}", e.point[0], e.point[1], e.identity, e.value),
+        ),
+    })
 }

@@ -205,3 +205,27 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+
+    /// Random exact 4×4 biquadratic and bicubic nets with random weights and ratios: patches equal
+    /// the tensor NURBS, join C^(min−1), and both conversion orders agree; the seed's corrected
+    /// quadratic formulas give the same patches as Boehm.
+    #[test]
+    fn net_random_exact_nets(
+        z in prop::collection::vec(-5i64..=5, 25), w in prop::collection::vec(ratio_s(), 25),
+        lam in prop::collection::vec(ratio_s(), 7), mu in prop::collection::vec(ratio_s(), 7), cubic in any::<bool>()
+    ) {
+        let size = if cubic { 5 } else { 4 };
+        let d = if cubic { 3 } else { 2 };
+        let pts: Vec<Vec<Point<BigRational>>> = (0..size).map(|i| (0..size).map(|j| Point::new(vec![rat(j as i64), rat(i as i64), rat(z[i * 5 + j])])).collect()).collect();
+        let ws: Vec<Vec<BigRational>> = (0..size).map(|i| (0..size).map(|j| w[i * 5 + j].clone()).collect()).collect();
+        let n = SplineNet::new((d, d), pts, ws, lam[..size - 1 + d].to_vec(), mu[..size - 1 + d].to_vec()).unwrap();
+        let r = check_net(&n, Conversion::Boehm).unwrap();
+        prop_assert!(r.order_independent && r.equals_nurbs && r.smooth_joins, "{:?}", r.problem);
+        if !cubic {
+            prop_assert_eq!(n.to_patches(Conversion::Boehm, true).unwrap(), n.to_patches(Conversion::SeedQuadratic(Printed::Corrected), true).unwrap());
+        }
+    }
+}
