@@ -35,33 +35,7 @@ fn trim(mut p: Poly) -> Poly {
     p
 }
 
-/// Remainder of `a` divided by `b` (`b ≠ 0`).
-fn rem(mut a: Poly, b: &Poly) -> Poly {
-    let lb = b.last().expect("non-zero divisor").clone();
-    while a.len() >= b.len() && !a.is_empty() {
-        let f = a.last().expect("non-empty").clone() / &lb;
-        let shift = a.len() - b.len();
-        for (i, c) in b.iter().enumerate() {
-            a[shift + i] = a[shift + i].clone() - f.clone() * c;
-        }
-        a = trim(a);
-    }
-    a
-}
-
-/// Monic greatest common divisor (`[]` for gcd(0, 0)).
-fn gcd(a: Poly, b: Poly) -> Poly {
-    let (mut a, mut b) = (trim(a), trim(b));
-    while !b.is_empty() {
-        let r = rem(a, &b);
-        a = b;
-        b = r;
-    }
-    match a.last().cloned() {
-        Some(l) => a.into_iter().map(|c| c / &l).collect(),
-        None => a,
-    }
-}
+use crate::roots::poly_gcd as gcd;
 
 /// What [`classify_rational`] finds.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -37,7 +37,8 @@ impl fmt::Display for Root {
 /// the polynomials this crate meets).
 pub const MAX_ISOLATION_DEPTH: usize = 200;
 
-fn poly_rem(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
+/// Remainder of `a` divided by `b` (power form, lowest degree first; `b` without trailing zeros).
+pub(crate) fn poly_rem(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
     let lb = b.last().expect("non-zero divisor").clone();
     while a.len() >= b.len() && !a.is_empty() {
         let f = a.last().expect("non-empty").clone() / &lb;
@@ -67,19 +68,31 @@ fn poly_div(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
     q
 }
 
-/// The square-free part of a power-form polynomial (lowest degree first, non-zero).
-fn square_free(p: Vec<BigRational>) -> Vec<BigRational> {
-    let dp: Vec<BigRational> = p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * rat(k as i64)).collect();
-    let (mut a, mut b) = (p.clone(), dp);
-    while b.last().is_some_and(Scalar::is_zero) {
-        b.pop();
-    }
+/// The monic greatest common divisor of two power-form polynomials (`[]` for gcd(0, 0)).
+pub(crate) fn poly_gcd(a: Vec<BigRational>, b: Vec<BigRational>) -> Vec<BigRational> {
+    let trim = |mut p: Vec<BigRational>| {
+        while p.last().is_some_and(Scalar::is_zero) {
+            p.pop();
+        }
+        p
+    };
+    let (mut a, mut b) = (trim(a), trim(b));
     while !b.is_empty() {
         let r = poly_rem(a, &b);
         a = b;
         b = r;
     }
-    if a.len() <= 1 { p } else { poly_div(p, &a) }
+    match a.last().cloned() {
+        Some(l) => a.into_iter().map(|c| c / &l).collect(),
+        None => a,
+    }
+}
+
+/// The square-free part of a power-form polynomial (lowest degree first, non-zero).
+fn square_free(p: Vec<BigRational>) -> Vec<BigRational> {
+    let dp: Vec<BigRational> = p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * rat(k as i64)).collect();
+    let g = poly_gcd(p.clone(), dp);
+    if g.len() <= 1 { p } else { poly_div(p, &g) }
 }
 
 fn sign_changes(c: &[BigRational]) -> usize {
