@@ -167,6 +167,50 @@ pub enum Command {
         #[command(subcommand)]
         op: SplineOp,
     },
+    /// Draw curves as standalone SVG (to stdout or -o FILE); every curve of a batch in one figure.
+    Plot {
+        /// Draw and label the control polygon.
+        #[arg(long)]
+        polygon: bool,
+        /// Overlay the de Casteljau construction at this parameter.
+        #[arg(long, allow_hyphen_values = true)]
+        construction: Option<String>,
+        /// Overlay repeated subdivision at this parameter (with --depth).
+        #[arg(long = "subdivide", allow_hyphen_values = true)]
+        subdivide_at: Option<String>,
+        /// Depth of --subdivide.
+        #[arg(long, default_value_t = 1)]
+        depth: u32,
+        /// Mark classification features (double point, cusp, inflections, loop, E, canonical frame).
+        #[arg(long)]
+        features: bool,
+        /// A family of curves varying one weight, e.g. "w1=1,3,4" (needs --weights for the rest).
+        #[arg(long)]
+        weights_family: Option<String>,
+        /// Grid lines at integer coordinates.
+        #[arg(long)]
+        grid: bool,
+        /// A title.
+        #[arg(long)]
+        title: Option<String>,
+        /// Image width in pixels.
+        #[arg(long, default_value_t = 480)]
+        width: u32,
+        /// Write the SVG here instead of stdout.
+        #[arg(long, short)]
+        output: Option<std::path::PathBuf>,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s).
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Write the seed figures that can be reproduced (SVG) and an index.html into DIR.
+    Gallery {
+        /// The folder.
+        dir: std::path::PathBuf,
+    },
     /// Check the claim catalogue (default proofs/): one line per claim, exit 0 iff every
     /// verdict is as expected, 1 otherwise, 2 on malformed claim files.
     Prove {
@@ -484,6 +528,43 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             })
         }
         Command::Surface { op } => surface(op, out),
+        Command::Gallery { dir } => match crate::gallery::write(&dir) {
+            Ok(files) => {
+                let _ = writeln!(out, "wrote {} files to {}", files.len(), dir.display());
+                0
+            }
+            Err(e) => {
+                eprintln!("casteljau: {e}");
+                2
+            }
+        },
+        Command::Plot {
+            polygon,
+            construction,
+            subdivide_at,
+            depth,
+            features,
+            weights_family,
+            grid,
+            title,
+            width,
+            output,
+            rational,
+            curve,
+        } => {
+            let opts = (|| -> Result<crate::plot::CurveOptions> {
+                Ok(crate::plot::CurveOptions {
+                    polygon,
+                    construction: construction.as_deref().map(|t| option_number("--construction", t)).transpose()?,
+                    subdivide: subdivide_at
+                        .as_deref()
+                        .map(|t| option_number("--subdivide", t).map(|t| (t, depth)))
+                        .transpose()?,
+                    features,
+                })
+            })();
+            plot(opts, weights_family, grid, title, width.clamp(16, 8192), output, rational, curve, out)
+        }
         Command::Spline { op } => spline(op, out),
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
@@ -694,6 +775,81 @@ fn spline(op: SplineOp, out: &mut dyn Write) -> i32 {
             None => answers::spline_check(&sp),
         }
     })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn plot(
+    opts: Result<crate::plot::CurveOptions>,
+    family: Option<String>,
+    grid: bool,
+    title: Option<String>,
+    width: u32,
+    output: Option<std::path::PathBuf>,
+    rational: RationalArgs,
+    curve: CurveArgs,
+    out: &mut dyn Write,
+) -> i32 {
+    use crate::plot::{Figure, PALETTE, draw_curve, draw_rational};
+    use std::cell::RefCell;
+    let fig = RefCell::new(Figure::new().grid(grid));
+    if let Some(t) = &title {
+        fig.replace_with(|f| std::mem::take(f).title(t));
+    }
+    let count = RefCell::new(0usize);
+    // parse "wI=a,b,c"
+    let family = match family.as_deref().map(|f| {
+        let (name, values) = f
+            .split_once('=')
+            .ok_or_else(|| Error::InvalidArgument { message: format!("--weights-family {f:?}: write w1=1,3,4") })?;
+        let i: usize = name
+            .trim()
+            .trim_start_matches('w')
+            .parse()
+            .map_err(|_| Error::InvalidArgument { message: format!("--weights-family: bad index {name:?}") })?;
+        Ok::<_, Error>((i, numbers("--weights-family", values)?))
+    }) {
+        Some(Err(e)) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+        Some(Ok(f)) => Some(f),
+        None => None,
+    };
+    let mut sink: Vec<u8> = Vec::new();
+    let code = rational_batch(&rational, curve, &mut sink, |c, w| {
+        let opts = opts.clone()?;
+        let k = *count.borrow();
+        let color = PALETTE[k % PALETTE.len()];
+        match (w, &family) {
+            (Weights::Polynomial, None) => draw_curve(&mut fig.borrow_mut(), c, &opts, color)?,
+            (w, None) => draw_rational(&mut fig.borrow_mut(), &rational_curve(c, w)?, color, opts.polygon),
+            (w, Some((i, values))) => {
+                let base = rational_curve(c, w)?;
+                for (j, v) in values.iter().enumerate() {
+                    let member = base.with_weight(*i, v.clone())?;
+                    draw_rational(&mut fig.borrow_mut(), &member, PALETTE[j % PALETTE.len()], j == 0 && opts.polygon);
+                }
+            }
+        }
+        *count.borrow_mut() += 1;
+        Ok(Answer { text: String::new(), json: Value::Null, failed: false })
+    });
+    if code == 2 {
+        return 2;
+    }
+    let svg = fig.into_inner().to_svg(width);
+    match output {
+        Some(path) => {
+            if let Err(e) = std::fs::write(&path, svg) {
+                eprintln!("casteljau: cannot write {}: {e}", path.display());
+                return 2;
+            }
+        }
+        None => {
+            let _ = out.write_all(svg.as_bytes());
+        }
+    }
+    code
 }
 
 fn prove(

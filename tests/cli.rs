@@ -353,3 +353,20 @@ fn cli_surface_eval_subdivide_elevate_contour() {
     assert_eq!(run(&["surface", "eval", "--degree", "x", "--u", "0", "--v", "0", p], None).status.code(), Some(2));
     assert_eq!(run(&["surface", "subdivide", "--degree", "1,2", p], None).status.code(), Some(2));
 }
+
+#[test]
+fn cli_plot_and_gallery() {
+    let o = run(&["plot", "--polygon", "--features", "0 0, 1 1, 0 1, 1 0"], None);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).starts_with("<svg xmlns="));
+    let o = run(&["plot", "--weights", "1 1 1 1", "--weights-family", "w1=1,3,4", "-2 0, -1 3, 1 2, 2 0"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).matches("<polyline").count() >= 3);
+    assert_eq!(run(&["plot", "0 0, 1 x"], None).status.code(), Some(2));
+    assert_eq!(run(&["plot", "--weights-family", "q", "--weights", "1 1", "0 0, 1 1"], None).status.code(), Some(2));
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-gallery-{}", std::process::id()));
+    let o = run(&["gallery", dir.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(dir.join("index.html").exists());
+    std::fs::remove_dir_all(dir).unwrap();
+}
