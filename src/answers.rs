@@ -281,7 +281,8 @@ fn weighted_text(c: &RationalBezier<BigRational>) -> String {
 }
 
 pub(crate) fn eval_rational(c: &RationalBezier<BigRational>, ts: &[BigRational]) -> Result<(String, Value)> {
-    let values: Vec<Point<BigRational>> = ts.iter().map(|t| c.eval(t)).collect::<Result<_>>()?;
+    let eval = c.exact_evaluator();
+    let values: Vec<Point<BigRational>> = ts.iter().map(&eval).collect::<Result<_>>()?;
     let text = ts.iter().zip(&values).map(|(t, p)| format!("x({t}) = {p}")).collect::<Vec<_>>().join("\n");
     let js: Vec<Value> =
         ts.iter().zip(&values).map(|(t, p)| json!({"t": t.to_string(), "point": point_json(p)})).collect();

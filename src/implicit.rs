@@ -92,6 +92,7 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
     let vars = &NAMES[..dim];
     let d = total_degree(&f, vars)?;
     let bound = curve.degree() * d;
+    let eval = curve.exact_evaluator();
     let mut params = Vec::with_capacity(bound + 1);
     // parameters 0, 1, 1/2, 1/3, 2/3, … (denominators grow slowly), skipping poles of W
     let mut q = 1i64;
@@ -108,7 +109,7 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
                 });
             }
             let t = BigRational::new(p.into(), q.into());
-            let Ok(point) = curve.eval(&t) else { continue };
+            let Ok(point) = eval(&t) else { continue };
             let mut env: Env =
                 vars.iter().zip(&point.coords).map(|(n, v)| (n.to_string(), Rational(v.clone()))).collect();
             let value = f.eval(&mut env).map_err(|e| Error::InvalidArgument { message: format!("{e:?}") })?;

@@ -509,12 +509,9 @@ pub fn draw_rational(fig: &mut Figure, curve: &RationalBezier<BigRational>, colo
     let (cx, cy) = finite.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0, a.1 + p.1));
     let centre = (cx / finite.len().max(1) as f64, cy / finite.len().max(1) as f64);
     let far = 4.0 * size;
+    let exact = curve.exact_evaluator();
     let eval = |t: &BigRational| {
-        curve
-            .eval(t)
-            .ok()
-            .map(|p| f64_point(&p))
-            .filter(|p| (p.0 - centre.0).abs() < far && (p.1 - centre.1).abs() < far)
+        exact(t).ok().map(|p| f64_point(&p)).filter(|p| (p.0 - centre.0).abs() < far && (p.1 - centre.1).abs() < far)
     };
     let mut special = Vec::new();
     if let Some(roots) = curve.denominator_roots(&crate::scalar::rat(0), &crate::scalar::rat(1)) {

@@ -340,6 +340,17 @@ impl ConicType {
 }
 
 impl RationalBezier<BigRational> {
+    /// A fraction-free exact evaluator for repeated use: the homogeneous curve is brought over
+    /// one common denominator once, each call runs the integer Horner kernel of
+    /// [`crate::fraction_free`] and divides by `W(t)` at the end. Equal to [`Self::eval`].
+    ///
+    /// # Errors
+    /// The returned function gives [`Error::WeightsVanish`] where `W(t) = 0`.
+    pub fn exact_evaluator(&self) -> impl Fn(&BigRational) -> Result<Point<BigRational>> + '_ {
+        let ic = crate::fraction_free::IntegerCurve::new(&self.homogeneous);
+        move |t| crate::fraction_free::eval_integer(&ic, t).from_homogeneous().ok_or_else(|| vanish_at(t))
+    }
+
     /// Exact roots of the denominator `W(t) = Σ w_i B_i^n(t)` in `[a, b]` (`None`: `W ≡ 0`).
     pub fn denominator_roots(&self, a: &BigRational, b: &BigRational) -> Option<Vec<Root>> {
         isolate_in(&self.weights(), a, b)

@@ -292,3 +292,13 @@ fn menelaus_4_as_printed_fails_on_an_example() {
             .is_err()
     );
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// The fraction-free evaluator equals the closed form, including where it is undefined.
+    #[test]
+    fn rational_exact_evaluator_equals_closed_form(c in curve(), t in (-40i64..=80).prop_map(|k| ratio(k, 40))) {
+        prop_assert_eq!(c.exact_evaluator()(&t), c.eval(&t));
+    }
+}
