@@ -387,7 +387,13 @@ pub(crate) fn surface_eval(
     v: &BigRational,
 ) -> Result<(String, Value)> {
     let s = p.eval(u, v)?;
-    let agree = p.eval_u_then_v(u, v).ok() == Some(s.clone()) && p.eval_v_then_u(u, v).ok() == Some(s.clone());
+    // Both orders agree with the closed form homogeneously; where the affine recursion runs
+    // (no intermediate weight 0) its point must agree too. A recursion that cannot run is not
+    // a disagreement.
+    let h = p.eval_homogeneous(u, v);
+    let agree = [(p.eval_u_then_v(u, v), true), (p.eval_v_then_u(u, v), false)].into_iter().all(|(affine, u_first)| {
+        p.eval_homogeneous_de_casteljau(u, v, u_first) == h && affine.as_ref().ok().is_none_or(|x| *x == s)
+    });
     Ok((
         format!("S({u}, {v}) = {s}"),
         json!({"u": u.to_string(), "v": v.to_string(), "point": point_json(&s), "de_casteljau_u_then_v_and_v_then_u_agree": agree}),

@@ -21,43 +21,25 @@ use crate::scalar::{Rational, Scalar};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Pow, ToPrimitive};
+use num_traits::{CheckedAdd, CheckedMul, One, Pow, ToPrimitive};
 
-/// Integer arithmetic the kernels run on: exact (`BigInt`) or checked fixed width (`i128`).
-trait Int: Clone + Sized {
+/// Integers the kernels run on: exact (`BigInt`, whose checked operations never fail) or
+/// fixed width (`i128`); arithmetic is num-traits' [`CheckedAdd`]/[`CheckedMul`], so an
+/// overflow is a `None` that sends the work to `BigInt`. Only the conversions are ours.
+trait Int: Clone + CheckedAdd + CheckedMul + Into<BigInt> {
+    /// The value, when it fits.
     fn from_big(v: &BigInt) -> Option<Self>;
-    fn into_big(self) -> BigInt;
-    fn mul(&self, o: &Self) -> Option<Self>;
-    fn add(&self, o: &Self) -> Option<Self>;
 }
 
 impl Int for i128 {
     fn from_big(v: &BigInt) -> Option<Self> {
         v.to_i128()
     }
-    fn into_big(self) -> BigInt {
-        BigInt::from(self)
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        self.checked_mul(*o)
-    }
-    fn add(&self, o: &Self) -> Option<Self> {
-        self.checked_add(*o)
-    }
 }
 
 impl Int for BigInt {
     fn from_big(v: &BigInt) -> Option<Self> {
         Some(v.clone())
-    }
-    fn into_big(self) -> BigInt {
-        self
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        Some(self * o)
-    }
-    fn add(&self, o: &Self) -> Option<Self> {
-        Some(self + o)
     }
 }
 
@@ -123,7 +105,7 @@ fn horner<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<Vec<Bi
     let mut rpow = Vec::with_capacity(n + 1);
     rpow.push(I::from_big(&BigInt::one())?);
     for k in 1..=n {
-        rpow.push(rpow[k - 1].mul(&r)?);
+        rpow.push(rpow[k - 1].checked_mul(&r)?);
     }
     let mut binom = vec![BigInt::one(); n + 1];
     for i in 1..=n {
@@ -133,12 +115,12 @@ fn horner<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<Vec<Bi
     let nums: Vec<I> = curve.numerators.iter().map(I::from_big).collect::<Option<_>>()?;
     let mut out = Vec::with_capacity(dim);
     for c in 0..dim {
-        let mut s = binom[n].mul(&nums[n * dim + c])?;
+        let mut s = binom[n].checked_mul(&nums[n * dim + c])?;
         for i in (0..n).rev() {
-            let a = binom[i].mul(&nums[i * dim + c])?;
-            s = s.mul(&pi)?.add(&a.mul(&rpow[n - i])?)?;
+            let a = binom[i].checked_mul(&nums[i * dim + c])?;
+            s = s.checked_mul(&pi)?.checked_add(&a.checked_mul(&rpow[n - i])?)?;
         }
-        out.push(s.into_big());
+        out.push(s.into());
     }
     Some(out)
 }
@@ -201,9 +183,10 @@ fn integer_rows<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<
     let mut row: Vec<I> = curve.numerators.iter().map(I::from_big).collect::<Option<_>>()?;
     let mut rows = vec![curve.numerators.clone()];
     for _ in 1..=n {
-        let next: Vec<I> =
-            (0..row.len() - dim).map(|k| row[k].mul(&r)?.add(&row[k + dim].mul(&pi)?)).collect::<Option<_>>()?;
-        rows.push(next.iter().cloned().map(I::into_big).collect());
+        let next: Vec<I> = (0..row.len() - dim)
+            .map(|k| row[k].checked_mul(&r)?.checked_add(&row[k + dim].checked_mul(&pi)?))
+            .collect::<Option<_>>()?;
+        rows.push(next.iter().cloned().map(Into::into).collect());
         row = next;
     }
     Some(rows)

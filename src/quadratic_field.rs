@@ -7,12 +7,15 @@
 //! # Invariants
 //! * `d` is not a square in `K` and is positive (so the extension is a real field and
 //!   [`Exact::sign`] is meaningful). [`QuadraticExt::sqrt`] checks squareness for `K = Q`.
-//! * Canonical form: when `b = 0` the radicand is stored as `0`, so that `==` is numeric
-//!   equality. Elements with `b ≠ 0` of different radicands never meet in one operation.
+//! * Canonical form: when `b = 0` the radicand is stored as `0`. One number may still be
+//!   spelled with different radicands (`1009·√2 = √(2·1009²)`): `==` is numeric equality
+//!   whatever the spelling (`a₁ = a₂`, `b₁²d₁ = b₂²d₂` and `b₁, b₂` of one sign), and
+//!   arithmetic brings two radicands whose quotient is a square in `K` onto one, whatever the
+//!   size of their square factors.
 //!
 //! # Panics
-//! **Arithmetic between two irrational elements with different radicands panics** (they live
-//! in different fields); so does division by zero.
+//! **Arithmetic between two irrational elements of different fields panics** (radicands whose
+//! quotient is not a square in `K`: `√2 + √3` is not in any `K(√d)`); so does division by zero.
 
 use crate::scalar::{Exact, Scalar, rat};
 use num_bigint::BigInt;
@@ -35,7 +38,7 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// assert_eq!((x.clone() * x.clone()).to_string(), "1 + 1/2*sqrt(3)");
 /// assert_eq!((x - QuadraticExt::from_i64(2)).sign(), std::cmp::Ordering::Less);
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Debug)]
 pub struct QuadraticExt<K> {
     a: K,
     b: K,
@@ -87,15 +90,43 @@ impl<K: Exact> QuadraticExt<K> {
         }
     }
 
-    fn common_radicand(&self, other: &Self) -> K {
+    /// `other` written over `self`'s radicand (or `self`'s over `other`'s when `self` is in
+    /// `K`): returns `(d, b_self, b_other)` with both elements `a + b√d` for one `d`.
+    ///
+    /// # Panics
+    /// **Panics when both are irrational and `other.d / self.d` is not a square in `K`.**
+    fn aligned(&self, other: &Self) -> (K, K, K) {
         match (self.b.is_zero(), other.b.is_zero()) {
-            (true, _) => other.d.clone(),
-            (_, true) => self.d.clone(),
+            (true, _) => (other.d.clone(), K::zero(), other.b.clone()),
+            (_, true) => (self.d.clone(), self.b.clone(), K::zero()),
+            _ if self.d == other.d => (self.d.clone(), self.b.clone(), other.b.clone()),
             _ => {
-                assert!(self.d == other.d, "QuadraticExt: radicands {} and {} differ", self.d, other.d);
-                self.d.clone()
+                // b₂√d₂ = b₂·r·√d₁ with r = √(d₂/d₁) ∈ K.
+                let r = (other.d.clone() / &self.d).exact_sqrt().unwrap_or_else(|| {
+                    panic!("QuadraticExt: sqrt({}) and sqrt({}) lie in different fields", self.d, other.d)
+                });
+                (self.d.clone(), self.b.clone(), other.b.clone() * &r)
             }
         }
+    }
+}
+
+impl<K: Exact> PartialEq for QuadraticExt<K> {
+    /// Numeric equality: `a₁ + b₁√d₁ = a₂ + b₂√d₂` iff `a₁ = a₂`, `b₁²d₁ = b₂²d₂` and
+    /// `b₁`, `b₂` have one sign (`1`, `√d₁`, `√d₂` are independent over `K` unless `d₂/d₁` is a
+    /// square).
+    fn eq(&self, o: &Self) -> bool {
+        self.a == o.a && self.b.sign() == o.b.sign() && self.b.clone() * &self.b * &self.d == o.b.clone() * &o.b * &o.d
+    }
+}
+
+impl<K: Exact> Eq for QuadraticExt<K> {}
+
+impl<K: Exact + std::hash::Hash> std::hash::Hash for QuadraticExt<K> {
+    /// Hashes `a` and `b²d`, which equal numbers share.
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.a.hash(state);
+        (self.b.clone() * &self.b * &self.d).hash(state);
     }
 }
 
@@ -131,20 +162,8 @@ impl QuadraticExt<BigRational> {
     }
 }
 
-/// The exact square root of a non-negative rational, when it is rational.
-pub fn rational_sqrt(d: &BigRational) -> Option<BigRational> {
-    if d.is_negative() {
-        return None;
-    }
-    let n = int_sqrt(d.numer())?;
-    let m = int_sqrt(d.denom())?;
-    Some(BigRational::new(n, m))
-}
-
-fn int_sqrt(n: &BigInt) -> Option<BigInt> {
-    let r = n.sqrt();
-    (&r * &r == *n).then_some(r)
-}
+use crate::scalar::integer_sqrt as int_sqrt;
+pub use crate::scalar::rational_sqrt;
 
 impl<K: Exact> Scalar for QuadraticExt<K> {
     fn zero() -> Self {
@@ -184,6 +203,35 @@ impl<K: Exact> Exact for QuadraticExt<K> {
             Ordering::Less => sb,
             Ordering::Equal => Ordering::Equal,
         }
+    }
+
+    /// `√(a + b√d)` in `K(√d)`: for `b = 0`, `√a ∈ K` or `√(a/d)·√d`; otherwise
+    /// `(x + y√d)² = a + b√d` needs `x² = (a ± √(a² − b²d))/2` in `K` and `y = b/(2x)`.
+    fn exact_sqrt(&self) -> Option<Self> {
+        if self.sign() == Ordering::Less {
+            return None;
+        }
+        if self.b.is_zero() {
+            if let Some(r) = self.a.exact_sqrt() {
+                return Some(QuadraticExt::from_base(r));
+            }
+            if self.d.is_zero() {
+                return None;
+            }
+            let y = (self.a.clone() / &self.d).exact_sqrt()?;
+            return Some(QuadraticExt::new_unchecked(K::zero(), y, self.d.clone()));
+        }
+        let s = self.norm().exact_sqrt()?;
+        let two = K::from_i64(2);
+        for x2 in [(self.a.clone() + &s) / &two, (self.a.clone() - &s) / &two] {
+            if let Some(x) = x2.exact_sqrt().filter(|x| !x.is_zero()) {
+                let y = self.b.clone() / &(two.clone() * &x);
+                let r = QuadraticExt::new_unchecked(x, y, self.d.clone());
+                // of the two roots ±r, the non-negative one
+                return Some(if r.sign() == Ordering::Less { -r } else { r });
+            }
+        }
+        None
     }
 }
 
@@ -228,16 +276,16 @@ impl<K: Exact> Neg for QuadraticExt<K> {
 impl<K: Exact> Add<&QuadraticExt<K>> for QuadraticExt<K> {
     type Output = Self;
     fn add(self, o: &Self) -> Self {
-        let d = self.common_radicand(o);
-        QuadraticExt::new_unchecked(self.a + &o.a, self.b + &o.b, d)
+        let (d, bs, bo) = self.aligned(o);
+        QuadraticExt::new_unchecked(self.a + &o.a, bs + &bo, d)
     }
 }
 
 impl<K: Exact> Sub<&QuadraticExt<K>> for QuadraticExt<K> {
     type Output = Self;
     fn sub(self, o: &Self) -> Self {
-        let d = self.common_radicand(o);
-        QuadraticExt::new_unchecked(self.a - &o.a, self.b - &o.b, d)
+        let (d, bs, bo) = self.aligned(o);
+        QuadraticExt::new_unchecked(self.a - &o.a, bs - &bo, d)
     }
 }
 
@@ -245,9 +293,9 @@ impl<K: Exact> Mul<&QuadraticExt<K>> for QuadraticExt<K> {
     type Output = Self;
     /// `(a + b√d)(c + e√d) = (ac + be·d) + (ae + bc)√d`.
     fn mul(self, o: &Self) -> Self {
-        let d = self.common_radicand(o);
-        let a = self.a.clone() * &o.a + self.b.clone() * &o.b * &d;
-        let b = self.a * &o.b + self.b * &o.a;
+        let (d, bs, bo) = self.aligned(o);
+        let a = self.a.clone() * &o.a + bs.clone() * &bo * &d;
+        let b = self.a * &bo + bs * &o.a;
         QuadraticExt::new_unchecked(a, b, d)
     }
 }

@@ -6,6 +6,15 @@
 //! interval and has the same parity (Descartes' rule for the Bernstein basis): `V = 0` means no
 //! root, `V = 1` exactly one. Roots that fall exactly on a split point or an end are reported
 //! exactly. Nothing is rounded.
+//!
+//! # Termination
+//! There is no depth limit. For a square-free polynomial, Vincent's theorem (in the Bernstein
+//! form of Collins–Akritas) guarantees that once an interval is narrower than a fixed
+//! fraction of the distance between distinct complex roots, its coefficients show `V ≤ 1`
+//! sign changes, so the subdivision stops. The depth reached is about
+//! `log₂(1 / root separation)`, which the Mahler–Mignotte bound limits by `O(n·(τ + log n))`
+//! bits for degree `n` and `τ`-bit coefficients. The work list is explicit (no recursion), so
+//! deep subdivisions cannot overflow the stack.
 
 use crate::bernstein::{from_power, to_power};
 use crate::bezier::BezierCurve;
@@ -20,7 +29,8 @@ use std::fmt;
 pub enum Root {
     /// The root itself.
     Exact(BigRational),
-    /// An open interval `(a, b)` containing exactly one (simple) root.
+    /// An open interval `(a, b)` containing exactly one root, a simple root of the square-free
+    /// part (certified by one sign change of the Bernstein coefficients; never a guess).
     Isolated(BigRational, BigRational),
 }
 
@@ -32,10 +42,6 @@ impl fmt::Display for Root {
         }
     }
 }
-
-/// Largest subdivision depth (each level halves the interval; 2⁻²⁰⁰ separates any roots of
-/// the polynomials this crate meets).
-pub const MAX_ISOLATION_DEPTH: usize = 200;
 
 /// Remainder of `a` divided by `b` (power form, lowest degree first; `b` without trailing zeros).
 pub(crate) fn poly_rem(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
@@ -140,31 +146,49 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
     if bern[0].is_zero() {
         out.push(Root::Exact(rat(0)));
     }
-    split(&bern, rat(0), rat(1), 0, &mut out);
+    split(bern.clone(), rat(0), rat(1), &mut out);
     if bern.last().expect("coefficients").is_zero() {
         out.push(Root::Exact(rat(1)));
     }
     Some(out)
 }
 
-/// Roots in the open interval `(a, b)`, coefficients on `[a, b]`.
-fn split(c: &[BigRational], a: BigRational, b: BigRational, depth: usize, out: &mut Vec<Root>) {
-    match sign_changes(c) {
-        0 => {}
-        1 if !c[0].is_zero() && !c[c.len() - 1].is_zero() => out.push(Root::Isolated(a, b)),
-        _ if depth >= MAX_ISOLATION_DEPTH => out.push(Root::Isolated(a, b)),
-        _ => {
-            let curve =
-                BezierCurve::new(c.iter().map(|v| Point::new(vec![v.clone()])).collect()).expect("coefficients");
-            let (l, r) = crate::fraction_free::subdivide(&curve, &BigRational::new(1.into(), 2.into()));
-            let m = (a.clone() + &b) / rat(2);
-            let lc: Vec<BigRational> = l.points().iter().map(|p| p.coords[0].clone()).collect();
-            let rc: Vec<BigRational> = r.points().iter().map(|p| p.coords[0].clone()).collect();
-            split(&lc, a, m.clone(), depth + 1, out);
-            if rc[0].is_zero() {
-                out.push(Root::Exact(m.clone()));
+/// Roots in the open interval `(a, b)` of a square-free polynomial with Bernstein coefficients
+/// `c` on `[a, b]`, ascending. `V` sign changes bound the roots in `(a, b)` with the same
+/// parity (Descartes' rule; zero coefficients are skipped), so `V = 1` certifies exactly one.
+/// Terminates by Vincent's theorem (module docs); the pending pieces are kept on an explicit
+/// stack, right halves below left ones, so roots come out in order.
+fn split(c: Vec<BigRational>, a: BigRational, b: BigRational, out: &mut Vec<Root>) {
+    enum Task {
+        Piece(Vec<BigRational>, BigRational, BigRational),
+        Exact(BigRational),
+    }
+    let half = BigRational::new(1.into(), 2.into());
+    let mut stack = vec![Task::Piece(c, a, b)];
+    while let Some(task) = stack.pop() {
+        let (c, a, b) = match task {
+            Task::Exact(m) => {
+                out.push(Root::Exact(m));
+                continue;
             }
-            split(&rc, m, b, depth + 1, out);
+            Task::Piece(c, a, b) => (c, a, b),
+        };
+        match sign_changes(&c) {
+            0 => {}
+            1 => out.push(Root::Isolated(a, b)),
+            _ => {
+                let curve =
+                    BezierCurve::new(c.iter().map(|v| Point::new(vec![v.clone()])).collect()).expect("coefficients");
+                let (l, r) = crate::fraction_free::subdivide(&curve, &half);
+                let m = (a.clone() + &b) / rat(2);
+                let lc: Vec<BigRational> = l.points().iter().map(|p| p.coords[0].clone()).collect();
+                let rc: Vec<BigRational> = r.points().iter().map(|p| p.coords[0].clone()).collect();
+                stack.push(Task::Piece(rc.clone(), m.clone(), b));
+                if rc[0].is_zero() {
+                    stack.push(Task::Exact(m.clone()));
+                }
+                stack.push(Task::Piece(lc, a, m));
+            }
         }
     }
 }

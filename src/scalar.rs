@@ -71,6 +71,12 @@ pub trait Scalar:
 pub trait Exact: Scalar + Eq {
     /// The exact sign: `Less` for negative, `Equal` for zero, `Greater` for positive.
     fn sign(&self) -> Ordering;
+    /// The non-negative square root of `self` when it lies in this field, else `None`.
+    ///
+    /// # Laws
+    /// `x.exact_sqrt() == Some(r)` implies `r ≥ 0` and `r·r == x`; `None` exactly when `x` is
+    /// negative or not a square in the field.
+    fn exact_sqrt(&self) -> Option<Self>;
 }
 
 impl Scalar for f64 {
@@ -125,25 +131,49 @@ impl Exact for BigRational {
             Ordering::Greater
         }
     }
+    fn exact_sqrt(&self) -> Option<Self> {
+        rational_sqrt(self)
+    }
 }
 
-/// Nearest-ish `f64` of an exact ratio, also for numerators and denominators beyond `f64` range.
-pub fn ratio_to_f64(r: &BigRational) -> f64 {
-    if let (Some(n), Some(d)) = (r.numer().to_f64(), r.denom().to_f64())
-        && n.is_finite()
-        && d.is_finite()
-    {
-        return n / d;
+/// The exact square root of a non-negative rational, when it is rational.
+///
+/// # Example
+/// ```
+/// use casteljau::{ratio, scalar::rational_sqrt};
+/// assert_eq!(rational_sqrt(&ratio(9, 4)), Some(ratio(3, 2)));
+/// assert_eq!(rational_sqrt(&ratio(2, 1)), None);
+/// ```
+pub fn rational_sqrt(d: &BigRational) -> Option<BigRational> {
+    if Signed::is_negative(d) {
+        return None;
     }
-    // Scale both to ~64 significant bits first so that huge operands do not overflow.
-    let nb = r.numer().bits() as i64;
-    let db = r.denom().bits() as i64;
-    let shift_n = (nb - 64).max(0);
-    let shift_d = (db - 64).max(0);
-    let n = (r.numer() >> shift_n as usize).to_f64().unwrap_or(0.0);
-    let d = (r.denom() >> shift_d as usize).to_f64().unwrap_or(1.0);
-    let e = (shift_n - shift_d).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
-    n / d * 2f64.powi(e)
+    let n = integer_sqrt(d.numer())?;
+    let m = integer_sqrt(d.denom())?;
+    Some(BigRational::new(n, m))
+}
+
+/// The exact square root of a non-negative integer, when it is an integer.
+pub fn integer_sqrt(n: &BigInt) -> Option<BigInt> {
+    if Signed::is_negative(n) {
+        return None;
+    }
+    let r = n.sqrt();
+    (&r * &r == *n).then_some(r)
+}
+
+/// The `f64` nearest to an exact ratio (round half to even, as IEEE-754 division): num-rational's
+/// correctly rounded conversion, also for numerators and denominators beyond `f64` range
+/// (`±inf` past `f64::MAX`, subnormals and `±0` below the smallest normal).
+///
+/// # Example
+/// ```
+/// use casteljau::{ratio, scalar::ratio_to_f64};
+/// assert_eq!(ratio_to_f64(&ratio(1, 10)), 0.1);
+/// assert_eq!(ratio_to_f64(&ratio(1, 3)), 1.0 / 3.0);
+/// ```
+pub fn ratio_to_f64(r: &BigRational) -> f64 {
+    ToPrimitive::to_f64(r).expect("num-rational converts every ratio to f64")
 }
 
 /// The integer `n` as a [`BigRational`].
@@ -220,6 +250,9 @@ impl Scalar for Rational {
 impl Exact for Rational {
     fn sign(&self) -> Ordering {
         self.0.sign()
+    }
+    fn exact_sqrt(&self) -> Option<Self> {
+        rational_sqrt(&self.0).map(Rational)
     }
 }
 

@@ -106,6 +106,38 @@ impl RationalPatch {
         acc
     }
 
+    /// The homogeneous point of `S(u, v)` by de Casteljau's scheme on the homogeneous net, in
+    /// `u` on every column, then in `v` (`u_first`), or in `v` on every row, then in `u`.
+    ///
+    /// Linear in the net, so it equals [`Self::eval_homogeneous`] exactly, also where an
+    /// intermediate weight of the affine recursion ([`Self::eval_u_then_v`]) is 0.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // weights 1, −1, 1, 1: the affine recursion meets the weight 0 at u = 1/2
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1)]],
+    ///     vec![vec![rat(1), rat(-1)], vec![rat(1), rat(1)]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 2), ratio(1, 2));
+    /// assert!(s.eval_u_then_v(&u, &v).is_err());
+    /// assert_eq!(s.eval_homogeneous_de_casteljau(&u, &v, true), s.eval_homogeneous(&u, &v));
+    /// assert_eq!(s.eval_homogeneous_de_casteljau(&u, &v, false), s.eval_homogeneous(&u, &v));
+    /// ```
+    pub fn eval_homogeneous_de_casteljau(&self, u: &BigRational, v: &BigRational, u_first: bool) -> Point<BigRational> {
+        let line = |pts: Vec<Point<BigRational>>, t: &BigRational| {
+            crate::bezier::BezierCurve::new(pts).expect("patch rows and columns are valid curves").eval(t)
+        };
+        let (m, n) = self.degree();
+        if u_first {
+            line((0..=n).map(|j| line(self.column(j), u)).collect(), v)
+        } else {
+            line((0..=m).map(|i| line(self.rows[i].clone(), v)).collect(), u)
+        }
+    }
+
     /// `S(u, v)` by the closed form (41).
     ///
     /// # Errors
