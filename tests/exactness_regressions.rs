@@ -172,7 +172,7 @@ proptest! {
             for g in [f.next_up(), f.next_down()] {
                 if g.is_finite() {
                     let other = (exact(g) - &r).abs();
-                    prop_assert!(err < other || (err == other && f.to_bits() % 2 == 0), "{} -> {}", r, f);
+                    prop_assert!(err < other || (err == other && f.to_bits().is_multiple_of(2)), "{} -> {}", r, f);
                 }
             }
         } else if f == 0.0 {
