@@ -2,7 +2,7 @@
 //! classifier, the exact path (unchecked i128 under a proved bound → checked i128 → BigInt) and the full BigRational
 //! classifier, in one run. `cargo bench --bench classify`.
 
-use casteljau::certified::{decide, summarize_integers};
+use casteljau::classify::certified::{decide, summarize_integers};
 use casteljau::classify::classify;
 use casteljau::{BezierCurve, Point, rat};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -60,7 +60,10 @@ fn classify_batch(c: &mut Criterion) {
     });
     g.bench_function("certified_f64_filter", |b| {
         b.iter(|| {
-            floats.iter().map(|p| casteljau::certified::filter_f64(black_box(p)).map(|s| s.0)).collect::<Vec<_>>()
+            floats
+                .iter()
+                .map(|p| casteljau::classify::certified::filter_f64(black_box(p)).map(|s| s.0))
+                .collect::<Vec<_>>()
         })
     });
     g.bench_function("naive_bigrational_classify", |b| {

@@ -2,7 +2,7 @@
 //!
 //! `cargo bench --bench kernels`; README's table is read from this run's output.
 
-use casteljau::{BezierCurve, Point, Scalar, bernstein, fraction_free, ratio};
+use casteljau::{BezierCurve, Point, Scalar, bernstein, curve::fraction_free, ratio};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
 use std::hint::black_box;
@@ -54,7 +54,7 @@ fn subdivide(c: &mut Criterion) {
             b.iter(|| fraction_free::subdivide(black_box(&exact), black_box(&t)))
         });
         g.bench_with_input(BenchmarkId::new("naive_bigrational", n), &(), |b, _| {
-            b.iter(|| casteljau::casteljau::subdivide(black_box(&exact), black_box(&t)))
+            b.iter(|| casteljau::curve::casteljau::subdivide(black_box(&exact), black_box(&t)))
         });
     }
     g.finish();

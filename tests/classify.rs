@@ -2,9 +2,9 @@
 //! check every exact answer independently (P(t1) = P(t2) in Q(√d), P'(cusp) = 0,
 //! P'×P'' = 0 at inflections) and against the seed's moving lines and Loop–Blinn.
 
+use casteljau::classify::moving_line::MovingLines;
 use casteljau::classify::{CurveClass, NodeType, Parameter, SegmentCategory, classify, loop_blinn};
-use casteljau::moving_line::MovingLines;
-use casteljau::parse::parse_points;
+use casteljau::num::parse::parse_points;
 use casteljau::{BezierCurve, Point, QuadraticExt, Scalar, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -274,7 +274,7 @@ proptest! {
     /// printed (9) and (12) fail on every crunode and cusp (their F, G coincide with D).
     #[test]
     fn canonical_map_corrected_proves_and_printed_9_12_fail(c in cubic()) {
-        use casteljau::canonical::{Formulas, canonical_map};
+        use casteljau::classify::canonical::{Formulas, canonical_map};
         let k = classify(&c).unwrap();
         let Some(node) = k.node_type else { return Ok(()) };
         let fixed = canonical_map(&c, Formulas::Corrected).unwrap();
@@ -289,7 +289,7 @@ proptest! {
 
 #[test]
 fn canonical_map_for_constructed_cusps_and_acnodes() {
-    use casteljau::canonical::{Formulas, canonical_map};
+    use casteljau::classify::canonical::{Formulas, canonical_map};
     for tau in [ratio(0, 1), ratio(1, 3), ratio(1, 1)] {
         let c = cusp_at(tau);
         assert!(canonical_map(&c, Formulas::Corrected).unwrap().prove(&c).is_ok());
@@ -305,7 +305,7 @@ fn int_cubic() -> impl Strategy<Value = [[i64; 2]; 4]> {
 fn to_curve(p: &[[i64; 2]; 4]) -> BezierCurve<BigRational> {
     BezierCurve::new(p.iter().map(|q| Point::new(vec![rat(q[0]), rat(q[1])])).collect()).unwrap()
 }
-fn exact_summary(c: &BezierCurve<BigRational>) -> casteljau::certified::Summary {
+fn exact_summary(c: &BezierCurve<BigRational>) -> casteljau::classify::certified::Summary {
     let k = classify(c).unwrap();
     (k.class, k.segment)
 }
@@ -315,7 +315,7 @@ proptest! {
 
     #[test]
     fn certified_summary_equals_exact_classification(c in cubic()) {
-        prop_assert_eq!(casteljau::certified::summarize(&c), exact_summary(&c));
+        prop_assert_eq!(casteljau::classify::certified::summarize(&c), exact_summary(&c));
     }
 
     #[test]
@@ -324,10 +324,10 @@ proptest! {
         let p = if pick == 0 { small } else { p };
         let c = to_curve(&p);
         let f = p.map(|q| q.map(|v| v as f64));
-        if let Some(s) = casteljau::certified::filter_f64(&f) {
+        if let Some(s) = casteljau::classify::certified::filter_f64(&f) {
             prop_assert_eq!(s, exact_summary(&c));
         }
-        prop_assert_eq!(casteljau::certified::decide(&p.map(|q| q.map(|v| v as i128))).unwrap(), exact_summary(&c));
+        prop_assert_eq!(casteljau::classify::certified::decide(&p.map(|q| q.map(|v| v as i128))).unwrap(), exact_summary(&c));
     }
 }
 
@@ -350,7 +350,7 @@ fn certified_summary_on_constructed_edge_cases() {
         cases.push(curve(&format!("0 0, 1 {}, 0 1, 1 0", rat(1) + eps)));
     }
     for c in &cases {
-        assert_eq!(casteljau::certified::summarize(c), exact_summary(c), "{c}");
+        assert_eq!(casteljau::classify::certified::summarize(c), exact_summary(c), "{c}");
     }
     // near a cusp the filter either certifies the true answer for its exact f64 input, or abstains
     let y = 1.0 + 1e-15;
@@ -365,7 +365,7 @@ fn certified_summary_on_constructed_edge_cases() {
     .unwrap();
     let truth = exact_summary(&exact_curve);
     assert_ne!(truth.0, CurveClass::Cubic(NodeType::Cusp));
-    if let Some(s) = casteljau::certified::filter_f64(&near) {
+    if let Some(s) = casteljau::classify::certified::filter_f64(&near) {
         assert_eq!(s, truth);
     }
 }
@@ -376,8 +376,8 @@ proptest! {
     /// At the edge of the SmallInt bound (|coordinates| just below 2²⁴) nothing overflows.
     #[test]
     fn certified_small_int_limit_is_safe(p in prop::array::uniform4(prop::array::uniform2(prop_oneof![Just((1i64 << 24) - 1), Just(-(1i64 << 24) + 1), -(1i64 << 24) + 1..(1i64 << 24)]))) {
-        prop_assert_eq!(casteljau::certified::summarize_integers(&p), exact_summary(&to_curve(&p)));
-        prop_assert_eq!(casteljau::certified::decide(&p.map(|q| q.map(num_bigint::BigInt::from))).unwrap(), exact_summary(&to_curve(&p)));
+        prop_assert_eq!(casteljau::classify::certified::summarize_integers(&p), exact_summary(&to_curve(&p)));
+        prop_assert_eq!(casteljau::classify::certified::decide(&p.map(|q| q.map(num_bigint::BigInt::from))).unwrap(), exact_summary(&to_curve(&p)));
     }
 }
 
@@ -387,7 +387,7 @@ proptest! {
     /// Float inputs (any binary64 values, including near-degenerate ones) are classified exactly.
     #[test]
     fn certified_summarize_f64_equals_exact_on_the_binary_values(p in prop::array::uniform4(prop::array::uniform2(prop_oneof![-1e3f64..1e3, (-4i32..=4).prop_map(|v| v as f64), Just(0.1f64), Just(1.0 + f64::EPSILON)]))) {
-        let s = casteljau::certified::summarize_f64(&p).unwrap();
+        let s = casteljau::classify::certified::summarize_f64(&p).unwrap();
         let c = BezierCurve::new(p.iter().map(|q| Point::new(q.iter().map(|&v| BigRational::from_float(v).unwrap()).collect())).collect()).unwrap();
         prop_assert_eq!(s, exact_summary(&c));
     }

@@ -1,10 +1,10 @@
 //! Identity (8) of seed 001, B_j^n(st) = Σ_{r=j}^n B_j^r(s) B_r^n(t), proved for every n ≤ 40
 //! and every j by the grid prover; a wrong variant is refuted with an exact counterexample.
 
-use casteljau::bernstein::bernstein;
-use casteljau::bernstein::identity_8;
+use casteljau::num::scalar::{Rational, Scalar};
+use casteljau::poly::bernstein::bernstein;
+use casteljau::poly::bernstein::identity_8;
 use casteljau::proof::{self, GridProver};
-use casteljau::scalar::{Rational, Scalar};
 
 #[test]
 fn identity_8_proved_for_all_n_up_to_40_and_all_j() {

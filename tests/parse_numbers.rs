@@ -1,6 +1,6 @@
 //! Exact numbers from text: accepted forms and their exact values, rejected forms with reasons.
 
-use casteljau::parse::parse_number;
+use casteljau::num::parse::parse_number;
 use casteljau::{Error, Position};
 
 #[test]

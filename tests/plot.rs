@@ -1,9 +1,9 @@
 //! Figures rendered with a real SVG renderer (resvg / tiny-skia), asserting on pixels.
 
-use casteljau::parse::parse_points;
+use casteljau::num::parse::parse_points;
+use casteljau::num::scalar::ratio_to_f64;
 use casteljau::plot::{CurveOptions, Figure, draw_curve, draw_rational};
-use casteljau::rational_bezier::RationalBezier;
-use casteljau::scalar::ratio_to_f64;
+use casteljau::rational::rational_bezier::RationalBezier;
 use casteljau::{BezierCurve, rat};
 use resvg::{tiny_skia, usvg};
 
@@ -56,7 +56,7 @@ fn plot_curve_passes_through_its_exact_endpoints() {
         assert!(inked_near(&pix, at, 1), "no ink at the endpoint pixel {at:?}");
     }
     // and through an exact interior point
-    let m = casteljau::fraction_free::eval(&c, &casteljau::ratio(1, 3));
+    let m = casteljau::curve::fraction_free::eval(&c, &casteljau::ratio(1, 3));
     assert!(inked_near(&pix, fig.to_pixel(ratio_to_f64(&m.coords[0]), ratio_to_f64(&m.coords[1]), W), 1));
     assert!(border_is_blank(&pix));
 }
@@ -126,7 +126,7 @@ fn plot_svg_is_deterministic() {
 #[test]
 fn gallery_writes_every_figure_parsable_with_index() {
     let dir = std::env::temp_dir().join(format!("casteljau-gallery-{}", std::process::id()));
-    let files = casteljau::gallery::write(&dir).unwrap();
+    let files = casteljau::plot::gallery::write(&dir).unwrap();
     assert!(files.len() >= 19, "{files:?}");
     let index = std::fs::read_to_string(dir.join("index.html")).unwrap();
     for f in files.iter().filter(|f| f.ends_with(".svg")) {
@@ -145,7 +145,7 @@ fn gallery_writes_every_figure_parsable_with_index() {
     }
     // deterministic: writing again gives the same bytes
     let again = std::env::temp_dir().join(format!("casteljau-gallery-again-{}", std::process::id()));
-    casteljau::gallery::write(&again).unwrap();
+    casteljau::plot::gallery::write(&again).unwrap();
     for f in &files {
         assert_eq!(std::fs::read(dir.join(f)).unwrap(), std::fs::read(again.join(f)).unwrap(), "{f}");
     }
@@ -156,11 +156,11 @@ fn gallery_writes_every_figure_parsable_with_index() {
 #[test]
 fn gallery_checked_in_docs_are_current() {
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/gallery");
-    for e in casteljau::gallery::entries() {
+    for e in casteljau::plot::gallery::entries() {
         let file = docs.join(format!("{}.svg", e.name));
         let current = std::fs::read_to_string(&file).unwrap_or_default();
         assert!(
-            current == e.figure.to_svg(casteljau::gallery::WIDTH),
+            current == e.figure.to_svg(casteljau::plot::gallery::WIDTH),
             "{} is stale: run `cargo run --release -- gallery docs/gallery`",
             file.display()
         );

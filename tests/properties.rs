@@ -1,10 +1,10 @@
 //! Properties with exact `==`: independent routes to the same answer must agree.
 
-use casteljau::bernstein::binomial;
-use casteljau::casteljau::{subdivide, triangle};
-use casteljau::parse::{parse_number, parse_points};
-use casteljau::scalar::{Rational, ratio_to_f64};
-use casteljau::{BezierCurve, Exact, Point, QuadraticExt, Scalar, fraction_free, rat};
+use casteljau::curve::casteljau::{subdivide, triangle};
+use casteljau::num::parse::{parse_number, parse_points};
+use casteljau::num::scalar::{Rational, ratio_to_f64};
+use casteljau::poly::bernstein::binomial;
+use casteljau::{BezierCurve, Exact, Point, QuadraticExt, Scalar, curve::fraction_free, rat};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -67,7 +67,7 @@ proptest! {
     fn repeated_subdivision_fraction_free_equals_naive(c in curve(), t0 in parameter(), depth in 0u32..=3) {
         prop_assert_eq!(
             fraction_free::subdivide_repeatedly(&c, &t0, depth).unwrap(),
-            casteljau::casteljau::subdivide_repeatedly(&c, &t0, depth).unwrap()
+            casteljau::curve::casteljau::subdivide_repeatedly(&c, &t0, depth).unwrap()
         );
     }
 
@@ -100,7 +100,7 @@ proptest! {
         let d = c.derivative(1);
         let coeffs = c.power_coefficients();
         let dc: Vec<Point<BigRational>> = coeffs.iter().enumerate().skip(1).map(|(k, p)| p.scale(&rat(k as i64))).collect();
-        let expected = if dc.is_empty() { Point::origin(c.dim()) } else { casteljau::bernstein::eval_power(&dc, &t) };
+        let expected = if dc.is_empty() { Point::origin(c.dim()) } else { casteljau::poly::bernstein::eval_power(&dc, &t) };
         prop_assert_eq!(d.eval(&t), expected);
         // second derivative is the derivative of the derivative
         prop_assert_eq!(c.derivative(2).eval(&t), d.derivative(1).eval(&t));
@@ -145,7 +145,7 @@ proptest! {
 
     #[test]
     fn quadratic_extension_field_laws(a in small_rational(), b in small_rational(), c in small_rational(), e in small_rational(), d in 2i64..30) {
-        prop_assume!(casteljau::quadratic_field::rational_sqrt(&rat(d)).is_none());
+        prop_assume!(casteljau::num::quadratic_field::rational_sqrt(&rat(d)).is_none());
         let x = QuadraticExt::new(a.clone(), b.clone(), rat(d));
         let y = QuadraticExt::new(c, e, rat(d));
         prop_assert_eq!(x.clone() * &y, y.clone() * &x);
@@ -162,13 +162,16 @@ proptest! {
 fn bernstein_partition_of_unity_and_binomial_symmetry() {
     for n in 0..30 {
         let t = BigRational::new(7.into(), 19.into());
-        let s = casteljau::bernstein::bernstein_all(n, &t).into_iter().fold(rat(0), |a, b| a + b);
+        let s = casteljau::poly::bernstein::bernstein_all(n, &t).into_iter().fold(rat(0), |a, b| a + b);
         assert_eq!(s, rat(1));
         for k in 0..=n {
             assert_eq!(binomial(n, k), binomial(n, n - k));
         }
     }
-    assert_eq!(casteljau::bernstein::binomial_row::<BigRational>(70)[35], BigRational::from_integer(binomial(70, 35)));
+    assert_eq!(
+        casteljau::poly::bernstein::binomial_row::<BigRational>(70)[35],
+        BigRational::from_integer(binomial(70, 35))
+    );
 }
 
 #[test]

@@ -1,10 +1,10 @@
 //! Every example of seeds 001 and 003 reproduced exactly, from `tests/data/seeds_core.json`
 //! (each case carries its `source`); seed errata are asserted as the computed truth.
 
-use casteljau::bernstein::{bernstein, bernstein_to_power_matrix, power_to_bernstein_matrix};
-use casteljau::casteljau::{subdivide_repeatedly, subdivision_intervals};
-use casteljau::parse::{parse_number, parse_points};
-use casteljau::{BezierCurve, Point, fraction_free, rat, ratio};
+use casteljau::curve::casteljau::{subdivide_repeatedly, subdivision_intervals};
+use casteljau::num::parse::{parse_number, parse_points};
+use casteljau::poly::bernstein::{bernstein, bernstein_to_power_matrix, power_to_bernstein_matrix};
+use casteljau::{BezierCurve, Point, curve::fraction_free, rat, ratio};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use serde_json::Value;
@@ -50,7 +50,7 @@ fn subdivision_seed_001_fig9_control_polygons() {
         assert_eq!(l, curve(&case["left"]), "{}", case["source"]);
         assert_eq!(r, curve(&case["right"]), "{}", case["source"]);
         // the generic (naive) route agrees
-        assert_eq!(casteljau::casteljau::subdivide(&c, &t), (l, r));
+        assert_eq!(casteljau::curve::casteljau::subdivide(&c, &t), (l, r));
     }
 }
 

@@ -1,7 +1,7 @@
 //! The exported edge-case strategies deliver what they promise, checked by the exact classifier
 //! and the certified fast path.
 
-use casteljau::certified::summarize;
+use casteljau::classify::certified::summarize;
 use casteljau::classify::{CurveClass, NodeType, classify};
 use casteljau::strategies::*;
 use casteljau::{Scalar, rat};

@@ -1,0 +1,522 @@
+//! The answers of the `casteljau` commands: each computes exactly and returns the text line(s)
+//! and the JSON object for one curve.
+
+use casteljau::curve::bezier::BezierCurve;
+use casteljau::curve::casteljau::subdivision_intervals;
+use casteljau::curve::fraction_free;
+use casteljau::error::{Error, Result};
+use casteljau::num::point::Point;
+use casteljau::num::scalar::Scalar;
+use casteljau::rational::rational_bezier::RationalBezier;
+use num_rational::BigRational;
+use serde_json::{Value, json};
+
+/// Exact strings of a point's coordinates.
+pub fn point_json<S: Scalar>(p: &Point<S>) -> Value {
+    Value::Array(p.coords.iter().map(|c| Value::String(c.to_string())).collect())
+}
+
+/// Exact strings of a polygon.
+pub fn points_json<S: Scalar>(ps: &[Point<S>]) -> Value {
+    Value::Array(ps.iter().map(point_json).collect())
+}
+
+pub(crate) fn eval(c: &BezierCurve<BigRational>, ts: &[BigRational]) -> Result<(String, Value)> {
+    let ic = fraction_free::IntegerCurve::new(c);
+    let values: Vec<Point<BigRational>> = ts.iter().map(|t| fraction_free::eval_integer(&ic, t)).collect();
+    let text = ts.iter().zip(&values).map(|(t, p)| format!("b({t}) = {p}")).collect::<Vec<_>>().join("\n");
+    let js: Vec<Value> =
+        ts.iter().zip(&values).map(|(t, p)| json!({"t": t.to_string(), "point": point_json(p)})).collect();
+    Ok((text, json!({"degree": c.degree(), "values": js})))
+}
+
+pub(crate) fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u32) -> Result<(String, Value)> {
+    if depth == 1 {
+        let (l, r) = fraction_free::subdivide(c, t0);
+        let text = format!("left:  {l}\nright: {r}");
+        return Ok((
+            text,
+            json!({"t": t0.to_string(), "left": points_json(l.points()), "right": points_json(r.points())}),
+        ));
+    }
+    crate::cli::output_limit(
+        "subdivision output (pieces × points)",
+        (c.degree() + 1) << depth.min(40),
+        crate::cli::MAX_SUBDIVISION_POINTS,
+    )?;
+    let pieces = fraction_free::subdivide_repeatedly(c, t0, depth)?;
+    let ivs = subdivision_intervals(t0, depth);
+    let text = pieces.iter().zip(&ivs).map(|(p, (a, b))| format!("[{a}, {b}]: {p}")).collect::<Vec<_>>().join("\n");
+    let js: Vec<Value> = pieces
+        .iter()
+        .zip(&ivs)
+        .map(|(p, (a, b))| json!({"interval": [a.to_string(), b.to_string()], "points": points_json(p.points())}))
+        .collect();
+    Ok((text, json!({"t": t0.to_string(), "depth": depth, "pieces": js})))
+}
+
+pub(crate) fn triangle(c: &BezierCurve<BigRational>, t: &BigRational) -> Result<(String, Value)> {
+    let tri = fraction_free::triangle(c, t);
+    let text = tri
+        .rows
+        .iter()
+        .enumerate()
+        .map(|(r, row)| {
+            let pts: Vec<String> = row.iter().map(|p| p.to_string()).collect();
+            format!("r={r}: {}", pts.join(" "))
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let rows: Vec<Value> = tri.rows.iter().map(|r| points_json(r)).collect();
+    Ok((text, json!({"t": t.to_string(), "rows": rows, "point": point_json(tri.point())})))
+}
+
+pub(crate) fn power(c: &BezierCurve<BigRational>) -> (String, Value) {
+    let coeffs = fraction_free::power_coefficients(c);
+    let names = ["x", "y", "z"];
+    let lines: Vec<String> = (0..c.dim())
+        .map(|k| {
+            let name = names.get(k).map(|s| s.to_string()).unwrap_or(format!("x{k}"));
+            let poly: Vec<BigRational> = coeffs.iter().map(|p| p.coords[k].clone()).collect();
+            format!("{name}(t) = {}", format_polynomial(&poly, "t"))
+        })
+        .collect();
+    let mut value = json!({"degree": c.degree(), "coefficients": points_json(&coeffs)});
+    if c.degree() <= crate::cli::MAX_MATRIX_DEGREE {
+        let matrix: Vec<Vec<String>> = casteljau::poly::bernstein::bernstein_to_power_matrix(c.degree())
+            .iter()
+            .map(|r| r.iter().map(|v| v.to_string()).collect())
+            .collect();
+        value["matrix"] = json!(matrix);
+    }
+    (lines.join("\n"), value)
+}
+
+/// `c0 + c1 t + c2 t^2 …` with exact coefficients, zero terms omitted (`0` for the zero polynomial).
+pub fn format_polynomial(coeffs: &[BigRational], var: &str) -> String {
+    let mut s = String::new();
+    for (k, c) in coeffs.iter().enumerate() {
+        if Scalar::is_zero(c) {
+            continue;
+        }
+        let neg = casteljau::num::scalar::Exact::sign(c) == std::cmp::Ordering::Less;
+        let mag = if neg { -c.clone() } else { c.clone() };
+        if s.is_empty() {
+            s.push_str(if neg { "-" } else { "" });
+        } else {
+            s.push_str(if neg { " - " } else { " + " });
+        }
+        let one = mag == casteljau::num::scalar::rat(1);
+        match k {
+            0 => s.push_str(&mag.to_string()),
+            _ => {
+                if !one {
+                    s.push_str(&mag.to_string());
+                    if !mag.is_integer() {
+                        s.push('*');
+                    }
+                }
+                s.push_str(var);
+                if k > 1 {
+                    s.push_str(&format!("^{k}"));
+                }
+            }
+        }
+    }
+    if s.is_empty() { "0".into() } else { s }
+}
+
+pub(crate) fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)> {
+    use casteljau::classify::moving_line::MovingLines;
+    use casteljau::classify::{classify, loop_blinn};
+    let k = classify(c)?;
+    let params = |ps: &[casteljau::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_string())).collect() };
+    let floats = |ps: &[casteljau::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_f64())).collect() };
+    let mut v = json!({
+        "degree": k.degree,
+        "real_degree": k.real_degree,
+        "collinear": k.collinear,
+        "class": k.class.as_str(),
+        "reason": k.reason,
+        "node_type": k.node_type.map(|n| n.as_str()),
+        "double_point": k.double_point.as_ref().map(point_json),
+        "double_point_parameters": params(&k.double_point_parameters),
+        "cusp_parameters": params(&k.cusp_parameters),
+        "inflection_parameters": params(&k.inflection_parameters),
+        "segment": {
+            "loop": k.segment.has_loop,
+            "cusp": k.segment.has_cusp,
+            "inflections": k.segment.inflections,
+            "category": k.segment.category.as_str(),
+        },
+        "invariants": {"A": k.invariants[0].to_string(), "B": k.invariants[1].to_string(), "C": k.invariants[2].to_string()},
+    });
+    if let Some((te, d)) = &k.t_e_and_d {
+        v["t_E"] = json!(te.to_string());
+        v["d"] = json!(d.to_string());
+    }
+    if c.degree() == 3 {
+        let ml = MovingLines::new(c)?;
+        let verified = ml.verify().is_ok();
+        let (lb, lb_node) = loop_blinn(c);
+        v["moving_lines"] = json!({
+            "L00": point_json(&ml.l0[0]), "L01": point_json(&ml.l0[1]),
+            "L10": point_json(&ml.l1[0]), "L11": point_json(&ml.l1[1]), "L12": point_json(&ml.l1[2]),
+            "D": point_json(&ml.double_point),
+            "t_E": ml.t_e().map(|t| t.to_string()),
+            "verified": verified,
+        });
+        if let Ok(map) =
+            casteljau::classify::canonical::canonical_map(c, casteljau::classify::canonical::Formulas::Corrected)
+        {
+            let proved = map.prove(c);
+            v["canonical"] = json!({
+                "equation": casteljau::classify::canonical::canonical_equation(map.node),
+                "matrix": map.matrix.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "t_E": map.t_e.to_string(),
+                "t_F": map.t_f.to_string(),
+                "parameter": "(t - t_E)/(t_F - t_E)",
+                "points": map.points.iter().map(|(n, p)| (n.to_string(), json!(p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()))).collect::<serde_json::Map<_, _>>(),
+                "proved": proved.is_ok(),
+                "certificate": match &proved { Ok(c) => c.to_string(), Err(e) => format!("counterexample {e}") },
+            });
+        }
+        v["loop_blinn"] = json!({
+            "d1": lb[0].to_string(), "d2": lb[1].to_string(), "d3": lb[2].to_string(),
+            "node_type": lb_node.map(|n| n.as_str()),
+        });
+    }
+    if float {
+        v["float"] = json!({
+            "double_point_parameters": floats(&k.double_point_parameters),
+            "cusp_parameters": floats(&k.cusp_parameters),
+            "inflection_parameters": floats(&k.inflection_parameters),
+            "double_point": k.double_point.as_ref().map(|p| p.to_f64().coords),
+        });
+    }
+    let show = |ps: &[casteljau::classify::Parameter]| -> String {
+        ps.iter()
+            .map(|p| if float { format!("{p} (≈{:.6})", p.to_f64()) } else { p.to_string() })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut text = format!("{}: {}", k.class, k.reason);
+    if let Some(dp) = &k.double_point {
+        text += &format!("; double point {dp}");
+    }
+    if !k.double_point_parameters.is_empty() {
+        text += &format!(" at t = {}", show(&k.double_point_parameters));
+    }
+    if !k.inflection_parameters.is_empty() {
+        text += &format!("; inflections at t = {}", show(&k.inflection_parameters));
+    }
+    if k.collinear && !k.cusp_parameters.is_empty() {
+        text += &format!("; turns back at t = {}", show(&k.cusp_parameters));
+    }
+    text += &format!(
+        "; on [0,1]: {}{}{} inflection{} ({})",
+        if k.segment.has_loop { "loop, " } else { "" },
+        if k.segment.has_cusp { "cusp, " } else { "" },
+        k.segment.inflections,
+        if k.segment.inflections == 1 { "" } else { "s" },
+        k.segment.category.as_str()
+    );
+    Ok((text, v))
+}
+
+pub(crate) fn classify_weighted(c: &RationalBezier<BigRational>) -> Result<(String, Value)> {
+    if c.degree() != 3 || c.dim() != 2 {
+        return Err(Error::InvalidArgument { message: "rational classification takes planar cubics".into() });
+    }
+    let h = c.homogeneous().points().to_vec();
+    let k = casteljau::classify::rational_cubic::classify_rational(&h)?;
+    let params: Vec<String> = k.double_point_parameters.iter().map(|p| p.to_string()).collect();
+    let v = json!({
+        "rational": true,
+        "class": k.class,
+        "reason": k.reason,
+        "node_type": k.node_type.map(|n| n.as_str()),
+        "double_point": k.double_point.as_ref().map(point_json),
+        "double_point_homogeneous": k.double_point_homogeneous.as_ref().map(point_json),
+        "double_point_at_infinity": k.at_infinity,
+        "double_point_parameters": params,
+        "parameter_at_infinity": k.parameter_at_infinity,
+        "segment": {"loop": k.has_loop, "cusp": k.has_cusp},
+    });
+    let mut text = k.class.to_string();
+    if let Some(n) = k.node_type {
+        text += &format!(" ({})", n.as_str());
+    }
+    text += &format!(": {}", k.reason);
+    if !params.is_empty() {
+        text += &format!("; finite double-point parameters t = {}", params.join(", "));
+    }
+    Ok((text, v))
+}
+
+fn weighted_json(c: &RationalBezier<BigRational>) -> Value {
+    json!({
+        "degree": c.degree(),
+        "points": c.points().iter().map(|p| p.as_ref().map(point_json)).collect::<Vec<_>>(),
+        "weights": c.weights().iter().map(|w| w.to_string()).collect::<Vec<_>>(),
+        "homogeneous": points_json(c.homogeneous().points()),
+    })
+}
+
+fn weighted_text(c: &RationalBezier<BigRational>) -> String {
+    c.homogeneous()
+        .points()
+        .iter()
+        .map(|h| match h.from_homogeneous() {
+            Some(p) => format!(
+                "{} (w {})",
+                p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" "),
+                h.coords[h.dim() - 1]
+            ),
+            None => format!(
+                "direction {} at infinity (w 0)",
+                h.coords[..h.dim() - 1].iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")
+            ),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+pub(crate) fn eval_rational(c: &RationalBezier<BigRational>, ts: &[BigRational]) -> Result<(String, Value)> {
+    let eval = c.exact_evaluator();
+    let values: Vec<Point<BigRational>> = ts.iter().map(&eval).collect::<Result<_>>()?;
+    let text = ts.iter().zip(&values).map(|(t, p)| format!("x({t}) = {p}")).collect::<Vec<_>>().join("\n");
+    let js: Vec<Value> =
+        ts.iter().zip(&values).map(|(t, p)| json!({"t": t.to_string(), "point": point_json(p)})).collect();
+    let defined = c.check_defined(&casteljau::num::scalar::rat(0), &casteljau::num::scalar::rat(1)).is_ok();
+    Ok((text, json!({"degree": c.degree(), "rational": true, "values": js, "defined_on_0_1": defined})))
+}
+
+pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigRational) -> Result<crate::cli::Answer> {
+    let roots = c.denominator_roots(a, b);
+    let (text, failed, list) = match &roots {
+        None => ("undefined everywhere: the denominator is identically 0".to_string(), true, vec![]),
+        Some(r) if r.is_empty() => (format!("defined on [{a}, {b}]: the denominator has no root there"), false, vec![]),
+        Some(r) => {
+            let shown: Vec<String> = r.iter().map(|x| x.to_string()).collect();
+            (format!("undefined: the denominator vanishes at {}", shown.join("; ")), true, shown)
+        }
+    };
+    Ok(crate::cli::Answer {
+        text,
+        json: json!({"interval": [a.to_string(), b.to_string()], "defined": !failed, "roots": list}),
+        failed,
+    })
+}
+
+pub(crate) fn subdivide_rational(c: &RationalBezier<BigRational>, t0: &BigRational) -> Result<(String, Value)> {
+    let (l, r) = c.subdivide(t0);
+    let text = format!("left:  {}\nright: {}", weighted_text(&l), weighted_text(&r));
+    Ok((text, json!({"t": t0.to_string(), "left": weighted_json(&l), "right": weighted_json(&r)})))
+}
+
+pub(crate) fn elevate_rational(c: &RationalBezier<BigRational>, by: usize) -> Result<(String, Value)> {
+    let e = c.elevate(by)?;
+    Ok((weighted_text(&e), weighted_json(&e)))
+}
+
+pub(crate) fn conic(c: &RationalBezier<BigRational>) -> Result<(String, Value)> {
+    let (kind, shape) = c.conic_type()?;
+    let text = match &shape {
+        Some(k) => format!("{} (shape factor w1²/(w0·w2) = {k})", kind.as_str()),
+        None => format!("{} (w0·w2 = 0: an end point at infinity)", kind.as_str()),
+    };
+    Ok((text, json!({"conic": kind.as_str(), "shape_factor": shape.map(|k| k.to_string())})))
+}
+
+pub(crate) fn implicit(c: &RationalBezier<BigRational>, poly: &str) -> Result<crate::cli::Answer> {
+    use casteljau::rational::implicit::{ImplicitVerdict, prove_implicit};
+    Ok(match prove_implicit(c, poly)? {
+        ImplicitVerdict::Proved { degree_bound, parameters } => crate::cli::Answer {
+            text: format!(
+                "proved: f(x(t)) ≡ 0 — W^d·f(X/W) has degree ≤ {degree_bound} and vanishes at {} parameters with W ≠ 0",
+                parameters.len()
+            ),
+            json: json!({"proved": true, "degree_bound": degree_bound, "parameters": parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>()}),
+            failed: false,
+        },
+        ImplicitVerdict::Counterexample { t, point, value } => crate::cli::Answer {
+            text: format!("counterexample: at t = {t} the curve is at {point} where f = {value}"),
+            json: json!({"proved": false, "t": t.to_string(), "point": point_json(&point), "value": value.to_string()}),
+            failed: true,
+        },
+    })
+}
+
+fn patch_json(p: &casteljau::surface::RationalPatch) -> Value {
+    let (m, n) = p.degree();
+    json!({
+        "degree": [m, n],
+        "homogeneous": p.homogeneous().iter().map(|r| points_json(r)).collect::<Vec<_>>(),
+        "weights": p.weights().iter().map(|r| r.iter().map(|w| w.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
+    })
+}
+
+fn patch_text(p: &casteljau::surface::RationalPatch) -> String {
+    p.homogeneous()
+        .iter()
+        .map(|r| {
+            r.iter()
+                .map(|h| {
+                    let d = h.dim() - 1;
+                    match h.from_homogeneous() {
+                        Some(q) => format!(
+                            "{} (w {})",
+                            q.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" "),
+                            h.coords[d]
+                        ),
+                        None => format!(
+                            "direction {} (w 0)",
+                            h.coords[..d].iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")
+                        ),
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join(", ")
+        })
+        .collect::<Vec<_>>()
+        .join(" ; ")
+}
+
+pub(crate) fn surface_eval(
+    p: &casteljau::surface::RationalPatch,
+    u: &BigRational,
+    v: &BigRational,
+) -> Result<(String, Value)> {
+    let s = p.eval(u, v)?;
+    // Both orders agree with the closed form homogeneously; where the affine recursion runs
+    // (no intermediate weight 0) its point must agree too. A recursion that cannot run is not
+    // a disagreement.
+    let h = p.eval_homogeneous(u, v);
+    let agree = [(p.eval_u_then_v(u, v), true), (p.eval_v_then_u(u, v), false)].into_iter().all(|(affine, u_first)| {
+        p.eval_homogeneous_de_casteljau(u, v, u_first) == h && affine.as_ref().ok().is_none_or(|x| *x == s)
+    });
+    Ok((
+        format!("S({u}, {v}) = {s}"),
+        json!({"u": u.to_string(), "v": v.to_string(), "point": point_json(&s), "de_casteljau_u_then_v_and_v_then_u_agree": agree}),
+    ))
+}
+
+pub(crate) fn surface_subdivide(
+    p: &casteljau::surface::RationalPatch,
+    in_u: bool,
+    x: &BigRational,
+) -> Result<(String, Value)> {
+    let (a, b) = if in_u { p.subdivide_u(x) } else { p.subdivide_v(x) };
+    let dir = if in_u { "u" } else { "v" };
+    Ok((
+        format!("{dir} in [0, {x}]: {}\n{dir} in [{x}, 1]: {}", patch_text(&a), patch_text(&b)),
+        json!({"direction": dir, "at": x.to_string(), "first": patch_json(&a), "second": patch_json(&b)}),
+    ))
+}
+
+pub(crate) fn surface_elevate(
+    p: &casteljau::surface::RationalPatch,
+    u_by: usize,
+    v_by: usize,
+) -> Result<(String, Value)> {
+    let e = p.elevate(u_by, v_by)?;
+    Ok((patch_text(&e), patch_json(&e)))
+}
+
+pub(crate) fn surface_contour(
+    p: &casteljau::surface::RationalPatch,
+    z: &BigRational,
+    polyline: usize,
+) -> Result<(String, Value)> {
+    if p.dim() < 3 {
+        return Err(Error::InvalidArgument { message: "a contour z = c needs a 3D patch".into() });
+    }
+    let f = p.contour_polynomial(2, z);
+    let rows: Vec<String> = f.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")).collect();
+    let mut text = format!("F(u, v) = Σ B_i(u) B_j(v) c_ij with c = {}", rows.join(" ; "));
+    let mut v = json!({"z": z.to_string(), "bernstein_coefficients": f.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>()});
+    if polyline > 0 {
+        let segs = p.contour_polyline(2, z, polyline);
+        text += &format!("\n{} sampled segments", segs.len());
+        v["polyline"] = json!(segs.iter().map(|s| [[s[0].0, s[0].1], [s[1].0, s[1].1]]).collect::<Vec<_>>());
+    }
+    Ok((text, v))
+}
+
+pub(crate) fn spline_to_bezier(sp: &casteljau::spline::RationalSpline, method: &str) -> Result<(String, Value)> {
+    let segs: Vec<RationalBezier<BigRational>> = match (method, sp.degree) {
+        ("boehm", _) => sp.to_bezier_boehm(),
+        ("seed", 3) => {
+            (0..sp.segments()).map(|s| casteljau::spline::seed_cubic_segment(sp, s)).collect::<Result<_>>()?
+        }
+        ("seed", 2) => (0..sp.segments())
+            .map(|s| casteljau::spline::seed_quadratic_segment(sp, s, casteljau::spline::Printed::Corrected))
+            .collect::<Result<_>>()?,
+        ("seed", n) => {
+            return Err(Error::InvalidArgument {
+                message: format!("the seed gives formulas for degrees 2 and 3, not {n}: use --method boehm"),
+            });
+        }
+        (m, _) => return Err(Error::InvalidArgument { message: format!("--method is seed or boehm, not {m:?}") }),
+    };
+    let text = segs
+        .iter()
+        .enumerate()
+        .map(|(s, c)| {
+            let (a, b) = sp.span(s);
+            format!("[{a}, {b}]: {}", weighted_text(c))
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let js: Vec<Value> = segs
+        .iter()
+        .enumerate()
+        .map(|(s, c)| {
+            let (a, b) = sp.span(s);
+            let mut v = weighted_json(c);
+            v["span"] = json!([a.to_string(), b.to_string()]);
+            v
+        })
+        .collect();
+    Ok((text, json!({"degree": sp.degree, "method": method, "segments": js})))
+}
+
+pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<crate::cli::Answer> {
+    use casteljau::spline::check_segments;
+    let boehm = sp.to_bezier_boehm();
+    let mut lines = Vec::new();
+    let mut failed = false;
+    let mut report = |name: &str, r: std::result::Result<usize, casteljau::spline::SegmentMismatch>| match r {
+        Ok(points) => lines.push(format!(
+            "{name}: every segment is the NURBS on its span ({points} exact points), joins C^{}",
+            sp.degree - 1
+        )),
+        Err(e) => {
+            failed = true;
+            lines.push(format!("{name}: FAILS: {e:?}"));
+        }
+    };
+    report("Boehm knot insertion", check_segments(sp, &boehm));
+    let seed: Option<Result<Vec<RationalBezier<BigRational>>>> = match sp.degree {
+        3 => Some((0..sp.segments()).map(|s| casteljau::spline::seed_cubic_segment(sp, s)).collect()),
+        2 => Some(
+            (0..sp.segments())
+                .map(|s| casteljau::spline::seed_quadratic_segment(sp, s, casteljau::spline::Printed::Corrected))
+                .collect(),
+        ),
+        _ => None,
+    };
+    if let Some(seed) = seed {
+        let seed = seed?;
+        report("seed formulas", check_segments(sp, &seed));
+        let same = seed.iter().zip(&boehm).all(|(a, b)| a.points() == b.points() && a.weights() == b.weights());
+        failed |= !same;
+        lines.push(format!("seed formulas = Boehm (points and weights): {same}"));
+    }
+    Ok(crate::cli::Answer {
+        text: lines.join("\n"),
+        json: json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines}),
+        failed,
+    })
+}

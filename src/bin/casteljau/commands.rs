@@ -1,0 +1,244 @@
+//! Runners of the commands with their own input and output: `prove`, `plot`, `surface`,
+//! `spline` (the curve commands share [`crate::cli`]'s batch reader).
+
+use crate::answers;
+use crate::cli::{
+    Answer, CurveArgs, PatchArgs, RationalArgs, SplineOp, SurfaceOp, Weights, batch, numbers, option_number, patch_of,
+    rational_batch, rational_curve,
+};
+use casteljau::error::{Error, Result};
+use serde_json::{Value, json};
+use std::io::Write;
+
+pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
+    let run_patch = |mut patch: PatchArgs,
+                     out: &mut dyn Write,
+                     f: &dyn Fn(&casteljau::surface::RationalPatch) -> Result<Answer>| {
+        if patch.curve.dim == 2 {
+            patch.curve.dim = 3; // patches are 3D unless --dim says otherwise
+        }
+        if patch.rational.homogeneous {
+            patch.curve.dim += 1;
+        }
+        let (degree, rational) = (patch.degree.clone(), patch.rational.clone());
+        batch(&patch.curve, out, |c| f(&patch_of(c, &degree, &rational)?))
+    };
+    match op {
+        SurfaceOp::Eval { u, v, patch } => {
+            let uv = option_number("--u", &u).and_then(|u| Ok((u, option_number("--v", &v)?)));
+            run_patch(patch, out, &|p| {
+                let (u, v) = uv.clone()?;
+                answers::surface_eval(p, &u, &v).map(Answer::from)
+            })
+        }
+        SurfaceOp::Subdivide { u, v, patch } => {
+            let at = match (&u, &v) {
+                (Some(u), None) => option_number("--u", u).map(|x| (true, x)),
+                (None, Some(v)) => option_number("--v", v).map(|x| (false, x)),
+                _ => Err(Error::InvalidArgument { message: "give exactly one of --u and --v".into() }),
+            };
+            run_patch(patch, out, &|p| {
+                let (in_u, x) = at.clone()?;
+                answers::surface_subdivide(p, in_u, &x).map(Answer::from)
+            })
+        }
+        SurfaceOp::Elevate { u_by, v_by, patch } => {
+            run_patch(patch, out, &|p| answers::surface_elevate(p, u_by, v_by).map(Answer::from))
+        }
+        SurfaceOp::Contour { z, polyline, patch } => {
+            let z = option_number("--z", &z);
+            let polyline = polyline.min(1000);
+            run_patch(patch, out, &|p| answers::surface_contour(p, &z.clone()?, polyline).map(Answer::from))
+        }
+    }
+}
+
+pub(crate) fn spline(op: SplineOp, out: &mut dyn Write) -> i32 {
+    let (args, method) = match op {
+        SplineOp::ToBezier { method, spline } => (spline, Some(method)),
+        SplineOp::Check { spline } => (spline, None),
+    };
+    let ratios = numbers("--ratios", &args.ratios);
+    let weights = args.weights.as_deref().map(|w| numbers("--weights", w)).transpose();
+    let degree = args.degree;
+    batch(&args.curve, out, |c| {
+        let ratios = ratios.clone()?;
+        let weights = weights.clone()?.unwrap_or_else(|| vec![casteljau::num::scalar::rat(1); c.points().len()]);
+        let sp = casteljau::spline::RationalSpline::new(degree, c.points(), &weights, &ratios)?;
+        match &method {
+            Some(m) => answers::spline_to_bezier(&sp, m).map(Answer::from),
+            None => answers::spline_check(&sp),
+        }
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn plot(
+    opts: Result<casteljau::plot::CurveOptions>,
+    family: Option<String>,
+    grid: bool,
+    title: Option<String>,
+    width: u32,
+    output: Option<std::path::PathBuf>,
+    rational: RationalArgs,
+    curve: CurveArgs,
+    out: &mut dyn Write,
+) -> i32 {
+    use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational};
+    use std::cell::RefCell;
+    let fig = RefCell::new(Figure::new().grid(grid));
+    if let Some(t) = &title {
+        fig.replace_with(|f| std::mem::take(f).title(t));
+    }
+    let count = RefCell::new(0usize);
+    // parse "wI=a,b,c"
+    let family = match family.as_deref().map(|f| {
+        let (name, values) = f
+            .split_once('=')
+            .ok_or_else(|| Error::InvalidArgument { message: format!("--weights-family {f:?}: write w1=1,3,4") })?;
+        let i: usize = name
+            .trim()
+            .trim_start_matches('w')
+            .parse()
+            .map_err(|_| Error::InvalidArgument { message: format!("--weights-family: bad index {name:?}") })?;
+        Ok::<_, Error>((i, numbers("--weights-family", values)?))
+    }) {
+        Some(Err(e)) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+        Some(Ok(f)) => Some(f),
+        None => None,
+    };
+    let mut sink: Vec<u8> = Vec::new();
+    let code = rational_batch(&rational, curve, &mut sink, |c, w| {
+        let opts = opts.clone()?;
+        let k = *count.borrow();
+        let color = PALETTE[k % PALETTE.len()];
+        match (w, &family) {
+            (Weights::Polynomial, None) => draw_curve(&mut fig.borrow_mut(), c, &opts, color)?,
+            (w, None) => draw_rational(&mut fig.borrow_mut(), &rational_curve(c, w)?, color, opts.polygon),
+            (w, Some((i, values))) => {
+                let base = rational_curve(c, w)?;
+                for (j, v) in values.iter().enumerate() {
+                    let member = base.with_weight(*i, v.clone())?;
+                    draw_rational(&mut fig.borrow_mut(), &member, PALETTE[j % PALETTE.len()], j == 0 && opts.polygon);
+                }
+            }
+        }
+        *count.borrow_mut() += 1;
+        Ok(Answer { text: String::new(), json: Value::Null, failed: false })
+    });
+    if code == 2 {
+        return 2;
+    }
+    let svg = fig.into_inner().to_svg(width);
+    match output {
+        Some(path) => {
+            if let Err(e) = std::fs::write(&path, svg) {
+                eprintln!("casteljau: cannot write {}: {e}", path.display());
+                return 2;
+            }
+        }
+        None => {
+            let _ = out.write_all(svg.as_bytes());
+        }
+    }
+    code
+}
+
+pub(crate) fn prove(
+    paths: &[std::path::PathBuf],
+    filter: Option<&str>,
+    json_out: bool,
+    junit: Option<&std::path::Path>,
+    write_readme: Option<&std::path::Path>,
+    out: &mut dyn Write,
+) -> i32 {
+    use casteljau::catalogue;
+    use std::io::IsTerminal;
+    let paths = if paths.is_empty() { vec![catalogue::default_path()] } else { paths.to_vec() };
+    let claims = match catalogue::load(&paths) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+    };
+    let claims: Vec<_> = claims.into_iter().filter(|c| filter.is_none_or(|f| c.id.contains(f))).collect();
+    let progress = std::io::stderr().is_terminal() && !json_out;
+    let (mut passed, mut failed, mut malformed) = (0, 0, 0);
+    let mut results = Vec::new();
+    for (k, c) in claims.iter().enumerate() {
+        if progress {
+            eprint!("\r\x1b[K[{}/{}] {}", k + 1, claims.len(), c.id);
+        }
+        let r = match catalogue::check(c) {
+            Ok(r) => r,
+            Err(e) => {
+                malformed += 1;
+                if progress {
+                    eprint!("\r\x1b[K");
+                }
+                eprintln!("casteljau: {e}");
+                continue;
+            }
+        };
+        if r.passed() {
+            passed += 1;
+        } else {
+            failed += 1;
+        }
+        let line = if json_out {
+            json!({
+                "id": r.id, "source": c.source, "statement": c.statement, "expected": r.expected.as_str(),
+                "verdict": r.found.as_str(), "passed": r.passed(), "method": r.method, "detail": r.detail,
+                "corrected": r.corrected_detail, "seconds": r.seconds,
+            })
+            .to_string()
+        } else {
+            format!(
+                "{} {:<44} {:<17} {:<13} {:>8.4}s  {}",
+                if r.passed() { "ok  " } else { "FAIL" },
+                r.id,
+                r.found.as_str(),
+                r.method,
+                r.seconds,
+                r.detail
+            )
+        };
+        if progress {
+            eprint!("\r\x1b[K");
+        }
+        if writeln!(out, "{line}").is_err() {
+            return 2;
+        }
+        results.push(r);
+    }
+    if !json_out {
+        let _ = writeln!(out, "{passed} passed, {failed} failed");
+    }
+    if let Some(path) = junit
+        && let Err(e) = std::fs::write(path, catalogue::junit(&results))
+    {
+        eprintln!("casteljau: cannot write {}: {e}", path.display());
+        return 2;
+    }
+    if let Some(path) = write_readme {
+        if malformed > 0 || filter.is_some() {
+            eprintln!("casteljau: --write-readme needs the whole catalogue, checked without errors");
+            return 2;
+        }
+        if let Err(e) = std::fs::write(path, catalogue::readme(&claims, &results)) {
+            eprintln!("casteljau: cannot write {}: {e}", path.display());
+            return 2;
+        }
+    }
+    if malformed > 0 {
+        2
+    } else if failed == 0 {
+        0
+    } else {
+        1
+    }
+}

@@ -1,0 +1,423 @@
+//! Exact classification of planar polynomial Bézier curves of degree ≤ 3.
+//!
+//! Every curve falls in exactly one of 16 [`CurveClass`]es. A *genuine* cubic (real degree 3,
+//! control points not collinear) has a [`NodeType`] decided from its power form
+//! `P(t) = a0 + a1 t + a2 t² + a3 t³` with the invariants
+//! `A = a2×a3`, `B = a1×a3`, `C = a1×a2` (`u×v = u_x v_y − u_y v_x`):
+//!
+//! * `A = 0`: **explicit** — an affine image of `y = x³`; one inflection at `t = −C/(3B)`,
+//!   the double point at infinity.
+//! * `A ≠ 0`: with `t_E = −B/(2A)` and `d = (4AC − 3B²)/(4A²)`, the self-intersection
+//!   parameters are `t_E ± √d` (from `P(s) = P(t)`, `s ≠ t`, which gives `s + t = −B/A`,
+//!   `st = (s+t)² − C/A`) and the inflection parameters are `t_E ± √(−d/3)` (roots of
+//!   `P'×P''/2 = 3A t² + 3B t + C`). Hence `d > 0` **crunode**, `d = 0` **cusp** (at `t_E`),
+//!   `d < 0` **acnode**. The double point is rational in every case:
+//!   `D = a0 + a1 t_E + a2 (t_E² + d) + a3 (t_E³ + 3 t_E d)`.
+//!
+//! Segment features on the closed interval `[0, 1]` are decided exactly in `Q(√d)`.
+//! The seed's moving-line route ([`crate::classify::moving_line`]) and the Loop–Blinn discriminant
+//! ([`loop_blinn`]) are independent cross-checks.
+
+pub mod canonical;
+pub mod certified;
+pub mod moving_line;
+pub mod rational_cubic;
+
+use crate::curve::bezier::BezierCurve;
+use crate::curve::fraction_free;
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use crate::num::quadratic_field::QuadraticExt;
+use crate::num::scalar::{Exact, Scalar, rat};
+use num_rational::BigRational;
+use std::cmp::Ordering;
+use std::fmt;
+
+/// An exact real parameter `a + b√m` (rational when `b = 0`).
+pub type Parameter = QuadraticExt<BigRational>;
+
+/// The node type of a genuine cubic (seed 004, §3.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum NodeType {
+    /// Self-intersection (`d > 0`): canonical form `x³ + x² − 3y² = 0`.
+    Crunode,
+    /// Cusp (`d = 0`): canonical form `x³ − 3y² = 0`.
+    Cusp,
+    /// Isolated double point (`d < 0`): canonical form `x³ − x² − 3y² = 0`.
+    Acnode,
+    /// Double point at infinity (`A = 0`): canonical form `y = x³`.
+    Explicit,
+}
+
+impl NodeType {
+    /// `crunode`, `cusp`, `acnode` or `explicit`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            NodeType::Crunode => "crunode",
+            NodeType::Cusp => "cusp",
+            NodeType::Acnode => "acnode",
+            NodeType::Explicit => "explicit",
+        }
+    }
+}
+
+/// The 16 classes of planar polynomial Bézier curves of degree ≤ 3 (by written degree, real
+/// degree of the power form, and collinearity of the control points).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CurveClass {
+    /// Degree 0.
+    Point,
+    /// Degree 1, distinct endpoints.
+    Line,
+    /// Degree 1, coincident endpoints.
+    LineReallyPoint,
+    /// Degree 2, not collinear.
+    Quadratic,
+    /// Degree 2, collinear control points, real degree 2 (a segment traced with a turn-back
+    /// or a non-uniform speed).
+    CollinearQuadratic,
+    /// Degree 2 whose power form has degree 1.
+    QuadraticReallyLine,
+    /// Degree 2 whose control points coincide.
+    QuadraticReallyPoint,
+    /// A genuine cubic of the given node type.
+    Cubic(NodeType),
+    /// Degree 3 whose power form has degree 2 (a degree-elevated quadratic), not collinear.
+    CubicReallyQuadratic,
+    /// Degree 3, real degree 3, collinear control points.
+    CollinearCubic,
+    /// Degree 3, real degree 2, collinear control points.
+    CubicReallyCollinearQuadratic,
+    /// Degree 3 whose power form has degree 1.
+    CubicReallyLine,
+    /// Degree 3 whose control points coincide.
+    CubicReallyPoint,
+}
+
+impl CurveClass {
+    /// The class name used in text and JSON output.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            CurveClass::Point => "point",
+            CurveClass::Line => "line",
+            CurveClass::LineReallyPoint => "line_really_point",
+            CurveClass::Quadratic => "quadratic",
+            CurveClass::CollinearQuadratic => "collinear_quadratic",
+            CurveClass::QuadraticReallyLine => "quadratic_really_line",
+            CurveClass::QuadraticReallyPoint => "quadratic_really_point",
+            CurveClass::Cubic(n) => n.as_str(),
+            CurveClass::CubicReallyQuadratic => "cubic_really_quadratic",
+            CurveClass::CollinearCubic => "collinear_cubic",
+            CurveClass::CubicReallyCollinearQuadratic => "cubic_really_collinear_quadratic",
+            CurveClass::CubicReallyLine => "cubic_really_line",
+            CurveClass::CubicReallyPoint => "cubic_really_point",
+        }
+    }
+}
+
+impl fmt::Display for CurveClass {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// The Stone–DeRose / flo_curves category of the segment `t ∈ [0, 1]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SegmentCategory {
+    /// All control points coincide.
+    Point,
+    /// The curve lies on a line.
+    Line,
+    /// A non-degenerate quadratic (possibly written as a cubic).
+    Parabola,
+    /// A genuine cubic with no loop, cusp or inflection on `[0, 1]`.
+    Arch,
+    /// One inflection on `[0, 1]`.
+    SingleInflection,
+    /// Two inflections on `[0, 1]`.
+    DoubleInflection,
+    /// Both self-intersection parameters on `[0, 1]`.
+    Loop,
+    /// The cusp parameter on `[0, 1]`.
+    Cusp,
+}
+
+impl SegmentCategory {
+    /// The category name used in output.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SegmentCategory::Point => "point",
+            SegmentCategory::Line => "line",
+            SegmentCategory::Parabola => "parabola",
+            SegmentCategory::Arch => "arch",
+            SegmentCategory::SingleInflection => "single_inflection",
+            SegmentCategory::DoubleInflection => "double_inflection",
+            SegmentCategory::Loop => "loop",
+            SegmentCategory::Cusp => "cusp",
+        }
+    }
+}
+
+/// Features of the segment `t ∈ [0, 1]` (closed: endpoints count).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SegmentFeatures {
+    /// Both self-intersection parameters lie in `[0, 1]`.
+    pub has_loop: bool,
+    /// The tangent vanishes and the curve turns back at a parameter in `[0, 1]` (the cusp of a
+    /// genuine cubic, or the turning point of a collinear curve).
+    pub has_cusp: bool,
+    /// Number of distinct real inflection parameters in `[0, 1]`.
+    pub inflections: usize,
+    /// The Stone–DeRose category.
+    pub category: SegmentCategory,
+}
+
+/// Everything casteljau knows exactly about a planar curve of degree ≤ 3.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Classification {
+    /// The written degree.
+    pub degree: usize,
+    /// The degree of the power form (0–3).
+    pub real_degree: usize,
+    /// All control points on one line.
+    pub collinear: bool,
+    /// The class.
+    pub class: CurveClass,
+    /// Why the curve is in its class, in words.
+    pub reason: String,
+    /// The node type of a genuine cubic.
+    pub node_type: Option<NodeType>,
+    /// The double point (crunode, acnode) or the cusp point (cusp): always rational.
+    pub double_point: Option<Point<BigRational>>,
+    /// `t_E ± √d` (crunode), `t_E` (cusp); empty otherwise.
+    pub double_point_parameters: Vec<Parameter>,
+    /// Real inflection parameters, ascending (any `t`, not only `[0, 1]`).
+    pub inflection_parameters: Vec<Parameter>,
+    /// Parameters where the tangent vanishes and the curve turns back (cusp, collinear turning
+    /// points), ascending.
+    pub cusp_parameters: Vec<Parameter>,
+    /// `(A, B, C) = (a2×a3, a1×a3, a1×a2)`.
+    pub invariants: [BigRational; 3],
+    /// `t_E = −B/(2A)` and `d = (4AC − 3B²)/(4A²)` when `A ≠ 0`.
+    pub t_e_and_d: Option<(BigRational, BigRational)>,
+    /// Features of the segment `[0, 1]`.
+    pub segment: SegmentFeatures,
+}
+
+/// Largest degree [`classify`] accepts.
+pub const MAX_CLASSIFY_DEGREE: usize = 3;
+
+fn cross(u: &Point<BigRational>, v: &Point<BigRational>) -> BigRational {
+    u.coords[0].clone() * &v.coords[1] - u.coords[1].clone() * &v.coords[0]
+}
+
+/// `0 ≤ t ≤ 1`, exactly.
+pub(crate) fn in_unit_interval(t: &Parameter) -> bool {
+    t.sign() != Ordering::Less && (Parameter::one() - t).sign() != Ordering::Less
+}
+
+/// `c + s·√r` for `s = ±1` (`r ≥ 0`).
+pub(crate) fn shifted(c: &BigRational, r: &BigRational, s: i64) -> Parameter {
+    Parameter::from_ratio(c) + Parameter::sqrt(r.clone()) * Parameter::from_i64(s)
+}
+
+/// Classifies a planar curve of degree ≤ 3, exactly.
+///
+/// # Errors
+/// [`Error::DimensionMismatch`] unless 2D; [`Error::TooLarge`] for degree > 3.
+///
+/// # Example
+/// ```
+/// use casteljau::{BezierCurve, classify::{classify, NodeType}, num::parse::parse_points};
+/// // a cusp at t = 1/2: P0 P1 P2 P3 = (0,0) (1,1) (0,1) (1,0)
+/// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+/// let k = classify(&c).unwrap();
+/// assert_eq!(k.node_type, Some(NodeType::Cusp));
+/// assert_eq!(k.double_point.unwrap().to_string(), "(1/2, 3/4)");
+/// assert!(k.segment.has_cusp);
+/// ```
+pub fn classify(curve: &BezierCurve<BigRational>) -> Result<Classification> {
+    if curve.dim() != 2 {
+        return Err(Error::DimensionMismatch { expected: 2, found: curve.dim() });
+    }
+    let n = curve.degree();
+    if n > MAX_CLASSIFY_DEGREE {
+        return Err(Error::TooLarge { what: "degree to classify", value: n, limit: MAX_CLASSIFY_DEGREE });
+    }
+    let mut a = fraction_free::power_coefficients(curve);
+    a.resize(4, Point::origin(2));
+    let inv = [cross(&a[2], &a[3]), cross(&a[1], &a[3]), cross(&a[1], &a[2])];
+    let [big_a, big_b, big_c] = inv.clone();
+    let collinear = inv.iter().all(Scalar::is_zero);
+    let real_degree = (0..4).rev().find(|&k| a[k].coords.iter().any(|x| !Scalar::is_zero(x))).unwrap_or(0);
+    let mut out = Classification {
+        degree: n,
+        real_degree,
+        collinear,
+        class: CurveClass::Point,
+        reason: String::new(),
+        node_type: None,
+        double_point: None,
+        double_point_parameters: vec![],
+        inflection_parameters: vec![],
+        cusp_parameters: vec![],
+        invariants: inv,
+        t_e_and_d: None,
+        segment: SegmentFeatures { has_loop: false, has_cusp: false, inflections: 0, category: SegmentCategory::Point },
+    };
+    let (class, reason) = degenerate_class(n, real_degree, collinear);
+    out.class = class;
+    out.reason = reason;
+    if collinear {
+        out.cusp_parameters = turning_points(&a);
+    } else if real_degree == 3 {
+        genuine_cubic(&mut out, &a, &big_a, &big_b, &big_c);
+    }
+    let seg = &mut out.segment;
+    seg.has_cusp = out.cusp_parameters.iter().any(in_unit_interval);
+    seg.inflections = out.inflection_parameters.iter().filter(|t| in_unit_interval(t)).count();
+    seg.has_loop = out.node_type == Some(NodeType::Crunode) && out.double_point_parameters.iter().all(in_unit_interval);
+    seg.category = if real_degree == 0 {
+        SegmentCategory::Point
+    } else if collinear {
+        SegmentCategory::Line
+    } else if real_degree == 2 {
+        SegmentCategory::Parabola
+    } else if seg.has_loop {
+        SegmentCategory::Loop
+    } else if seg.has_cusp {
+        SegmentCategory::Cusp
+    } else {
+        match seg.inflections {
+            0 => SegmentCategory::Arch,
+            1 => SegmentCategory::SingleInflection,
+            _ => SegmentCategory::DoubleInflection,
+        }
+    };
+    Ok(out)
+}
+
+/// The class from written degree, real degree and collinearity; genuine cubics get their node
+/// type later (`Cubic(Explicit)` is a placeholder here).
+fn degenerate_class(n: usize, real: usize, collinear: bool) -> (CurveClass, String) {
+    use CurveClass::*;
+    let why = |s: &str| s.to_string();
+    match (n, real, collinear) {
+        (0, _, _) => (Point, why("one control point")),
+        (1, 0, _) => (LineReallyPoint, why("a1 = 0: both control points coincide")),
+        (1, _, _) => (Line, why("two distinct control points")),
+        (2, 0, _) => (QuadraticReallyPoint, why("a1 = a2 = 0: all control points coincide")),
+        (2, 1, _) => (QuadraticReallyLine, why("a2 = 0: P1 is the midpoint of P0P2 (a degree-elevated line)")),
+        (2, _, true) => (CollinearQuadratic, why("a1 × a2 = 0: control points collinear")),
+        (2, _, false) => (Quadratic, why("a1 × a2 ≠ 0")),
+        (_, 0, _) => (CubicReallyPoint, why("a1 = a2 = a3 = 0: all control points coincide")),
+        (_, 1, _) => (CubicReallyLine, why("a2 = a3 = 0: a degree-elevated line")),
+        (_, 2, true) => {
+            (CubicReallyCollinearQuadratic, why("a3 = 0 and a1 × a2 = 0: a degree-elevated collinear quadratic"))
+        }
+        (_, 2, false) => (CubicReallyQuadratic, why("a3 = 0: degree-elevated quadratic")),
+        (_, _, true) => (CollinearCubic, why("a1×a2 = a1×a3 = a2×a3 = 0: control points collinear")),
+        (_, _, false) => (Cubic(NodeType::Explicit), String::new()),
+    }
+}
+
+fn genuine_cubic(
+    out: &mut Classification,
+    a: &[Point<BigRational>],
+    big_a: &BigRational,
+    big_b: &BigRational,
+    big_c: &BigRational,
+) {
+    if Scalar::is_zero(big_a) {
+        out.class = CurveClass::Cubic(NodeType::Explicit);
+        out.node_type = Some(NodeType::Explicit);
+        out.reason = "A = a2×a3 = 0: double point at infinity (affine image of y = x³)".into();
+        let t = -big_c.clone() / (rat(3) * big_b);
+        out.inflection_parameters = vec![Parameter::from_ratio(&t)];
+        return;
+    }
+    let te = -big_b.clone() / (rat(2) * big_a);
+    let d = (rat(4) * big_a * big_c - rat(3) * big_b * big_b) / (rat(4) * big_a * big_a);
+    let dp = a[0]
+        .add(&a[1].scale(&te))
+        .add(&a[2].scale(&(te.clone() * &te + &d)))
+        .add(&a[3].scale(&(te.clone() * &te * &te + rat(3) * &te * &d)));
+    out.double_point = Some(dp);
+    let node = match d.sign() {
+        Ordering::Greater => NodeType::Crunode,
+        Ordering::Equal => NodeType::Cusp,
+        Ordering::Less => NodeType::Acnode,
+    };
+    out.node_type = Some(node);
+    out.class = CurveClass::Cubic(node);
+    match node {
+        NodeType::Crunode => {
+            out.reason = format!("d = {d} > 0: self-intersection at t_E ± √d, t_E = {te}");
+            out.double_point_parameters = vec![shifted(&te, &d, -1), shifted(&te, &d, 1)];
+        }
+        NodeType::Cusp => {
+            out.reason = format!("d = 0: cusp at t_E = {te}");
+            out.double_point_parameters = vec![Parameter::from_ratio(&te)];
+            out.cusp_parameters = vec![Parameter::from_ratio(&te)];
+        }
+        _ => {
+            out.reason = format!("d = {d} < 0: isolated double point; inflections at t_E ± √(−d/3), t_E = {te}");
+            let r = -d.clone() / rat(3);
+            out.inflection_parameters = vec![shifted(&te, &r, -1), shifted(&te, &r, 1)];
+        }
+    }
+    out.t_e_and_d = Some((te, d));
+}
+
+/// Simple real roots of `p'(t)` for a collinear curve `P(t) = a0 + v·p(t)`: where it turns back.
+fn turning_points(a: &[Point<BigRational>]) -> Vec<Parameter> {
+    let Some(v) = a[1..].iter().find(|p| p.coords.iter().any(|x| !Scalar::is_zero(x))) else {
+        return vec![];
+    };
+    // α_k with a_k = α_k v (v has a non-zero coordinate c)
+    let c = if Scalar::is_zero(&v.coords[0]) { 1 } else { 0 };
+    let alpha: Vec<BigRational> = a.iter().map(|p| p.coords[c].clone() / &v.coords[c]).collect();
+    // p'(t) = α1 + 2α2 t + 3α3 t²
+    let (c0, c1, c2) = (alpha[1].clone(), rat(2) * &alpha[2], rat(3) * &alpha[3]);
+    if Scalar::is_zero(&c2) {
+        if Scalar::is_zero(&c1) {
+            return vec![];
+        }
+        return vec![Parameter::from_ratio(&(-c0 / c1))];
+    }
+    let disc = c1.clone() * &c1 - rat(4) * &c2 * &c0;
+    if disc.sign() != Ordering::Greater {
+        return vec![]; // a double root: the speed vanishes but the curve does not turn back
+    }
+    let center = -c1 / (rat(2) * &c2);
+    let r = disc / (rat(4) * &c2 * &c2);
+    vec![shifted(&center, &r, -1), shifted(&center, &r, 1)]
+}
+
+/// The Loop–Blinn classification (GPU Gems 3, ch. 25), computed exactly from the Bézier control
+/// points: `a1 = b0·(b3×b2)`, `a2 = b1·(b0×b3)`, `a3 = b2·(b1×b0)` in homogeneous `(x, y, 1)`,
+/// `d1 = a1 − 2a2 + 3a3`, `d2 = −a2 + 3a3`, `d3 = 3a3`, discriminant `d1²(3d2² − 4d1d3)`.
+/// Returns `(d1, d2, d3)` and the node type it implies for a genuine cubic: serpentine =
+/// acnode (discriminant > 0), loop = crunode (< 0), cusp (= 0, d1 ≠ 0), cusp at infinity =
+/// explicit (d1 = 0, d2 ≠ 0); `None` for d1 = d2 = 0 (not a genuine cubic).
+pub fn loop_blinn(curve: &BezierCurve<BigRational>) -> ([BigRational; 3], Option<NodeType>) {
+    let b: Vec<Point<BigRational>> = curve.points().iter().map(|p| p.to_homogeneous(&rat(1))).collect();
+    let x = |i: usize, j: usize, k: usize| b[i].dot(&b[j].cross(&b[k]).expect("3-vectors"));
+    let (a1, a2, a3) = (x(0, 3, 2), x(1, 0, 3), x(2, 1, 0));
+    let d1 = a1 - rat(2) * &a2 + rat(3) * &a3;
+    let d2 = -a2 + rat(3) * &a3;
+    let d3 = rat(3) * a3;
+    let node = if !Scalar::is_zero(&d1) {
+        let disc = d1.clone() * &d1 * (rat(3) * &d2 * &d2 - rat(4) * &d1 * &d3);
+        Some(match disc.sign() {
+            Ordering::Greater => NodeType::Acnode,
+            Ordering::Less => NodeType::Crunode,
+            Ordering::Equal => NodeType::Cusp,
+        })
+    } else if !Scalar::is_zero(&d2) {
+        Some(NodeType::Explicit)
+    } else {
+        None
+    };
+    ([d1, d2, d3], node)
+}

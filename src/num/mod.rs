@@ -1,0 +1,14 @@
+//! Numbers: the [`Scalar`] field trait with its [`Exact`] marker, the integer-fast exact
+//! [`Rational`], exact quadratic extensions [`QuadraticExt`], points (vectors of scalars), and
+//! exact numbers and point lists read from text.
+//!
+//! The lowest layer: it imports nothing else of the crate but [`crate::error`].
+
+pub mod parse;
+pub mod point;
+pub mod quadratic_field;
+pub mod scalar;
+
+pub use point::Point;
+pub use quadratic_field::QuadraticExt;
+pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};

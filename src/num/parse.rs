@@ -1,0 +1,207 @@
+//! Exact numbers and control polygons from text.
+//!
+//! Numbers: an optional sign, then an integer (`-3`), a fraction (`-7/12`), or a decimal with an
+//! optional exponent (`0.125`, `.5`, `1.5e-3`, `2E3`). Decimals are exact: `0.1` is `1/10`.
+//! Rejected, with the token and its position: `nan`, `inf`, `1/0`, `1//2`, `0x10`, `1/-2`,
+//! empty tokens, tokens longer than [`MAX_TOKEN_LEN`] characters and exponents beyond
+//! ±[`MAX_EXPONENT`].
+//!
+//! Curves: numbers separated by whitespace and/or commas. When commas separate groups of
+//! several numbers (`"x0 y0, x1 y1"`), each group is one point and must have `dim` numbers;
+//! otherwise the numbers are read `dim` at a time.
+
+use crate::error::{Error, Position, Result};
+use crate::num::point::Point;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Pow, Zero};
+
+/// Longest accepted number token, in characters.
+pub const MAX_TOKEN_LEN: usize = 1000;
+/// Largest accepted decimal exponent magnitude (`1e1000` is accepted, `1e1001` is not).
+pub const MAX_EXPONENT: u32 = 1000;
+
+/// Parses one exact number.
+///
+/// # Errors
+/// [`Error::ParseNumber`] naming the token, `position` and the reason.
+///
+/// # Example
+/// ```
+/// use casteljau::num::parse::parse_number;
+/// let p = Default::default();
+/// assert_eq!(parse_number("1.5e-3", p).unwrap().to_string(), "3/2000");
+/// assert_eq!(parse_number("-14/12", p).unwrap().to_string(), "-7/6");
+/// assert!(parse_number("1/0", p).is_err());
+/// ```
+pub fn parse_number(token: &str, position: Position) -> Result<BigRational> {
+    let fail = |reason: &str| {
+        let shown: String = if token.chars().count() > 40 {
+            token.chars().take(37).chain("...".chars()).collect()
+        } else {
+            token.to_string()
+        };
+        Error::ParseNumber { token: shown, position, reason: reason.to_string() }
+    };
+    if token.is_empty() {
+        return Err(fail("empty number"));
+    }
+    if token.chars().count() > MAX_TOKEN_LEN {
+        return Err(fail(&format!("longer than {MAX_TOKEN_LEN} characters")));
+    }
+    let (negative, body) = match token.as_bytes()[0] {
+        b'-' => (true, &token[1..]),
+        b'+' => (false, &token[1..]),
+        _ => (false, token),
+    };
+    let value = if let Some((num, den)) = body.split_once('/') {
+        let n = digits(num).ok_or_else(|| fail("numerator is not a plain integer"))?;
+        let d = digits(den).ok_or_else(|| fail("denominator is not a plain positive integer"))?;
+        if d.is_zero() {
+            return Err(fail("zero denominator"));
+        }
+        BigRational::new(n, d)
+    } else {
+        parse_decimal(body).map_err(fail)?
+    };
+    Ok(if negative { -value } else { value })
+}
+
+/// A non-empty run of ASCII digits.
+fn digits(s: &str) -> Option<BigInt> {
+    if s.is_empty() || !s.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    s.parse().ok()
+}
+
+/// `int[.frac][e[±]exp]` with at least one digit in `int` or `frac`.
+fn parse_decimal(s: &str) -> std::result::Result<BigRational, &'static str> {
+    let (mantissa, exponent) = match s.find(['e', 'E']) {
+        Some(i) => (&s[..i], Some(&s[i + 1..])),
+        None => (s, None),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if int.is_empty() && frac.is_empty() {
+        return Err(if s.is_empty() { "sign without digits" } else { "not a number" });
+    }
+    if !int.bytes().all(|b| b.is_ascii_digit()) || !frac.bytes().all(|b| b.is_ascii_digit()) {
+        return Err("not an exact number (use integers, p/q or decimals)");
+    }
+    let mut exp: i64 = 0;
+    if let Some(e) = exponent {
+        let (eneg, edigits) = match e.as_bytes().first() {
+            Some(b'-') => (true, &e[1..]),
+            Some(b'+') => (false, &e[1..]),
+            _ => (false, e),
+        };
+        if edigits.is_empty() || !edigits.bytes().all(|b| b.is_ascii_digit()) {
+            return Err("malformed exponent");
+        }
+        let magnitude: u32 = match edigits.parse() {
+            Ok(m) if m <= MAX_EXPONENT => m,
+            _ => return Err("exponent too large (limit ±1000)"),
+        };
+        exp = if eneg { -(magnitude as i64) } else { magnitude as i64 };
+    }
+    let all_digits = format!("{int}{frac}");
+    let n: BigInt = all_digits.parse().map_err(|_| "not a number")?;
+    let scale = exp - frac.len() as i64;
+    let ten = BigInt::from(10u32);
+    Ok(if scale >= 0 {
+        BigRational::from_integer(n * Pow::pow(&ten, scale as u64))
+    } else {
+        BigRational::new(n, Pow::pow(&ten, (-scale) as u64))
+    })
+}
+
+/// A number token with its column and the separator seen before it.
+struct Token<'a> {
+    text: &'a str,
+    column: usize,
+    after_comma: bool,
+}
+
+/// Splits on whitespace and commas; `Err(column)` at a comma with no number before it.
+fn tokens(text: &str) -> std::result::Result<Vec<Token<'_>>, (usize, usize)> {
+    let mut out = Vec::new();
+    let mut start: Option<(usize, usize)> = None; // byte offset, column
+    let mut comma = false;
+    let mut column = 0;
+    for (i, c) in text.char_indices() {
+        column += 1;
+        let sep = c.is_whitespace() || c == ',';
+        match (sep, start) {
+            (true, Some((s, col))) => {
+                out.push(Token { text: &text[s..i], column: col, after_comma: comma });
+                comma = false;
+                start = None;
+            }
+            (false, None) => start = Some((i, column)),
+            _ => {}
+        }
+        if c == ',' {
+            if comma || out.is_empty() {
+                return Err((column, out.len() + 1));
+            }
+            comma = true;
+        }
+    }
+    match start {
+        Some((s, col)) => out.push(Token { text: &text[s..], column: col, after_comma: comma }),
+        None if comma => return Err((column + 1, out.len() + 1)),
+        None => {}
+    }
+    Ok(out)
+}
+
+/// Parses a control polygon of `dim`-dimensional points.
+///
+/// `line` is the 1-based line number for batch input (it appears in errors).
+///
+/// # Errors
+/// [`Error::ParseNumber`] for a bad token, [`Error::PointCount`] when the numbers do not form
+/// `dim`-dimensional points, [`Error::EmptyCurve`] for no numbers at all.
+///
+/// # Example
+/// ```
+/// use casteljau::num::parse::parse_points;
+/// let pts = parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap();
+/// assert_eq!(pts.len(), 4);
+/// assert_eq!(pts[1].to_string(), "(-1/3, 1)");
+/// assert!(parse_points("0 0, 1", 2, None).is_err());
+/// ```
+pub fn parse_points(text: &str, dim: usize, line: Option<usize>) -> Result<Vec<Point<BigRational>>> {
+    let toks = tokens(text).map_err(|(column, token)| Error::ParseNumber {
+        token: String::new(),
+        position: Position { line, column, token },
+        reason: "empty number between commas".to_string(),
+    })?;
+    if toks.is_empty() {
+        return Err(Error::EmptyCurve { line });
+    }
+    let mut values = Vec::with_capacity(toks.len());
+    for (k, t) in toks.iter().enumerate() {
+        let position = Position { line, column: t.column, token: k + 1 };
+        values.push(parse_number(t.text, position)?);
+    }
+    // Comma-grouped form: commas separate points, and some group has more than one number.
+    let mut groups: Vec<usize> = Vec::new();
+    for t in &toks {
+        if t.after_comma || groups.is_empty() {
+            groups.push(0);
+        }
+        *groups.last_mut().unwrap() += 1;
+    }
+    let grouped = groups.len() > 1 && groups.iter().any(|&g| g > 1);
+    if grouped {
+        if let Some((p, &found)) = groups.iter().enumerate().find(|(_, g)| **g != dim) {
+            return Err(Error::PointCount { found, dim, point: Some(p + 1), line });
+        }
+    } else if values.len() % dim != 0 {
+        return Err(Error::PointCount { found: values.len(), dim, point: None, line });
+    }
+    let mut it = values.into_iter();
+    let n = toks.len() / dim;
+    Ok((0..n).map(|_| Point::new(it.by_ref().take(dim).collect())).collect())
+}

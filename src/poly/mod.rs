@@ -1,0 +1,11 @@
+//! Univariate polynomials: the Bernstein basis and its conversions to and from the power form,
+//! exact polynomial arithmetic (trim, division, gcd, square-free part, quadratic roots), and
+//! exact real root isolation.
+//!
+//! Depends only on [`crate::num`].
+
+pub mod bernstein;
+pub mod polynomial;
+pub mod roots;
+
+pub use roots::{Root, isolate_bernstein, isolate_in};

@@ -1,0 +1,395 @@
+//! The expression language of `proofs/` identities: exact, with degree bounds.
+//!
+//! ```text
+//! expr   := term (("+" | "-") term)*
+//! term   := unary (("*" | "/") unary)*
+//! unary  := "-" unary | power
+//! power  := atom ("^" unary)?                       integer exponents (negative: 1/x^k)
+//! atom   := number | name | name "(" args ")" | "(" expr ")"
+//! number := digits ["." digits] [("e"|"E") ["+"|"-"] digits]      (exact: 0.1 = 1/10)
+//! ```
+//! Functions: `C(n, k)` binomial (0 for k > n), `B(i, n, x)` Bernstein `C(n,i) xⁱ (1−x)ⁿ⁻ⁱ`,
+//! `sum(r, a, b, e)` and `prod(r, a, b, e)` over integers `r = a..=b` (empty: 0 and 1).
+//! Integer arguments (exponents, `C`, the `i, n` of `B`, summation bounds) must not depend on
+//! the identity's variables.
+//!
+//! [`Expr::degree`] bounds the degree of an expression in one variable as a rational function
+//! `num/den` (`(num, den)` degrees, cross-multiplying divisions), so `lhs − rhs`, written over
+//! one denominator, has a numerator of degree ≤ `num`: the grid size that proves the identity.
+
+use crate::error::{Error, Result};
+use crate::num::parse::parse_number;
+use crate::num::scalar::{Rational, Scalar};
+use crate::poly::bernstein::binomial;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+use std::fmt;
+
+/// An expression tree.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    /// An exact number.
+    Num(BigRational),
+    /// A variable or integer parameter.
+    Var(String),
+    /// `−e`.
+    Neg(Box<Expr>),
+    /// `a op b` for `+ − * /`.
+    Bin(char, Box<Expr>, Box<Expr>),
+    /// `a ^ k`.
+    Pow(Box<Expr>, Box<Expr>),
+    /// `C(n, k)`.
+    Binom(Box<Expr>, Box<Expr>),
+    /// `B(i, n, x)`.
+    Bern(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// `sum(r, a, b, e)` (`true`) or `prod(r, a, b, e)` (`false`).
+    Fold(bool, String, Box<Expr>, Box<Expr>, Box<Expr>),
+}
+
+/// Why an evaluation has no value.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum EvalError {
+    /// A denominator vanished at this point (the point is skipped and replaced).
+    DivisionByZero,
+    /// Anything else (unknown name, non-integer exponent, …): a malformed claim.
+    Invalid(String),
+}
+
+/// A name → value binding list (few names: a linear scan is fastest).
+pub type Env = Vec<(String, Rational)>;
+
+fn lookup<'a>(env: &'a Env, name: &str) -> Option<&'a Rational> {
+    env.iter().rev().find(|(n, _)| n == name).map(|(_, v)| v)
+}
+
+struct Parser<'a> {
+    text: &'a str,
+    chars: Vec<(usize, char)>,
+    pos: usize,
+}
+
+/// Parses an expression.
+///
+/// # Errors
+/// [`Error::Expression`] naming the 1-based column and what was expected.
+///
+/// # Example
+/// ```
+/// use casteljau::proof::expr::parse_expr;
+/// let e = parse_expr("sum(r, j, n, B(j, r, s) * B(r, n, t))").unwrap();
+/// assert!(parse_expr("B(j, n, s*t").unwrap_err().to_string().contains("column 12"));
+/// # let _ = e;
+/// ```
+pub fn parse_expr(text: &str) -> Result<Expr> {
+    let mut p = Parser { text, chars: text.char_indices().collect(), pos: 0 };
+    let e = p.expr()?;
+    p.skip_ws();
+    if p.pos < p.chars.len() {
+        return Err(p.error(&format!("unexpected {:?}", p.chars[p.pos].1)));
+    }
+    Ok(e)
+}
+
+impl Parser<'_> {
+    fn error(&self, message: &str) -> Error {
+        Error::Expression { text: self.text.to_string(), column: self.pos + 1, message: message.to_string() }
+    }
+    fn skip_ws(&mut self) {
+        while self.pos < self.chars.len() && self.chars[self.pos].1.is_whitespace() {
+            self.pos += 1;
+        }
+    }
+    fn peek(&mut self) -> Option<char> {
+        self.skip_ws();
+        self.chars.get(self.pos).map(|c| c.1)
+    }
+    fn eat(&mut self, c: char) -> bool {
+        if self.peek() == Some(c) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+    fn expect(&mut self, c: char) -> Result<()> {
+        if self.eat(c) { Ok(()) } else { Err(self.error(&format!("expected {c:?}"))) }
+    }
+    fn expr(&mut self) -> Result<Expr> {
+        let mut e = self.term()?;
+        while let Some(op @ ('+' | '-')) = self.peek() {
+            self.pos += 1;
+            e = Expr::Bin(op, Box::new(e), Box::new(self.term()?));
+        }
+        Ok(e)
+    }
+    fn term(&mut self) -> Result<Expr> {
+        let mut e = self.unary()?;
+        while let Some(op @ ('*' | '/')) = self.peek() {
+            self.pos += 1;
+            e = Expr::Bin(op, Box::new(e), Box::new(self.unary()?));
+        }
+        Ok(e)
+    }
+    fn unary(&mut self) -> Result<Expr> {
+        if self.eat('-') {
+            return Ok(Expr::Neg(Box::new(self.unary()?)));
+        }
+        let base = self.atom()?;
+        if self.eat('^') {
+            return Ok(Expr::Pow(Box::new(base), Box::new(self.unary()?)));
+        }
+        Ok(base)
+    }
+    fn atom(&mut self) -> Result<Expr> {
+        match self.peek() {
+            Some('(') => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(')')?;
+                Ok(e)
+            }
+            Some(c) if c.is_ascii_digit() || c == '.' => {
+                let start = self.pos;
+                while self.pos < self.chars.len() {
+                    let c = self.chars[self.pos].1;
+                    let exp_sign = matches!(c, '+' | '-') && matches!(self.chars[self.pos - 1].1, 'e' | 'E');
+                    if c.is_ascii_digit() || c == '.' || c == 'e' || c == 'E' || exp_sign {
+                        self.pos += 1;
+                    } else {
+                        break;
+                    }
+                }
+                let tok: String = self.chars[start..self.pos].iter().map(|c| c.1).collect();
+                let pos = crate::error::Position { line: None, column: start + 1, token: 1 };
+                parse_number(&tok, pos).map(Expr::Num).map_err(|_| Error::Expression {
+                    text: self.text.to_string(),
+                    column: start + 1,
+                    message: format!("bad number {tok:?}"),
+                })
+            }
+            Some(c) if c.is_alphabetic() || c == '_' => {
+                let start = self.pos;
+                while self.pos < self.chars.len()
+                    && (self.chars[self.pos].1.is_alphanumeric() || self.chars[self.pos].1 == '_')
+                {
+                    self.pos += 1;
+                }
+                let name: String = self.chars[start..self.pos].iter().map(|c| c.1).collect();
+                if !self.eat('(') {
+                    return Ok(Expr::Var(name));
+                }
+                let args_at = self.pos;
+                let mut args = vec![self.expr()?];
+                while self.eat(',') {
+                    args.push(self.expr()?);
+                }
+                self.expect(')')?;
+                self.call(name, args, args_at)
+            }
+            Some(c) => Err(self.error(&format!("unexpected {c:?}"))),
+            None => Err(self.error("unexpected end of expression")),
+        }
+    }
+    fn call(&mut self, name: String, mut args: Vec<Expr>, at: usize) -> Result<Expr> {
+        let arity = |n: usize, args: &[Expr]| {
+            if args.len() == n {
+                Ok(())
+            } else {
+                Err(Error::Expression {
+                    text: self.text.to_string(),
+                    column: at,
+                    message: format!("{name} takes {n} arguments, got {}", args.len()),
+                })
+            }
+        };
+        let b = Box::new;
+        match name.as_str() {
+            "C" => {
+                arity(2, &args)?;
+                let k = args.pop().expect("2");
+                Ok(Expr::Binom(b(args.pop().expect("2")), b(k)))
+            }
+            "B" => {
+                arity(3, &args)?;
+                let x = args.pop().expect("3");
+                let n = args.pop().expect("3");
+                Ok(Expr::Bern(b(args.pop().expect("3")), b(n), b(x)))
+            }
+            "sum" | "prod" => {
+                arity(4, &args)?;
+                let body = args.pop().expect("4");
+                let hi = args.pop().expect("4");
+                let lo = args.pop().expect("4");
+                let Some(Expr::Var(r)) = args.pop() else {
+                    return Err(Error::Expression {
+                        text: self.text.to_string(),
+                        column: at,
+                        message: format!("the first argument of {name} is the index name"),
+                    });
+                };
+                Ok(Expr::Fold(name == "sum", r, b(lo), b(hi), b(body)))
+            }
+            _ => Err(Error::Expression {
+                text: self.text.to_string(),
+                column: at,
+                message: format!("unknown function {name}"),
+            }),
+        }
+    }
+}
+
+fn int_of(v: &Rational, what: &str) -> std::result::Result<i64, EvalError> {
+    if !v.0.is_integer() {
+        return Err(EvalError::Invalid(format!("{what} must be an integer, got {v}")));
+    }
+    v.0.to_integer().to_i64().ok_or_else(|| EvalError::Invalid(format!("{what} {v} is too large")))
+}
+
+/// Largest `|exponent|`, binomial `n` and summation length accepted.
+pub const MAX_INTEGER_ARGUMENT: i64 = 100_000;
+
+fn small_int(v: &Rational, what: &str) -> std::result::Result<i64, EvalError> {
+    let k = int_of(v, what)?;
+    if k.abs() > MAX_INTEGER_ARGUMENT {
+        return Err(EvalError::Invalid(format!("{what} {k} exceeds {MAX_INTEGER_ARGUMENT}")));
+    }
+    Ok(k)
+}
+
+fn pow(x: &Rational, k: i64) -> std::result::Result<Rational, EvalError> {
+    let p = crate::poly::bernstein::pow(x, k.unsigned_abs() as usize);
+    if k >= 0 {
+        Ok(p)
+    } else if p.is_zero() {
+        Err(EvalError::DivisionByZero)
+    } else {
+        Ok(Rational::one() / p)
+    }
+}
+
+impl Expr {
+    /// The exact value under `env`.
+    ///
+    /// # Errors
+    /// [`EvalError::DivisionByZero`] where a denominator vanishes; [`EvalError::Invalid`] for
+    /// unknown names or non-integer integer arguments.
+    pub fn eval(&self, env: &mut Env) -> std::result::Result<Rational, EvalError> {
+        Ok(match self {
+            Expr::Num(v) => Rational(v.clone()),
+            Expr::Var(n) => lookup(env, n).cloned().ok_or_else(|| EvalError::Invalid(format!("unknown name {n}")))?,
+            Expr::Neg(e) => -e.eval(env)?,
+            Expr::Bin(op, a, b) => {
+                let (x, y) = (a.eval(env)?, b.eval(env)?);
+                match op {
+                    '+' => x + y,
+                    '-' => x - y,
+                    '*' => x * y,
+                    _ if y.is_zero() => return Err(EvalError::DivisionByZero),
+                    _ => x / y,
+                }
+            }
+            Expr::Pow(a, k) => {
+                let k = small_int(&k.eval(env)?, "exponent")?;
+                pow(&a.eval(env)?, k)?
+            }
+            Expr::Binom(n, k) => {
+                let (n, k) = (small_int(&n.eval(env)?, "C's n")?, small_int(&k.eval(env)?, "C's k")?);
+                if n < 0 || k < 0 || k > n {
+                    Rational::zero()
+                } else {
+                    Rational(BigRational::from_integer(binomial(n as usize, k as usize)))
+                }
+            }
+            Expr::Bern(i, n, x) => {
+                let (i, n) = (small_int(&i.eval(env)?, "B's i")?, small_int(&n.eval(env)?, "B's n")?);
+                if n < 0 || i < 0 || i > n {
+                    Rational::zero()
+                } else {
+                    crate::poly::bernstein::bernstein(i as usize, n as usize, &x.eval(env)?)
+                }
+            }
+            Expr::Fold(is_sum, r, lo, hi, body) => {
+                let (lo, hi) = (small_int(&lo.eval(env)?, "lower bound")?, small_int(&hi.eval(env)?, "upper bound")?);
+                let mut acc = if *is_sum { Rational::zero() } else { Rational::one() };
+                for k in lo..=hi {
+                    env.push((r.clone(), Rational::from_i64(k)));
+                    let v = body.eval(env);
+                    env.pop();
+                    acc = if *is_sum { acc + v? } else { acc * v? };
+                }
+                acc
+            }
+        })
+    }
+
+    /// Degree bound `(num, den)` in `var` of this expression as a rational function, with
+    /// integer parameters bound in `params` (integer arguments are evaluated there).
+    ///
+    /// # Errors
+    /// [`EvalError::Invalid`] when an integer argument depends on a variable.
+    pub fn degree(&self, var: &str, params: &mut Env) -> std::result::Result<(usize, usize), EvalError> {
+        let int = |e: &Expr, params: &mut Env, what: &str| -> std::result::Result<i64, EvalError> {
+            let v = e
+                .eval(params)
+                .map_err(|_| EvalError::Invalid(format!("{what} must depend only on integer parameters")))?;
+            small_int(&v, what)
+        };
+        Ok(match self {
+            Expr::Num(_) => (0, 0),
+            Expr::Var(n) => ((n == var && lookup(params, n).is_none()) as usize, 0),
+            Expr::Neg(e) => e.degree(var, params)?,
+            Expr::Bin(op, a, b) => {
+                let ((na, da), (nb, db)) = (a.degree(var, params)?, b.degree(var, params)?);
+                match op {
+                    '+' | '-' => ((na + db).max(nb + da), da + db),
+                    '*' => (na + nb, da + db),
+                    _ => (na + db, da + nb),
+                }
+            }
+            Expr::Pow(a, k) => {
+                let k = int(k, params, "exponent")?;
+                let (n, d) = a.degree(var, params)?;
+                let m = k.unsigned_abs() as usize;
+                if k >= 0 { (n * m, d * m) } else { (d * m, n * m) }
+            }
+            Expr::Binom(n, k) => {
+                int(n, params, "C's n")?;
+                int(k, params, "C's k")?;
+                (0, 0)
+            }
+            Expr::Bern(i, n, x) => {
+                int(i, params, "B's i")?;
+                let n = int(n, params, "B's n")?.max(0) as usize;
+                let (nx, dx) = x.degree(var, params)?;
+                (n * nx.max(dx), n * dx)
+            }
+            Expr::Fold(is_sum, r, lo, hi, body) => {
+                let (lo, hi) = (int(lo, params, "lower bound")?, int(hi, params, "upper bound")?);
+                let mut acc = (0, 0);
+                for k in lo..=hi {
+                    params.push((r.clone(), Rational::from_i64(k)));
+                    let d = body.degree(var, params);
+                    params.pop();
+                    let (n, dd) = d?;
+                    acc = if *is_sum { ((acc.0 + dd).max(n + acc.1), acc.1 + dd) } else { (acc.0 + n, acc.1 + dd) };
+                }
+                acc
+            }
+        })
+    }
+}
+
+impl fmt::Display for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Expr::Num(v) => write!(f, "{v}"),
+            Expr::Var(n) => write!(f, "{n}"),
+            Expr::Neg(e) => write!(f, "-({e})"),
+            Expr::Bin(op, a, b) => write!(f, "({a} {op} {b})"),
+            Expr::Pow(a, k) => write!(f, "({a})^({k})"),
+            Expr::Binom(n, k) => write!(f, "C({n}, {k})"),
+            Expr::Bern(i, n, x) => write!(f, "B({i}, {n}, {x})"),
+            Expr::Fold(s, r, a, b, e) => write!(f, "{}({r}, {a}, {b}, {e})", if *s { "sum" } else { "prod" }),
+        }
+    }
+}

@@ -1,0 +1,242 @@
+//! Proof by exact testing: the grid prover.
+//!
+//! A polynomial `f(x_1, …, x_k)` of degree at most `d_j` in each variable `x_j` that vanishes on
+//! a grid `G_1 × … × G_k` of distinct values, `|G_j| = d_j + 1`, is the zero polynomial
+//! (induction on `k`: for each fixed grid value of `x_1..x_{k−1}` a univariate polynomial of
+//! degree ≤ `d_k` with `d_k + 1` roots is zero). So an identity `lhs = rhs` whose difference
+//! obeys the degree bounds is **proved** by checking it exactly on the grid — and refuted, with
+//! an exact counterexample, when one grid point fails.
+//!
+//! The closure is generic code run over an [`Exact`] scalar; the caller vouches for the degree
+//! bounds (they are part of the statement being proved, and appear in the certificate).
+//!
+//! # Example
+//! ```
+//! use casteljau::{proof, Scalar};
+//! use num_rational::BigRational;
+//! // (s + t)² = s² + 2st + t²: degree ≤ 2 in s and in t.
+//! let cert = proof::identity::<BigRational>(&[2, 2], |v| {
+//!     let (s, t) = (&v[0], &v[1]);
+//!     let l = (s.clone() + t) * (s.clone() + t);
+//!     l - (s.clone() * s + BigRational::from_i64(2) * s * t + t.clone() * t)
+//! }).unwrap();
+//! assert_eq!(cert.points_checked, 9);
+//! // A wrong identity yields an exact counterexample.
+//! let err = proof::identity::<BigRational>(&[2, 2], |v| {
+//!     let (s, t) = (&v[0], &v[1]);
+//!     (s.clone() + t) * (s.clone() + t) - (s.clone() * s + t.clone() * t)
+//! }).unwrap_err();
+//! assert!(!err.value.is_zero());
+//! ```
+
+pub mod expr;
+
+use crate::error::{Error, Result};
+use crate::num::scalar::Exact;
+use std::fmt;
+
+/// Largest number of grid points one check may visit.
+pub const MAX_GRID_POINTS: usize = 50_000_000;
+
+/// Evidence that an identity holds: the degree bounds and the grid it vanished on.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Certificate {
+    /// Per-variable degree bounds `d_j`.
+    pub degrees: Vec<usize>,
+    /// Grid values per variable (`d_j + 1` distinct exact values each), as exact strings.
+    pub nodes: Vec<Vec<String>>,
+    /// Number of grid points evaluated.
+    pub points_checked: usize,
+    /// Number of identities checked on each point (for batched checks).
+    pub identities: usize,
+}
+
+impl fmt::Display for Certificate {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let sizes: Vec<String> = self.nodes.iter().map(|n| n.len().to_string()).collect();
+        let degs: Vec<String> = self.degrees.iter().map(|d| d.to_string()).collect();
+        write!(
+            f,
+            "degree ≤ ({}) per variable; vanishes on a {} grid of distinct exact points ({} points",
+            degs.join(", "),
+            sizes.join("×"),
+            self.points_checked
+        )?;
+        if self.identities > 1 {
+            write!(f, ", {} identities each", self.identities)?;
+        }
+        write!(f, ")")
+    }
+}
+
+/// An exact point where an identity fails.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Counterexample<S> {
+    /// The variables' values.
+    pub point: Vec<S>,
+    /// The (non-zero) value of `lhs − rhs` there.
+    pub value: S,
+    /// Which identity of a batch failed (0 for a single identity).
+    pub identity: usize,
+}
+
+impl<S: fmt::Display> fmt::Display for Counterexample<S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let pt: Vec<String> = self.point.iter().map(|v| v.to_string()).collect();
+        write!(f, "at ({}) lhs − rhs = {}", pt.join(", "), self.value)
+    }
+}
+
+/// A grid of distinct exact values per variable.
+#[derive(Clone, Debug)]
+pub struct GridProver<S> {
+    degrees: Vec<usize>,
+    nodes: Vec<Vec<S>>,
+}
+
+impl<S: Exact> GridProver<S> {
+    /// The default grid: the integers `0, 1, …, d_j` for variable `j`.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] when the grid has more than [`MAX_GRID_POINTS`] points.
+    pub fn new(degrees: &[usize]) -> Result<Self> {
+        let nodes = degrees.iter().map(|&d| (0..=d as i64).map(S::from_i64).collect()).collect();
+        Self::with_nodes(degrees, nodes)
+    }
+
+    /// A grid with given values; variable `j` needs at least `d_j + 1` pairwise distinct values
+    /// (only the first `d_j + 1` are used).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for too few or repeated values, [`Error::TooLarge`] as in
+    /// [`Self::new`].
+    pub fn with_nodes(degrees: &[usize], nodes: Vec<Vec<S>>) -> Result<Self> {
+        if nodes.len() != degrees.len() {
+            return Err(Error::InvalidArgument {
+                message: format!("{} degree bounds but {} node lists", degrees.len(), nodes.len()),
+            });
+        }
+        let mut total: usize = 1;
+        let mut kept = Vec::with_capacity(nodes.len());
+        for (j, (d, mut vals)) in degrees.iter().zip(nodes).enumerate() {
+            if vals.len() <= *d {
+                return Err(Error::InvalidArgument {
+                    message: format!("variable {j} needs {} grid values, got {}", d + 1, vals.len()),
+                });
+            }
+            vals.truncate(d + 1);
+            for a in 0..vals.len() {
+                if vals[a + 1..].contains(&vals[a]) {
+                    return Err(Error::InvalidArgument {
+                        message: format!("variable {j}: grid value {} repeats", vals[a]),
+                    });
+                }
+            }
+            total = total.saturating_mul(d + 1);
+            kept.push(vals);
+        }
+        if total > MAX_GRID_POINTS {
+            return Err(Error::TooLarge { what: "grid points", value: total, limit: MAX_GRID_POINTS });
+        }
+        Ok(GridProver { degrees: degrees.to_vec(), nodes: kept })
+    }
+
+    /// Checks a batch of identities `f(x) = 0` (each entry of the returned vector one identity,
+    /// all obeying the same degree bounds) on every grid point, in lexicographic order.
+    ///
+    /// # Errors
+    /// The first failing point as a [`Counterexample`].
+    pub fn check_all(&self, mut f: impl FnMut(&[S]) -> Vec<S>) -> std::result::Result<Certificate, Counterexample<S>> {
+        match self.try_check_all(|x| Ok::<_, std::convert::Infallible>(f(x))) {
+            Ok(r) => r,
+            Err(never) => match never {},
+        }
+    }
+
+    /// [`Self::check_all`] for a closure that may fail at a point (e.g. a vanishing
+    /// denominator): the closure's error stops the check and is returned as the outer `Err`,
+    /// so the caller can choose other grid values.
+    ///
+    /// # Errors
+    /// The closure's error.
+    pub fn try_check_all<E>(
+        &self,
+        mut f: impl FnMut(&[S]) -> std::result::Result<Vec<S>, E>,
+    ) -> std::result::Result<std::result::Result<Certificate, Counterexample<S>>, E> {
+        let k = self.nodes.len();
+        let mut index = vec![0usize; k];
+        let mut point: Vec<S> = self.nodes.iter().map(|n| n[0].clone()).collect();
+        let mut checked = 0;
+        let mut identities = 0;
+        loop {
+            let values = f(&point)?;
+            identities = identities.max(values.len());
+            if let Some((i, v)) = values.into_iter().enumerate().find(|(_, v)| !v.is_zero()) {
+                return Ok(Err(Counterexample { point, value: v, identity: i }));
+            }
+            checked += 1;
+            // advance the odometer, last variable fastest
+            let mut j = k;
+            loop {
+                if j == 0 {
+                    return Ok(Ok(self.certificate(checked, identities)));
+                }
+                j -= 1;
+                index[j] += 1;
+                if index[j] < self.nodes[j].len() {
+                    point[j] = self.nodes[j][index[j]].clone();
+                    break;
+                }
+                index[j] = 0;
+                point[j] = self.nodes[j][0].clone();
+            }
+        }
+    }
+
+    /// Checks one identity `f(x) = 0` on the grid.
+    ///
+    /// # Errors
+    /// The first failing point as a [`Counterexample`].
+    pub fn check(&self, mut f: impl FnMut(&[S]) -> S) -> std::result::Result<Certificate, Counterexample<S>> {
+        self.check_all(|x| vec![f(x)])
+    }
+
+    fn certificate(&self, points_checked: usize, identities: usize) -> Certificate {
+        Certificate {
+            degrees: self.degrees.clone(),
+            nodes: self.nodes.iter().map(|n| n.iter().map(|v| v.to_string()).collect()).collect(),
+            points_checked,
+            identities,
+        }
+    }
+}
+
+/// Proves `f ≡ 0` for a polynomial `f` of degree ≤ `degrees[j]` in variable `j`, on the default
+/// grid `{0, …, d_j}`; see the module docs.
+///
+/// # Errors
+/// A [`Counterexample`] where `f ≠ 0`.
+///
+/// # Panics
+/// **Panics** when the grid exceeds [`MAX_GRID_POINTS`] (use [`GridProver::new`] to get an error).
+pub fn identity<S: Exact>(
+    degrees: &[usize],
+    f: impl FnMut(&[S]) -> S,
+) -> std::result::Result<Certificate, Counterexample<S>> {
+    GridProver::new(degrees).expect("grid within limits").check(f)
+}
+
+/// [`identity`] for a batch of identities sharing one grid (each closure result entry is one
+/// identity, e.g. one per index `j`).
+///
+/// # Errors
+/// A [`Counterexample`] naming the failing identity's index.
+///
+/// # Panics
+/// **Panics** when the grid exceeds [`MAX_GRID_POINTS`].
+pub fn identities<S: Exact>(
+    degrees: &[usize],
+    f: impl FnMut(&[S]) -> Vec<S>,
+) -> std::result::Result<Certificate, Counterexample<S>> {
+    GridProver::new(degrees).expect("grid within limits").check_all(f)
+}

@@ -1,0 +1,318 @@
+//! Rational splines with scale ratios (knot intervals) and their rational Bézier segments
+//! (seed 002 §3, (24)–(32), and the quadratic construction (53)–(54) of §5).
+//!
+//! A degree-`n` rational spline has control points `q_0 … q_m` with weights `k_i` and scale ratios
+//! `λ_0 … λ_{m+n−1}` (> 0): the knot intervals, knots `u_0 = 0`, `u_{j+1} = u_j + λ_j`. Its
+//! segments `s = 0 … m−n` live on `[u_{n+s}, u_{n+s+1}]`, the interval of ratio `λ_{n+s}`.
+//!
+//! Three routes to the same rational Bézier segments, checked against each other:
+//! * [`RationalSpline::eval`]: the NURBS itself, by de Boor's recursion on homogeneous points
+//!   (`(24)`: `Σ w_i P_i N_i(t) / Σ w_i N_i(t)`);
+//! * [`RationalSpline::to_bezier_boehm`]: Boehm knot insertion until every segment boundary has
+//!   multiplicity `n`;
+//! * [`seed_cubic_segment`] and [`seed_quadratic_segment`]: the seed's rational interpolation
+//!   formulas (25)–(29) and (53), as printed or corrected.
+
+pub mod net;
+
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use crate::num::scalar::{Exact, Scalar, rat};
+use crate::rational::rational_bezier::{RationalBezier, divide};
+use num_rational::BigRational;
+use std::cmp::Ordering;
+
+/// Largest spline degree accepted.
+pub const MAX_SPLINE_DEGREE: usize = 12;
+
+/// A rational spline curve.
+///
+/// # Invariants
+/// `homogeneous.len() ≥ degree + 1`; `knots.len() = homogeneous.len() + degree`; knots strictly
+/// increase (all scale ratios positive).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RationalSpline {
+    /// The degree `n`.
+    pub degree: usize,
+    /// Homogeneous control points `(k_i q_i, k_i)`.
+    pub homogeneous: Vec<Point<BigRational>>,
+    /// Knots `u_0 … u_{m+n}` (partial sums of the scale ratios).
+    pub knots: Vec<BigRational>,
+}
+
+impl RationalSpline {
+    /// A spline from control points, weights and scale ratios (`m + n` of them).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for wrong counts, a non-positive ratio or weight of 0, or a
+    /// degree above [`MAX_SPLINE_DEGREE`].
+    pub fn new(
+        degree: usize,
+        points: &[Point<BigRational>],
+        weights: &[BigRational],
+        ratios: &[BigRational],
+    ) -> Result<Self> {
+        let bad = |m: String| Error::InvalidArgument { message: m };
+        if degree == 0 || degree > MAX_SPLINE_DEGREE {
+            return Err(bad(format!("spline degree must be 1..={MAX_SPLINE_DEGREE}")));
+        }
+        if points.len() < degree + 1 {
+            return Err(bad(format!(
+                "a degree-{degree} spline needs at least {} control points, got {}",
+                degree + 1,
+                points.len()
+            )));
+        }
+        if weights.len() != points.len() {
+            return Err(bad(format!("{} weights for {} control points", weights.len(), points.len())));
+        }
+        let need = points.len() - 1 + degree;
+        if ratios.len() != need {
+            return Err(bad(format!(
+                "{} control points of degree {degree} need {need} scale ratios, got {}",
+                points.len(),
+                ratios.len()
+            )));
+        }
+        if let Some(i) = ratios.iter().position(|r| r.sign() != Ordering::Greater) {
+            return Err(bad(format!("scale ratio {} must be positive", i + 1)));
+        }
+        if let Some(i) = weights.iter().position(Scalar::is_zero) {
+            return Err(bad(format!("weight {} is 0", i + 1)));
+        }
+        let mut knots = vec![rat(0)];
+        for r in ratios {
+            let next = knots.last().expect("non-empty").clone() + r;
+            knots.push(next);
+        }
+        let homogeneous = points.iter().zip(weights).map(|(p, w)| p.to_homogeneous(w)).collect();
+        Ok(RationalSpline { degree, homogeneous, knots })
+    }
+
+    /// A spline from homogeneous control points (e.g. the intermediate points of a net).
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn from_homogeneous(
+        degree: usize,
+        homogeneous: Vec<Point<BigRational>>,
+        ratios: &[BigRational],
+    ) -> Result<Self> {
+        let d = homogeneous.first().map_or(1, Point::dim) - 1;
+        let pts: Vec<Point<BigRational>> = homogeneous
+            .iter()
+            .map(|h| {
+                h.from_homogeneous()
+                    .ok_or_else(|| Error::InvalidArgument { message: "a spline point at infinity".into() })
+            })
+            .collect::<Result<_>>()?;
+        let ws: Vec<BigRational> = homogeneous.iter().map(|h| h.coords[d].clone()).collect();
+        Self::new(degree, &pts, &ws, ratios)
+    }
+
+    /// Number of segments, `m − n + 1`.
+    pub fn segments(&self) -> usize {
+        self.homogeneous.len() - self.degree
+    }
+
+    /// The parameter interval `[u_{n+s}, u_{n+s+1}]` of segment `s`.
+    pub fn span(&self, s: usize) -> (BigRational, BigRational) {
+        (self.knots[self.degree + s].clone(), self.knots[self.degree + s + 1].clone())
+    }
+
+    /// The homogeneous NURBS point at `u` in segment `s` (de Boor's recursion).
+    pub fn eval_homogeneous(&self, s: usize, u: &BigRational) -> Point<BigRational> {
+        let n = self.degree;
+        let j = n + s;
+        let mut d: Vec<Point<BigRational>> = self.homogeneous[j - n..=j].to_vec();
+        for r in 1..=n {
+            for i in (r..=n).rev() {
+                let idx = j - n + i; // control point index
+                let (lo, hi) = (&self.knots[idx], &self.knots[idx + n + 1 - r]);
+                let a = (u.clone() - lo) / (hi.clone() - lo);
+                d[i] = d[i - 1].lerp(&d[i], &a);
+            }
+        }
+        d.swap_remove(n)
+    }
+
+    /// The NURBS point at `u` in segment `s`.
+    ///
+    /// # Errors
+    /// [`Error::WeightsVanish`] where the denominator is 0.
+    pub fn eval(&self, s: usize, u: &BigRational) -> Result<Point<BigRational>> {
+        self.eval_homogeneous(s, u)
+            .from_homogeneous()
+            .ok_or(Error::WeightsVanish { interval: (u.to_string(), u.to_string()) })
+    }
+
+    /// Rational Bézier segments by Boehm knot insertion (each boundary knot to multiplicity `n`).
+    pub fn to_bezier_boehm(&self) -> Vec<RationalBezier<BigRational>> {
+        let n = self.degree;
+        let (mut u, mut p) = (self.knots.clone(), self.homogeneous.clone());
+        let m = p.len() - 1;
+        let bounds: Vec<BigRational> = self.knots[n..=m + 1].to_vec();
+        for b in &bounds {
+            while u.iter().filter(|x| *x == b).count() < n {
+                let pm = p.len() - 1;
+                // k in [n, pm] with u_k ≤ b ≤ u_{k+1}, the largest such
+                let k = (n..=pm).rev().find(|&k| u[k] <= *b).expect("b in the domain");
+                let mut q = Vec::with_capacity(p.len() + 1);
+                q.extend_from_slice(&p[..=k - n]);
+                for i in k - n + 1..=k {
+                    let a = (b.clone() - &u[i]) / (u[i + n].clone() - &u[i]);
+                    q.push(p[i - 1].lerp(&p[i], &a));
+                }
+                q.extend_from_slice(&p[k..]);
+                p = q;
+                u.insert(k + 1, b.clone());
+            }
+        }
+        bounds
+            .windows(2)
+            .map(|w| {
+                let k = u.iter().rposition(|x| *x == w[0]).expect("boundary knot");
+                RationalBezier::from_homogeneous(p[k - n..=k].to_vec()).expect("non-zero homogeneous points")
+            })
+            .collect()
+    }
+
+    /// The local scale ratio `λ_i` around segment `s` (`i = 0` is the segment's own interval).
+    pub fn local_ratio(&self, s: usize, i: i64) -> BigRational {
+        let j = (self.degree + s) as i64 + i;
+        self.knots[j as usize + 1].clone() - &self.knots[j as usize]
+    }
+}
+
+/// Which version of the seed's formulas to use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Printed {
+    /// As printed in the seed.
+    AsPrinted,
+    /// As corrected (weights of the far points in every rational ratio).
+    Corrected,
+}
+
+fn w_lin(a: &BigRational, b: &BigRational, x: &BigRational, y: &BigRational) -> BigRational {
+    // 𝒲[a:b](x, y) for numbers: (b x + a y)/(a + b)
+    (b.clone() * x + a.clone() * y) / (a.clone() + b)
+}
+
+/// Seed 002 (25)–(29): the rational Bézier segment `s` of a cubic rational spline. `P_{-1}` and
+/// `P_4` are the neighbouring junction helpers; `P0 = 𝒲[λ_{−1}w_1 : λ_0 w_{−1}](P_{−1}, P_1)`, etc.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] unless the spline is cubic.
+pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezier<BigRational>> {
+    if sp.degree != 3 {
+        return Err(Error::InvalidArgument { message: "(25)-(29) are for cubic splines".into() });
+    }
+    let l = |i: i64| sp.local_ratio(s, i);
+    let q: Vec<Point<BigRational>> =
+        sp.homogeneous[s..s + 4].iter().map(|h| h.from_homogeneous().expect("finite")).collect();
+    let k: Vec<BigRational> = sp.homogeneous[s..s + 4].iter().map(|h| h.coords[h.dim() - 1].clone()).collect();
+    // local names: q_{-1} = q[0], q0 = q[1], q1 = q[2], q2 = q[3]
+    let fail = || Error::InvalidArgument { message: "a ratio of the construction vanishes".into() };
+    let (lm2, lm1, l0, l1, l2) = (l(-2), l(-1), l(0), l(1), l(2));
+    // (29) weights
+    let wm1 = w_lin(&(lm2.clone() + &lm1), &l0, &k[0], &k[1]);
+    let w1 = w_lin(&lm1, &(l0.clone() + &l1), &k[1], &k[2]);
+    let w2 = w_lin(&(lm1.clone() + &l0), &l1, &k[1], &k[2]);
+    let w4 = w_lin(&l0, &(l1.clone() + &l2), &k[2], &k[3]);
+    let w0 = w_lin(&lm1, &l0, &wm1, &w1);
+    let w3 = w_lin(&l0, &l1, &w2, &w4);
+    // (28) points
+    let pm1 = divide(&((lm2.clone() + &lm1) * &k[1]), &(l0.clone() * &k[0]), &q[0], &q[1]).ok_or_else(fail)?;
+    let p1 = divide(&(lm1.clone() * &k[2]), &((l0.clone() + &l1) * &k[1]), &q[1], &q[2]).ok_or_else(fail)?;
+    let p2 = divide(&((lm1.clone() + &l0) * &k[2]), &(l1.clone() * &k[1]), &q[1], &q[2]).ok_or_else(fail)?;
+    let p4 = divide(&(l0.clone() * &k[3]), &((l1.clone() + &l2) * &k[2]), &q[2], &q[3]).ok_or_else(fail)?;
+    let p0 = divide(&(lm1.clone() * &w1), &(l0.clone() * &wm1), &pm1, &p1).ok_or_else(fail)?;
+    let p3 = divide(&(l0.clone() * &w4), &(l1.clone() * &w2), &p2, &p4).ok_or_else(fail)?;
+    RationalBezier::new(vec![p0, p1, p2, p3], vec![w0, w1, w2, w3])
+}
+
+/// Seed 002 (53) for a curve: the rational Bézier segment `s` of a quadratic rational spline,
+/// `P'_0 = 𝒲[λ_{−1}k_? : λ_0 k_0](q_0, q_1)`, `P'_1 = q_1`, `P'_2 = 𝒲[λ_0 k_2 : λ_1 k_?](q_1, q_2)`.
+/// As printed the `?` are `k_0` and `k_2` (the same weight on both sides); corrected they are
+/// `k_1` (the weight of the far point, as in (28)).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] unless the spline is quadratic.
+pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Printed) -> Result<RationalBezier<BigRational>> {
+    if sp.degree != 2 {
+        return Err(Error::InvalidArgument { message: "(53) is for quadratic splines".into() });
+    }
+    let (lm1, l0, l1) = (sp.local_ratio(s, -1), sp.local_ratio(s, 0), sp.local_ratio(s, 1));
+    let q: Vec<Point<BigRational>> =
+        sp.homogeneous[s..s + 3].iter().map(|h| h.from_homogeneous().expect("finite")).collect();
+    let k: Vec<BigRational> = sp.homogeneous[s..s + 3].iter().map(|h| h.coords[h.dim() - 1].clone()).collect();
+    let fail = || Error::InvalidArgument { message: "a ratio of the construction vanishes".into() };
+    let (left_far, right_near) = match version {
+        Printed::AsPrinted => (k[0].clone(), k[2].clone()),
+        Printed::Corrected => (k[1].clone(), k[1].clone()),
+    };
+    let p0 = divide(&(lm1.clone() * &left_far), &(l0.clone() * &k[0]), &q[0], &q[1]).ok_or_else(fail)?;
+    let p2 = divide(&(l0.clone() * &k[2]), &(l1.clone() * &right_near), &q[1], &q[2]).ok_or_else(fail)?;
+    let w0 = w_lin(&lm1, &l0, &k[0], &k[1]);
+    let w2 = w_lin(&l0, &l1, &k[1], &k[2]);
+    RationalBezier::new(vec![p0, q[1].clone(), p2], vec![w0, k[1].clone(), w2])
+}
+
+/// One failed check of [`check_segments`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SegmentMismatch {
+    /// Segment `s` differs from the NURBS at its local parameter `t`.
+    NotTheNurbs {
+        /// The segment.
+        segment: usize,
+        /// The local parameter in `[0, 1]`.
+        t: BigRational,
+    },
+    /// Derivative of order `order` jumps at the joint after segment `segment`.
+    Discontinuous {
+        /// The left segment.
+        segment: usize,
+        /// The derivative order.
+        order: usize,
+    },
+}
+
+/// Proves that `segments` are the NURBS `sp` on its spans (rational of type ≤ `(n, n)` in the
+/// local parameter: `2n + 1` exact parameters decide each) and that consecutive segments join
+/// with `C^{n−1}` continuity in the spline parameter (`d^r/du^r = λ^{−r} d^r/dt^r`).
+///
+/// # Errors
+/// The first mismatch found.
+pub fn check_segments(
+    sp: &RationalSpline,
+    segments: &[RationalBezier<BigRational>],
+) -> std::result::Result<usize, SegmentMismatch> {
+    let n = sp.degree;
+    let mut points = 0;
+    for (s, seg) in segments.iter().enumerate() {
+        let (a, b) = sp.span(s);
+        for k in 0..=2 * n {
+            let t = BigRational::new((k as i64).into(), ((2 * n) as i64).into());
+            let u = a.clone() + (b.clone() - &a) * &t;
+            match (seg.eval(&t), sp.eval(s, &u)) {
+                (Ok(x), Ok(y)) if x == y => points += 1,
+                (Err(_), Err(_)) => {}
+                _ => return Err(SegmentMismatch::NotTheNurbs { segment: s, t }),
+            }
+        }
+    }
+    for s in 0..segments.len().saturating_sub(1) {
+        let (la, lb) = (sp.local_ratio(s, 0), sp.local_ratio(s + 1, 0));
+        let left = segments[s].derivatives_at(&rat(1), n - 1);
+        let right = segments[s + 1].derivatives_at(&rat(0), n - 1);
+        let (Ok(left), Ok(right)) = (left, right) else { continue };
+        for r in 0..n {
+            let sl = crate::poly::bernstein::pow(&la, r);
+            let sr = crate::poly::bernstein::pow(&lb, r);
+            if left[r].scale(&sr) != right[r].scale(&sl) {
+                return Err(SegmentMismatch::Discontinuous { segment: s, order: r });
+            }
+        }
+    }
+    Ok(points)
+}

@@ -1,0 +1,278 @@
+//! Rational spline nets → rational Bézier patches (seed 002 §5, (50)–(54), Figs. 10–11).
+//!
+//! A net `q_ij` (`i` along `u`, `j` along `v`) with weights `k_ij`, degree `(n_u, n_v)` and scale
+//! ratios `λ` (along `u`) and `μ` (along `v`). Each column is a rational spline in `u`: converting
+//! every column gives intermediate rational Bézier rows (51)–(52); converting those rows in `v`
+//! gives the patches. The seed says the order (columns or rows first) does not matter: both
+//! orders are computed and compared exactly. The patches are checked against the tensor-product
+//! NURBS on their spans, and their joins for `C^{min(n_u, n_v) − 1}` continuity.
+
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use crate::num::scalar::rat;
+use crate::rational::rational_bezier::RationalBezier;
+use crate::spline::{Printed, RationalSpline, seed_quadratic_segment};
+use crate::surface::RationalPatch;
+use num_rational::BigRational;
+
+/// How each curve of the net is converted.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Conversion {
+    /// Boehm knot insertion (any degree).
+    Boehm,
+    /// The seed's quadratic formulas (53)–(54), as printed or corrected (degree (2, 2)).
+    SeedQuadratic(Printed),
+}
+
+/// A rational spline net.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SplineNet {
+    /// Degrees `(n_u, n_v)`.
+    pub degree: (usize, usize),
+    /// Homogeneous control points, `rows[i][j]`.
+    pub rows: Vec<Vec<Point<BigRational>>>,
+    /// Scale ratios along `u`.
+    pub lambda: Vec<BigRational>,
+    /// Scale ratios along `v`.
+    pub mu: Vec<BigRational>,
+}
+
+fn convert(sp: &RationalSpline, how: Conversion) -> Result<Vec<RationalBezier<BigRational>>> {
+    match how {
+        Conversion::Boehm => Ok(sp.to_bezier_boehm()),
+        Conversion::SeedQuadratic(v) => (0..sp.segments()).map(|s| seed_quadratic_segment(sp, s, v)).collect(),
+    }
+}
+
+fn transpose<T: Clone>(m: &[Vec<T>]) -> Vec<Vec<T>> {
+    (0..m[0].len()).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect()
+}
+
+impl SplineNet {
+    /// A net from affine points, weights and ratios.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for ragged input or counts that do not fit the degrees.
+    pub fn new(
+        degree: (usize, usize),
+        points: Vec<Vec<Point<BigRational>>>,
+        weights: Vec<Vec<BigRational>>,
+        lambda: Vec<BigRational>,
+        mu: Vec<BigRational>,
+    ) -> Result<Self> {
+        let cols = points.first().map_or(0, Vec::len);
+        if points.is_empty()
+            || points.iter().any(|r| r.len() != cols)
+            || weights.len() != points.len()
+            || weights.iter().any(|r| r.len() != cols)
+        {
+            return Err(Error::InvalidArgument {
+                message: "a net needs equal-length rows of points and weights".into(),
+            });
+        }
+        let rows = points
+            .iter()
+            .zip(&weights)
+            .map(|(p, w)| p.iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect())
+            .collect();
+        let net = SplineNet { degree, rows, lambda, mu };
+        // validate both directions once
+        RationalSpline::from_homogeneous(degree.0, net.rows.iter().map(|r| r[0].clone()).collect(), &net.lambda)?;
+        RationalSpline::from_homogeneous(degree.1, net.rows[0].clone(), &net.mu)?;
+        Ok(net)
+    }
+
+    /// The patches `[s][t]` (u-segment `s`, v-segment `t`), converting columns first
+    /// (`columns_first = true`, the seed's order (50)–(52)) or rows first.
+    ///
+    /// # Errors
+    /// As the curve conversions.
+    pub fn to_patches(&self, how: Conversion, columns_first: bool) -> Result<Vec<Vec<RationalPatch>>> {
+        if columns_first {
+            self.convert_dir(&self.rows, (self.degree.0, &self.lambda), (self.degree.1, &self.mu), how, false)
+        } else {
+            let t = transpose(&self.rows);
+            let p = self.convert_dir(&t, (self.degree.1, &self.mu), (self.degree.0, &self.lambda), how, true)?;
+            Ok(transpose(&p))
+        }
+    }
+
+    /// Converts the columns of `grid` (first direction), then the rows of each intermediate
+    /// block (second direction); `flip` transposes each patch back.
+    fn convert_dir(
+        &self,
+        grid: &[Vec<Point<BigRational>>],
+        first: (usize, &[BigRational]),
+        second: (usize, &[BigRational]),
+        how: Conversion,
+        flip: bool,
+    ) -> Result<Vec<Vec<RationalPatch>>> {
+        let ncols = grid[0].len();
+        // per column: its Bézier segments along the first direction
+        let col_segments: Vec<Vec<RationalBezier<BigRational>>> = (0..ncols)
+            .map(|j| {
+                convert(
+                    &RationalSpline::from_homogeneous(first.0, grid.iter().map(|r| r[j].clone()).collect(), first.1)?,
+                    how,
+                )
+            })
+            .collect::<Result<_>>()?;
+        let nseg = col_segments[0].len();
+        let mut out = Vec::with_capacity(nseg);
+        for s in 0..nseg {
+            // intermediate rows: row i of segment s across all columns
+            let inter: Vec<Vec<Point<BigRational>>> = (0..=first.0)
+                .map(|i| col_segments.iter().map(|c| c[s].homogeneous().points()[i].clone()).collect())
+                .collect();
+            let row_segments: Vec<Vec<RationalBezier<BigRational>>> = inter
+                .iter()
+                .map(|r| convert(&RationalSpline::from_homogeneous(second.0, r.clone(), second.1)?, how))
+                .collect::<Result<_>>()?;
+            let patches = (0..row_segments[0].len())
+                .map(|t| {
+                    let rows: Vec<Vec<Point<BigRational>>> =
+                        row_segments.iter().map(|r| r[t].homogeneous().points().to_vec()).collect();
+                    let p = RationalPatch::from_homogeneous(rows)?;
+                    Ok(if flip { p.transpose() } else { p })
+                })
+                .collect::<Result<Vec<_>>>()?;
+            out.push(patches);
+        }
+        Ok(out)
+    }
+
+    /// The tensor-product NURBS at `(u, v)` in the span of patch `(s, t)`: each column's spline at
+    /// `u`, then the spline through those points at `v` (homogeneous de Boor twice).
+    ///
+    /// # Errors
+    /// [`Error::WeightsVanish`] where the surface is undefined.
+    pub fn eval(&self, s: usize, t: usize, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
+        let ncols = self.rows[0].len();
+        let pts: Vec<Point<BigRational>> = (0..ncols)
+            .map(|j| {
+                let sp = RationalSpline {
+                    degree: self.degree.0,
+                    homogeneous: self.rows.iter().map(|r| r[j].clone()).collect(),
+                    knots: knots(&self.lambda),
+                };
+                sp.eval_homogeneous(s, u)
+            })
+            .collect();
+        let sp = RationalSpline { degree: self.degree.1, homogeneous: pts, knots: knots(&self.mu) };
+        sp.eval_homogeneous(t, v)
+            .from_homogeneous()
+            .ok_or(Error::WeightsVanish { interval: (u.to_string(), v.to_string()) })
+    }
+
+    /// The spans `[u_s, u_{s+1}] × [v_t, v_{t+1}]` of patch `(s, t)`.
+    pub fn span(&self, s: usize, t: usize) -> ((BigRational, BigRational), (BigRational, BigRational)) {
+        let (ku, kv) = (knots(&self.lambda), knots(&self.mu));
+        let (nu, nv) = self.degree;
+        ((ku[nu + s].clone(), ku[nu + s + 1].clone()), (kv[nv + t].clone(), kv[nv + t + 1].clone()))
+    }
+}
+
+fn knots(ratios: &[BigRational]) -> Vec<BigRational> {
+    let mut k = vec![rat(0)];
+    for r in ratios {
+        let next = k.last().expect("non-empty").clone() + r;
+        k.push(next);
+    }
+    k
+}
+
+/// What [`check_net`] found.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NetReport {
+    /// Number of patches.
+    pub patches: usize,
+    /// Rows-first and columns-first give the same patches.
+    pub order_independent: bool,
+    /// Every patch equals the NURBS on its span (proved on the type-bounded grid).
+    pub equals_nurbs: bool,
+    /// Every join is `C^{min(n_u, n_v) − 1}` in the spline parameters.
+    pub smooth_joins: bool,
+    /// The first problem found, in words.
+    pub problem: Option<String>,
+}
+
+/// Converts the net both ways and proves the patches: equal to the tensor NURBS (rational of type
+/// `(n_u, n_u) × (n_v, n_v)`: a `(2n_u + 1) × (2n_v + 1)` grid decides), and `C^{k}` joins
+/// (`k = min(n_u, n_v) − 1`) checked on the boundary curves (type-bounded grids in the other
+/// parameter).
+///
+/// # Errors
+/// As the conversions.
+pub fn check_net(net: &SplineNet, how: Conversion) -> Result<NetReport> {
+    let a = net.to_patches(how, true)?;
+    let b = net.to_patches(how, false)?;
+    let order_independent = a == b;
+    let (nu, nv) = net.degree;
+    let mut problem = None;
+    let mut equals_nurbs = true;
+    'outer: for (s, row) in a.iter().enumerate() {
+        for (t, p) in row.iter().enumerate() {
+            let ((u0, u1), (v0, v1)) = net.span(s, t);
+            for i in 0..=2 * nu {
+                for j in 0..=2 * nv {
+                    let (a_, b_) = (
+                        BigRational::new((i as i64).into(), ((2 * nu) as i64).into()),
+                        BigRational::new((j as i64).into(), ((2 * nv) as i64).into()),
+                    );
+                    let (u, v) = (u0.clone() + (u1.clone() - &u0) * &a_, v0.clone() + (v1.clone() - &v0) * &b_);
+                    if p.eval(&a_, &b_).ok() != net.eval(s, t, &u, &v).ok() {
+                        equals_nurbs = false;
+                        problem =
+                            Some(format!("patch ({s}, {t}) differs from the NURBS at local (u, v) = ({a_}, {b_})"));
+                        break 'outer;
+                    }
+                }
+            }
+        }
+    }
+    let order = nu.min(nv).saturating_sub(1);
+    let mut smooth = true;
+    // joins across u (patch (s,t) at u = 1 and (s+1,t) at u = 0), checked along v
+    for s in 0..a.len().saturating_sub(1) {
+        for t in 0..a[s].len() {
+            let (ls, ls1) = (net.lambda[nu + s].clone(), net.lambda[nu + s + 1].clone());
+            if !joins(&a[s][t], &a[s + 1][t], &ls, &ls1, order, nv) {
+                smooth = false;
+                problem.get_or_insert(format!("join between patches ({s}, {t}) and ({}, {t}) is not C^{order}", s + 1));
+            }
+        }
+    }
+    // joins across v: transpose
+    for s in 0..a.len() {
+        for t in 0..a[s].len().saturating_sub(1) {
+            let (mt, mt1) = (net.mu[nv + t].clone(), net.mu[nv + t + 1].clone());
+            if !joins(&a[s][t].transpose(), &a[s][t + 1].transpose(), &mt, &mt1, order, nu) {
+                smooth = false;
+                problem.get_or_insert(format!("join between patches ({s}, {t}) and ({s}, {}) is not C^{order}", t + 1));
+            }
+        }
+    }
+    Ok(NetReport {
+        patches: a.iter().map(Vec::len).sum(),
+        order_independent,
+        equals_nurbs,
+        smooth_joins: smooth,
+        problem,
+    })
+}
+
+/// `∂^r S/∂u^r (1, v) / λ^r = ∂^r S'/∂u^r (0, v) / λ'^r` for `r ≤ order`, on enough `v`: each side
+/// is rational in `v` of type ≤ `((r+1)·n, (r+1)·n)`, so `2(order+1)n + 1` values decide.
+fn joins(p: &RationalPatch, q: &RationalPatch, l: &BigRational, l1: &BigRational, order: usize, n: usize) -> bool {
+    let count = 2 * (order + 1) * n + 1;
+    (0..count).all(|k| {
+        let v = BigRational::new((k as i64).into(), ((count.max(2) - 1) as i64).into());
+        let (dp, dq) = (p.iso_v(&v).derivatives_at(&rat(1), order), q.iso_v(&v).derivatives_at(&rat(0), order));
+        match (dp, dq) {
+            (Ok(dp), Ok(dq)) => (0..=order).all(|r| {
+                dp[r].scale(&crate::poly::bernstein::pow(l1, r)) == dq[r].scale(&crate::poly::bernstein::pow(l, r))
+            }),
+            _ => true,
+        }
+    })
+}

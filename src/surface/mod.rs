@@ -1,0 +1,344 @@
+//! Rational tensor-product Bézier patches (seed 002 §4, (33)–(49)), exact.
+//!
+//! `S(u, v) = Σ_i Σ_j B_i^m(u) B_j^n(v) w_ij P_ij / Σ_i Σ_j B_i^m(u) B_j^n(v) w_ij` ((41)–(42)),
+//! stored as a grid of homogeneous points `(w_ij P_ij, w_ij)`, row `i` (the `u` index), column
+//! `j` (the `v` index). Three evaluations agree exactly: the closed form, rational de Casteljau
+//! in `u` then `v`, and in `v` then `u` — the tensor-product statement (44)–(47).
+
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use crate::num::scalar::Scalar;
+use crate::rational::rational_bezier::{RationalBezier, divide};
+use num_rational::BigRational;
+
+/// A rational Bézier patch of degree `(m, n)`.
+///
+/// # Invariants
+/// `m + 1` rows of `n + 1` homogeneous points each, all of one dimension ≥ 2, none zero.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RationalPatch {
+    rows: Vec<Vec<Point<BigRational>>>,
+}
+
+/// Largest patch degree in either direction.
+pub const MAX_PATCH_DEGREE: usize = 64;
+
+impl RationalPatch {
+    /// A patch from `(m+1)×(n+1)` points (row-major) and weights.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for ragged rows, count mismatches, zero weights or degrees above
+    /// [`MAX_PATCH_DEGREE`].
+    pub fn new(points: Vec<Vec<Point<BigRational>>>, weights: Vec<Vec<BigRational>>) -> Result<Self> {
+        let bad = |m: String| Error::InvalidArgument { message: m };
+        if points.len() != weights.len() || points.iter().zip(&weights).any(|(p, w)| p.len() != w.len()) {
+            return Err(bad("one weight per control point".into()));
+        }
+        if weights.iter().flatten().any(Scalar::is_zero) {
+            return Err(bad("a weight is 0".into()));
+        }
+        Self::from_homogeneous(
+            points
+                .iter()
+                .zip(&weights)
+                .map(|(p, w)| p.iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect())
+                .collect(),
+        )
+    }
+
+    /// A patch from homogeneous points.
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn from_homogeneous(rows: Vec<Vec<Point<BigRational>>>) -> Result<Self> {
+        let bad = |m: String| Error::InvalidArgument { message: m };
+        let cols = rows.first().map_or(0, Vec::len);
+        if rows.is_empty() || cols == 0 || rows.iter().any(|r| r.len() != cols) {
+            return Err(bad("a patch needs (m+1) rows of (n+1) points".into()));
+        }
+        if rows.len() - 1 > MAX_PATCH_DEGREE || cols - 1 > MAX_PATCH_DEGREE {
+            return Err(Error::TooLarge {
+                what: "patch degree",
+                value: (rows.len() - 1).max(cols - 1),
+                limit: MAX_PATCH_DEGREE,
+            });
+        }
+        let dim = rows[0][0].dim();
+        if dim < 2 || rows.iter().flatten().any(|p| p.dim() != dim || p.coords.iter().all(Scalar::is_zero)) {
+            return Err(bad("homogeneous points of one dimension, none zero".into()));
+        }
+        Ok(RationalPatch { rows })
+    }
+
+    /// The degrees `(m, n)`.
+    pub fn degree(&self) -> (usize, usize) {
+        (self.rows.len() - 1, self.rows[0].len() - 1)
+    }
+    /// The dimension of the patch's points.
+    pub fn dim(&self) -> usize {
+        self.rows[0][0].dim() - 1
+    }
+    /// The homogeneous control net, row `i` = `u` index.
+    pub fn homogeneous(&self) -> &[Vec<Point<BigRational>>] {
+        &self.rows
+    }
+    /// The weights `w_ij`.
+    pub fn weights(&self) -> Vec<Vec<BigRational>> {
+        self.rows.iter().map(|r| r.iter().map(|p| p.coords[self.dim()].clone()).collect()).collect()
+    }
+    fn column(&self, j: usize) -> Vec<Point<BigRational>> {
+        self.rows.iter().map(|r| r[j].clone()).collect()
+    }
+    fn curve(points: Vec<Point<BigRational>>) -> RationalBezier<BigRational> {
+        RationalBezier::from_homogeneous(points).expect("patch points are valid homogeneous points")
+    }
+
+    /// The homogeneous point `Σ Σ B_i(u) B_j(v) (w_ij P_ij, w_ij)`.
+    pub fn eval_homogeneous(&self, u: &BigRational, v: &BigRational) -> Point<BigRational> {
+        let (m, n) = self.degree();
+        let (bu, bv) = (crate::poly::bernstein::bernstein_all(m, u), crate::poly::bernstein::bernstein_all(n, v));
+        let mut acc = Point::origin(self.dim() + 1);
+        for (i, row) in self.rows.iter().enumerate() {
+            for (j, p) in row.iter().enumerate() {
+                acc = acc.add(&p.scale(&(bu[i].clone() * &bv[j])));
+            }
+        }
+        acc
+    }
+
+    /// The homogeneous point of `S(u, v)` by de Casteljau's scheme on the homogeneous net, in
+    /// `u` on every column, then in `v` (`u_first`), or in `v` on every row, then in `u`.
+    ///
+    /// Linear in the net, so it equals [`Self::eval_homogeneous`] exactly, also where an
+    /// intermediate weight of the affine recursion ([`Self::eval_u_then_v`]) is 0.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // weights 1, −1, 1, 1: the affine recursion meets the weight 0 at u = 1/2
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1)]],
+    ///     vec![vec![rat(1), rat(-1)], vec![rat(1), rat(1)]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 2), ratio(1, 2));
+    /// assert!(s.eval_u_then_v(&u, &v).is_err());
+    /// assert_eq!(s.eval_homogeneous_de_casteljau(&u, &v, true), s.eval_homogeneous(&u, &v));
+    /// assert_eq!(s.eval_homogeneous_de_casteljau(&u, &v, false), s.eval_homogeneous(&u, &v));
+    /// ```
+    pub fn eval_homogeneous_de_casteljau(&self, u: &BigRational, v: &BigRational, u_first: bool) -> Point<BigRational> {
+        let line = |pts: Vec<Point<BigRational>>, t: &BigRational| {
+            crate::curve::bezier::BezierCurve::new(pts).expect("patch rows and columns are valid curves").eval(t)
+        };
+        let (m, n) = self.degree();
+        if u_first {
+            line((0..=n).map(|j| line(self.column(j), u)).collect(), v)
+        } else {
+            line((0..=m).map(|i| line(self.rows[i].clone(), v)).collect(), u)
+        }
+    }
+
+    /// `S(u, v)` by the closed form (41).
+    ///
+    /// # Errors
+    /// [`Error::WeightsVanish`] where `W_00(u, v; m, n) = 0`.
+    pub fn eval(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
+        self.eval_homogeneous(u, v).from_homogeneous().ok_or_else(|| Error::WeightsVanish {
+            interval: (format!("(u, v) = ({u}, {v})"), format!("(u, v) = ({u}, {v})")),
+        })
+    }
+
+    /// `S(u, v)` by rational de Casteljau on each column in `u` (the curves `r_j(u)` of (45),
+    /// with weights `(1−u+uE)^m w_0j`), then on the resulting points in `v` (47).
+    ///
+    /// # Errors
+    /// [`Error::WeightsVanish`] when an intermediate weight vanishes.
+    pub fn eval_u_then_v(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
+        let (m, n) = self.degree();
+        let (pts, ws): (Vec<_>, Vec<_>) = (0..=n)
+            .map(|j| {
+                let c = Self::curve(self.column(j));
+                Ok((c.eval_rational_de_casteljau(u)?, c.shifted_weight(0, m, u)))
+            })
+            .collect::<Result<Vec<_>>>()?
+            .into_iter()
+            .unzip();
+        RationalBezier::new(pts, ws)?.eval_rational_de_casteljau(v)
+    }
+
+    /// `S(u, v)` by rational de Casteljau on each row in `v`, then in `u`.
+    ///
+    /// # Errors
+    /// As [`Self::eval_u_then_v`].
+    pub fn eval_v_then_u(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
+        let (m, n) = self.degree();
+        let (pts, ws): (Vec<_>, Vec<_>) = (0..=m)
+            .map(|i| {
+                let c = Self::curve(self.rows[i].clone());
+                Ok((c.eval_rational_de_casteljau(v)?, c.shifted_weight(0, n, v)))
+            })
+            .collect::<Result<Vec<_>>>()?
+            .into_iter()
+            .unzip();
+        RationalBezier::new(pts, ws)?.eval_rational_de_casteljau(u)
+    }
+
+    /// The iso-parameter curve `v ↦ S(u0, v)` as a rational Bézier curve of degree `n`.
+    pub fn iso_u(&self, u0: &BigRational) -> RationalBezier<BigRational> {
+        let n = self.degree().1;
+        Self::curve((0..=n).map(|j| Self::curve(self.column(j)).eval_homogeneous(u0)).collect())
+    }
+
+    /// The iso-parameter curve `u ↦ S(u, v0)` as a rational Bézier curve of degree `m`.
+    pub fn iso_v(&self, v0: &BigRational) -> RationalBezier<BigRational> {
+        Self::curve(self.rows.iter().map(|r| Self::curve(r.clone()).eval_homogeneous(v0)).collect())
+    }
+
+    /// Splits at `u0`: the patches for `u ∈ [0, u0]` and `[u0, 1]` (every column subdivided).
+    pub fn subdivide_u(&self, u0: &BigRational) -> (Self, Self) {
+        let (a, b) = self.transpose().subdivide_v(u0);
+        (a.transpose(), b.transpose())
+    }
+
+    /// Splits at `v0` (every row subdivided).
+    pub fn subdivide_v(&self, v0: &BigRational) -> (Self, Self) {
+        let halves: Vec<_> = self.rows.iter().map(|r| Self::curve(r.clone()).subdivide(v0)).collect();
+        (
+            RationalPatch { rows: halves.iter().map(|h| h.0.homogeneous().points().to_vec()).collect() },
+            RationalPatch { rows: halves.iter().map(|h| h.1.homogeneous().points().to_vec()).collect() },
+        )
+    }
+
+    /// The transposed patch (`u` and `v` exchanged).
+    pub fn transpose(&self) -> Self {
+        let n = self.degree().1;
+        RationalPatch { rows: (0..=n).map(|j| self.column(j)).collect() }
+    }
+
+    /// Degree elevation by `ru` in `u` and `rv` in `v`.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] beyond [`MAX_PATCH_DEGREE`].
+    pub fn elevate(&self, ru: usize, rv: usize) -> Result<Self> {
+        let (m, n) = self.degree();
+        if m + ru > MAX_PATCH_DEGREE || n + rv > MAX_PATCH_DEGREE {
+            return Err(Error::TooLarge { what: "patch degree", value: (m + ru).max(n + rv), limit: MAX_PATCH_DEGREE });
+        }
+        let rows: Vec<Vec<Point<BigRational>>> = self
+            .rows
+            .iter()
+            .map(|r| Ok(Self::curve(r.clone()).elevate(rv)?.homogeneous().points().to_vec()))
+            .collect::<Result<_>>()?;
+        let t = RationalPatch { rows }.transpose();
+        let cols: Vec<Vec<Point<BigRational>>> = t
+            .rows
+            .iter()
+            .map(|c| Ok(Self::curve(c.clone()).elevate(ru)?.homogeneous().points().to_vec()))
+            .collect::<Result<_>>()?;
+        Ok(RationalPatch { rows: cols }.transpose())
+    }
+
+    /// Weight change (48)–(49): `S'(u, v) = 𝒲[γ_i(u) γ_j(v) Δw : W_00(u, v)](S(u, v), P_ij)` with
+    /// `γ` the Bernstein polynomial `B_i^m(u)` (`printed = false`) or the seed's
+    /// `C(m,i)(1−u)^i u^{m−i}` (`printed = true`).
+    ///
+    /// # Errors
+    /// [`Error::WeightsVanish`] where the patch is undefined; a point at infinity.
+    pub fn weight_change(
+        &self,
+        i: usize,
+        j: usize,
+        dw: &BigRational,
+        u: &BigRational,
+        v: &BigRational,
+        printed: bool,
+    ) -> Result<Point<BigRational>> {
+        let (m, n) = self.degree();
+        let gamma = |k: usize, d: usize, x: &BigRational| {
+            if printed {
+                crate::poly::bernstein::binomial_scalar::<BigRational>(d, k)
+                    * crate::poly::bernstein::pow(&(crate::num::scalar::rat(1) - x), k)
+                    * crate::poly::bernstein::pow(x, d - k)
+            } else {
+                crate::poly::bernstein::bernstein(k, d, x)
+            }
+        };
+        let s = self.eval(u, v)?;
+        let w00 = self.eval_homogeneous(u, v).coords[self.dim()].clone();
+        let p = self.rows[i][j]
+            .from_homogeneous()
+            .ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
+        divide(&(gamma(i, m, u) * gamma(j, n, v) * dw), &w00, &s, &p)
+            .ok_or_else(|| Error::WeightsVanish { interval: (u.to_string(), v.to_string()) })
+    }
+
+    /// The patch with `w_ij` increased by `dw` (the point `P_ij` kept).
+    ///
+    /// # Errors
+    /// For a point at infinity or a resulting zero weight.
+    pub fn with_weight_change(&self, i: usize, j: usize, dw: &BigRational) -> Result<Self> {
+        let mut rows = self.rows.clone();
+        let d = self.dim();
+        let p = rows[i][j]
+            .from_homogeneous()
+            .ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
+        let w = rows[i][j].coords[d].clone() + dw;
+        if w.is_zero() {
+            return Err(Error::InvalidArgument { message: "the new weight is 0".into() });
+        }
+        rows[i][j] = p.to_homogeneous(&w);
+        Ok(RationalPatch { rows })
+    }
+
+    /// The contour `z = c` (seed 002 Figs. 9, 13) as an implicit curve in `(u, v)`: the Bernstein
+    /// coefficients `w_ij (z_ij − c)` of the polynomial `F(u, v) = Σ Σ B_i(u) B_j(v) w_ij (z_ij − c)`
+    /// of degree `(m, n)`, whose zero set in `[0,1]²` (where `W ≠ 0`) is the contour. `axis` picks
+    /// the coordinate (`2` = z).
+    pub fn contour_polynomial(&self, axis: usize, c: &BigRational) -> Vec<Vec<BigRational>> {
+        let d = self.dim();
+        self.rows
+            .iter()
+            .map(|r| r.iter().map(|h| h.coords[axis].clone() - c.clone() * &h.coords[d]).collect())
+            .collect()
+    }
+
+    /// Sampled contour of [`Self::contour_polynomial`] for plots: segments in `(u, v)` from a
+    /// marching-squares pass over a `res × res` grid, in `f64` (for drawing only).
+    pub fn contour_polyline(&self, axis: usize, c: &BigRational, res: usize) -> Vec<[(f64, f64); 2]> {
+        let coeffs = self.contour_polynomial(axis, c);
+        let (m, n) = self.degree();
+        let f = |u: f64, v: f64| {
+            let (bu, bv) = (crate::poly::bernstein::bernstein_all(m, &u), crate::poly::bernstein::bernstein_all(n, &v));
+            coeffs
+                .iter()
+                .enumerate()
+                .map(|(i, r)| r.iter().enumerate().map(|(j, a)| a.to_f64() * bu[i] * bv[j]).sum::<f64>())
+                .sum::<f64>()
+        };
+        let res = res.max(1);
+        let h = 1.0 / res as f64;
+        let mut out = Vec::new();
+        for a in 0..res {
+            for b in 0..res {
+                let (u0, v0) = (a as f64 * h, b as f64 * h);
+                let corners = [(u0, v0), (u0 + h, v0), (u0 + h, v0 + h), (u0, v0 + h)];
+                let vals: Vec<f64> = corners.iter().map(|&(u, v)| f(u, v)).collect();
+                let mut cuts = Vec::new();
+                for e in 0..4 {
+                    let (p, q) = (corners[e], corners[(e + 1) % 4]);
+                    let (fp, fq) = (vals[e], vals[(e + 1) % 4]);
+                    if (fp < 0.0) != (fq < 0.0) {
+                        let s = fp / (fp - fq);
+                        cuts.push((p.0 + s * (q.0 - p.0), p.1 + s * (q.1 - p.1)));
+                    }
+                }
+                for pair in cuts.chunks(2) {
+                    if let [x, y] = pair {
+                        out.push([*x, *y]);
+                    }
+                }
+            }
+        }
+        out
+    }
+}
