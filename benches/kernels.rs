@@ -2,7 +2,7 @@
 //!
 //! `cargo bench --bench kernels`; README's table is read from this run's output.
 
-use casteljau::{BezierCurve, Point, Scalar, bernstein, curve::fraction_free, ratio};
+use casteljau::{BezierCurve, Point, Scalar, curve::fraction_free, poly::bernstein, ratio};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
 use std::hint::black_box;
