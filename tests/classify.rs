@@ -274,12 +274,13 @@ proptest! {
     /// printed (9) and (12) fail on every crunode and cusp (their F, G coincide with D).
     #[test]
     fn canonical_map_corrected_proves_and_printed_9_12_fail(c in cubic()) {
-        use casteljau::classify::canonical::{Formulas, canonical_map};
+        use casteljau::{classify::canonical::canonical_map, proof::Reading};
         let k = classify(&c).unwrap();
         let Some(node) = k.node_type else { return Ok(()) };
-        let fixed = canonical_map(&c, Formulas::Corrected).unwrap();
+        let ml = MovingLines::new(&c).unwrap();
+        let fixed = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
         prop_assert!(fixed.prove(&c).is_ok(), "{}", c);
-        let printed = canonical_map(&c, Formulas::AsPrinted);
+        let printed = canonical_map(&c, &k, &ml, Reading::AsPrinted);
         match node {
             NodeType::Crunode | NodeType::Cusp => prop_assert!(printed.map(|m| m.prove(&c).is_err()).unwrap_or(true)),
             _ => prop_assert!(printed.unwrap().prove(&c).is_ok()),
@@ -289,13 +290,16 @@ proptest! {
 
 #[test]
 fn canonical_map_for_constructed_cusps_and_acnodes() {
-    use casteljau::classify::canonical::{Formulas, canonical_map};
+    use casteljau::{classify::canonical::canonical_map, proof::Reading};
+    let map = |c: &BezierCurve<BigRational>, reading| {
+        canonical_map(c, &classify(c).unwrap(), &MovingLines::new(c).unwrap(), reading).unwrap()
+    };
     for tau in [ratio(0, 1), ratio(1, 3), ratio(1, 1)] {
         let c = cusp_at(tau);
-        assert!(canonical_map(&c, Formulas::Corrected).unwrap().prove(&c).is_ok());
+        assert!(map(&c, Reading::Corrected).prove(&c).is_ok());
     }
     let ac = from_power([rat(1), rat(-4), rat(4), rat(0)], [rat(-4), rat(12), rat(-12), rat(8)], [1, 0, 0, 1], [0, 0]);
-    let m = canonical_map(&ac, Formulas::AsPrinted).unwrap();
+    let m = map(&ac, Reading::AsPrinted);
     assert!(m.prove(&ac).is_ok());
 }
 

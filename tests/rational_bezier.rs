@@ -3,7 +3,8 @@
 //! Menelaus configurations.
 
 use casteljau::num::parse::parse_points;
-use casteljau::rational::implicit::{ImplicitVerdict, prove_implicit};
+use casteljau::proof::Reading;
+use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
 use casteljau::rational::menelaus::Configuration;
 use casteljau::rational::rational_bezier::{ConicType, RationalBezier};
 use casteljau::{Error, Point, rat, ratio};
@@ -20,7 +21,7 @@ fn pt(x: BigRational, y: BigRational) -> Point<BigRational> {
     Point::new(vec![x, y])
 }
 fn proved(c: &RationalBezier<BigRational>, f: &str) -> bool {
-    matches!(prove_implicit(c, f).unwrap(), ImplicitVerdict::Proved { .. })
+    matches!(prove_implicit(c, f).unwrap(), ImplicitOutcome::Proved { .. })
 }
 fn params() -> Vec<BigRational> {
     (0..=12).map(|k| ratio(k, 12)).chain([ratio(-3, 2), ratio(7, 5)]).collect()
@@ -189,8 +190,8 @@ fn rational_weight_change_23_as_printed_fails_and_bernstein_form_holds() {
     let dw = rat(3);
     let t = ratio(1, 3);
     let changed = c.with_weight(1, rat(2) + &dw).unwrap();
-    assert_eq!(c.weight_change(1, &dw, &t).unwrap(), changed.eval(&t).unwrap());
-    assert_ne!(c.weight_change_as_printed(1, &dw, &t).unwrap(), changed.eval(&t).unwrap());
+    assert_eq!(c.weight_change(1, &dw, &t, Reading::Corrected).unwrap(), changed.eval(&t).unwrap());
+    assert_ne!(c.weight_change(1, &dw, &t, Reading::AsPrinted).unwrap(), changed.eval(&t).unwrap());
 }
 
 fn rational() -> impl Strategy<Value = BigRational> {
@@ -248,7 +249,7 @@ proptest! {
         let i = i % (c.degree() + 1);
         let w = c.weights()[i].clone();
         let changed = c.with_weight(i, w + &dw).unwrap();
-        prop_assert_eq!(c.weight_change(i, &dw, &t).unwrap(), changed.eval(&t).unwrap());
+        prop_assert_eq!(c.weight_change(i, &dw, &t, Reading::Corrected).unwrap(), changed.eval(&t).unwrap());
     }
 
     #[test]
@@ -286,7 +287,7 @@ fn menelaus_4_as_printed_fails_on_an_example() {
     )
     .unwrap();
     assert!(cfg.claim_56_holds() && cfg.claim_5_holds());
-    assert!(!cfg.claim_4_as_printed_holds());
+    assert!(!cfg.claim_4_holds(Reading::AsPrinted));
     assert!(
         Configuration::new(pt(rat(0), rat(0)), pt(rat(1), rat(1)), pt(rat(2), rat(2)), rat(1), rat(1), ratio(1, 2))
             .is_err()

@@ -1,11 +1,11 @@
 //! Rational splines → rational Bézier segments (three routes), rational patches (three
 //! evaluations and operations), and spline nets → patches in both orders.
 
+use casteljau::proof::Reading;
 use casteljau::rational::rational_bezier::RationalBezier;
-use casteljau::spline::net::{Conversion, SplineNet, check_net};
-use casteljau::spline::{
-    Printed, RationalSpline, SegmentMismatch, check_segments, seed_cubic_segment, seed_quadratic_segment,
-};
+use casteljau::spline::Conversion;
+use casteljau::spline::net::{SplineNet, check_net};
+use casteljau::spline::{RationalSpline, SegmentMismatch, check_segments, seed_cubic_segment, seed_quadratic_segment};
 use casteljau::surface::RationalPatch;
 use casteljau::{Point, rat, ratio};
 use num_rational::BigRational;
@@ -56,15 +56,15 @@ fn spline_quadratic_53_as_printed_fails_corrected_holds() {
     let lam: Vec<_> = [1, 2, 1, 3, 2, 1].iter().map(|&v| rat(v)).collect();
     let sp = RationalSpline::new(2, &pts, &w, &lam).unwrap();
     let fixed: Vec<_> =
-        (0..sp.segments()).map(|s| seed_quadratic_segment(&sp, s, Printed::Corrected).unwrap()).collect();
+        (0..sp.segments()).map(|s| seed_quadratic_segment(&sp, s, Reading::Corrected).unwrap()).collect();
     assert!(check_segments(&sp, &fixed).is_ok());
     let printed: Vec<_> =
-        (0..sp.segments()).map(|s| seed_quadratic_segment(&sp, s, Printed::AsPrinted).unwrap()).collect();
+        (0..sp.segments()).map(|s| seed_quadratic_segment(&sp, s, Reading::AsPrinted).unwrap()).collect();
     assert!(matches!(check_segments(&sp, &printed), Err(SegmentMismatch::NotTheNurbs { .. })));
     // with equal weights the printed formula is right (k0 = k1 makes the misprint harmless)
     let sp1 = RationalSpline::new(2, &pts, &vec![rat(1); 5], &lam).unwrap();
     let printed1: Vec<_> =
-        (0..sp1.segments()).map(|s| seed_quadratic_segment(&sp1, s, Printed::AsPrinted).unwrap()).collect();
+        (0..sp1.segments()).map(|s| seed_quadratic_segment(&sp1, s, Reading::AsPrinted).unwrap()).collect();
     assert!(check_segments(&sp1, &printed1).is_ok());
 }
 
@@ -116,8 +116,8 @@ fn surface_weight_change_48_49_printed_gamma_fails_bernstein_holds() {
     let dw = rat(2);
     let changed = p.with_weight_change(1, 1, &dw).unwrap();
     let (u, v) = (ratio(1, 3), ratio(1, 4));
-    assert_eq!(p.weight_change(1, 1, &dw, &u, &v, false).unwrap(), changed.eval(&u, &v).unwrap());
-    assert_ne!(p.weight_change(1, 1, &dw, &u, &v, true).unwrap(), changed.eval(&u, &v).unwrap());
+    assert_eq!(p.weight_change(1, 1, &dw, &u, &v, Reading::Corrected).unwrap(), changed.eval(&u, &v).unwrap());
+    assert_ne!(p.weight_change(1, 1, &dw, &u, &v, Reading::AsPrinted).unwrap(), changed.eval(&u, &v).unwrap());
 }
 
 #[test]
@@ -160,19 +160,19 @@ fn net(weights_vary: bool) -> SplineNet {
 #[test]
 fn net_5x5_gives_9_biquadratic_patches_c1_order_independent() {
     let n = net(true);
-    for how in [Conversion::Boehm, Conversion::SeedQuadratic(Printed::Corrected)] {
+    for how in [Conversion::Boehm, Conversion::Seed(Reading::Corrected)] {
         let r = check_net(&n, how).unwrap();
         assert_eq!(r.patches, 9);
         assert!(r.order_independent && r.equals_nurbs && r.smooth_joins, "{how:?}: {:?}", r.problem);
     }
     assert_eq!(
         n.to_patches(Conversion::Boehm, true).unwrap(),
-        n.to_patches(Conversion::SeedQuadratic(Printed::Corrected), false).unwrap()
+        n.to_patches(Conversion::Seed(Reading::Corrected), false).unwrap()
     );
-    let printed = check_net(&n, Conversion::SeedQuadratic(Printed::AsPrinted)).unwrap();
+    let printed = check_net(&n, Conversion::Seed(Reading::AsPrinted)).unwrap();
     assert!(!printed.equals_nurbs);
     // with unit weights the misprint is harmless
-    let r = check_net(&net(false), Conversion::SeedQuadratic(Printed::AsPrinted)).unwrap();
+    let r = check_net(&net(false), Conversion::Seed(Reading::AsPrinted)).unwrap();
     assert!(r.equals_nurbs && r.smooth_joins);
 }
 
@@ -201,7 +201,7 @@ proptest! {
         }
         if degree == 2 {
             for (s, b) in boehm.iter().enumerate() {
-                prop_assert!(same(&seed_quadratic_segment(&sp, s, Printed::Corrected).unwrap(), b));
+                prop_assert!(same(&seed_quadratic_segment(&sp, s, Reading::Corrected).unwrap(), b));
             }
         }
     }
@@ -226,7 +226,7 @@ proptest! {
         let r = check_net(&n, Conversion::Boehm).unwrap();
         prop_assert!(r.order_independent && r.equals_nurbs && r.smooth_joins, "{:?}", r.problem);
         if !cubic {
-            prop_assert_eq!(n.to_patches(Conversion::Boehm, true).unwrap(), n.to_patches(Conversion::SeedQuadratic(Printed::Corrected), true).unwrap());
+            prop_assert_eq!(n.to_patches(Conversion::Boehm, true).unwrap(), n.to_patches(Conversion::Seed(Reading::Corrected), true).unwrap());
         }
     }
 }

@@ -4,7 +4,7 @@
 //!
 //! * `id` (unique across the catalogue), `source` (the place in the seed: equation, example,
 //!   figure), `statement` (in words), `expect` = `"holds"` or `"fails-as-printed"`;
-//! * the checkable content: `kind` and that kind's fields (see [`crate::catalogue::claim_checks`]), written
+//! * the checkable content: `kind` and that kind's fields (see [`claims`]), written
 //!   **as printed** in the seed, OCR and typesetting errors included;
 //! * for `fails-as-printed`, a `[claim.corrected]` table overriding the fields that change, and
 //!   optionally `note`: the corrected statement must hold.
@@ -13,17 +13,23 @@
 //! `fails-as-printed` when the printed content fails (with its counterexample) and the corrected
 //! content holds.
 
-pub mod claim_checks;
-pub mod claim_checks_geometry;
+pub mod claims;
+pub mod common;
+pub mod cubic;
+pub mod polynomial;
+pub mod rational;
+pub mod surface;
 
 use crate::error::{Error, Result};
-use claim_checks::{Content, Outcome};
+use claims::ClaimContent;
+pub use common::Outcome;
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// What a claim is expected to do, or was found to do.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// What a claim is expected to do, or was found to do (in JSON: its [`Verdict::as_str`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Verdict {
     /// The statement holds.
     Holds,
@@ -56,9 +62,9 @@ pub struct Claim {
     /// The expected verdict.
     pub expect: Verdict,
     /// The content as printed.
-    pub content: Content,
+    pub content: ClaimContent,
     /// The corrected content (for `fails-as-printed`).
-    pub corrected: Option<Content>,
+    pub corrected: Option<ClaimContent>,
     /// A note on the correction.
     pub note: Option<String>,
     /// The claim file and the line of its `id`.
@@ -67,20 +73,30 @@ pub struct Claim {
     pub line: usize,
 }
 
-/// The outcome of checking a claim.
-#[derive(Clone, Debug)]
+/// The result of checking a claim: one line of `prove`, one object of `prove --json` (fields
+/// `id`, `source`, `statement`, `expected`, `verdict`, `passed`, `method`, `detail`,
+/// `corrected` (or `null`) and `seconds`).
+#[derive(Clone, Debug, serde::Serialize)]
 pub struct ClaimResult {
     /// The claim's id.
     pub id: String,
+    /// Seed file name and place.
+    pub source: String,
+    /// The statement in words.
+    pub statement: String,
     /// The expected verdict.
     pub expected: Verdict,
     /// The verdict found.
+    #[serde(rename = "verdict")]
     pub found: Verdict,
+    /// The found verdict is the expected one.
+    pub passed: bool,
     /// How it was checked.
     pub method: &'static str,
     /// Evidence for the printed content.
     pub detail: String,
     /// Evidence for the corrected content, when there is one.
+    #[serde(rename = "corrected")]
     pub corrected_detail: Option<String>,
     /// Seconds taken.
     pub seconds: f64,
@@ -89,7 +105,7 @@ pub struct ClaimResult {
 impl ClaimResult {
     /// The found verdict is the expected one.
     pub fn passed(&self) -> bool {
-        self.expected == self.found
+        self.passed
     }
 }
 
@@ -163,7 +179,7 @@ pub fn parse_claims(file: &str, text: &str) -> Result<Vec<Claim>> {
         for key in META_KEYS {
             body.remove(key);
         }
-        let content: Content =
+        let content: ClaimContent =
             toml::Value::Table(body.clone()).try_into().map_err(|e: toml::de::Error| cerr(e.message().to_string()))?;
         let corrected = match t.get("corrected") {
             None if expect == Verdict::FailsAsPrinted => {
@@ -241,13 +257,13 @@ pub fn check(claim: &Claim) -> Result<ClaimResult> {
         line: Some(claim.line),
         message: format!("claim {}: {e}", claim.id),
     };
-    let printed: Outcome = claim_checks::check(&claim.content).map_err(wrap)?;
+    let printed: Outcome = claim.content.check().map_err(wrap)?;
     let (found, corrected_detail) = if printed.holds {
         (Verdict::Holds, None)
     } else {
         match &claim.corrected {
             Some(c) => {
-                let fixed = claim_checks::check(c).map_err(wrap)?;
+                let fixed = c.check().map_err(wrap)?;
                 (if fixed.holds { Verdict::FailsAsPrinted } else { Verdict::Fails }, Some(fixed.detail))
             }
             None => (Verdict::Fails, None),
@@ -255,8 +271,11 @@ pub fn check(claim: &Claim) -> Result<ClaimResult> {
     };
     Ok(ClaimResult {
         id: claim.id.clone(),
+        source: claim.source.clone(),
+        statement: claim.statement.clone(),
         expected: claim.expect,
         found,
+        passed: found == claim.expect,
         method: printed.method,
         detail: printed.detail,
         corrected_detail,
@@ -321,7 +340,7 @@ Kinds: `identity` (expressions with `+ - * / ^`, `C(n,k)`, `B(i,n,x)`, `sum(r,a,
 grid values), `curve-formula`, `power-form`, `subdivision`, `repeated-subdivision`, `matrix`,
 `table`, `basis-table`, `classification`, `moving-lines`, `moving-line-2`, `canonical-map`,
 `implicit`, `rational-evaluations`, `rational-elevation`, `rational-subdivision`, `weight-pull`,
-`spline-segments`, `patch-evaluations`, `patch-weight-change`, `net` (see `src/claim_checks.rs`).
+`spline-segments`, `patch-evaluations`, `patch-weight-change`, `net` (see `src/catalogue/claims.rs`).
 
 ## What is not encoded, and why
 

@@ -24,13 +24,13 @@
 //!   `G = E + P'(t_E)`, `F = P(t_F)`, `M = [G − E | F − G | E]`, all rational.
 
 use crate::classify::moving_line::MovingLines;
-use crate::classify::{NodeType, classify};
+use crate::classify::{Classification, NodeType};
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, Scalar, rat};
-use crate::proof::{Certificate, Counterexample, GridProver};
+use crate::proof::{Certificate, Counterexample, GridProver, Reading};
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
@@ -38,15 +38,6 @@ use std::cmp::Ordering;
 pub type Sqrt3Field = QuadraticExt<BigRational>;
 /// `Q(√3)(√r)`: where the canonical maps live.
 pub type Tower = QuadraticExt<Sqrt3Field>;
-
-/// Which reference-point formulas to use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Formulas {
-    /// The seed's (9), (12), (15)–(16) exactly as printed.
-    AsPrinted,
-    /// The statements that hold (identical to the printed ones for the acnode).
-    Corrected,
-}
 
 /// An affine map `M` (2×3, last column the translation) from a canonical cubic to a curve.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -114,11 +105,11 @@ pub fn canonical_point(node: NodeType, s: &Tower) -> Point<Tower> {
     }
 }
 
-struct Lines {
-    ml: MovingLines,
+struct Lines<'a> {
+    ml: &'a MovingLines,
 }
 
-impl Lines {
+impl Lines<'_> {
     fn at(&self, l: &[Point<BigRational>], t: &Tower) -> Point<Tower> {
         let u = Tower::one() - t;
         match l.len() {
@@ -136,17 +127,38 @@ impl Lines {
     }
 }
 
-/// Builds the map of a genuine cubic with the given formulas.
+/// Builds the map of a genuine cubic with the given formulas, from the curve's
+/// [`classify`](crate::classify::classify) result `k` and its [`MovingLines`] (computed once by
+/// the caller, not again here).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] when the curve is not a genuine planar cubic, or when a
 /// reference point of the chosen formulas is at infinity.
-pub fn canonical_map(curve: &BezierCurve<BigRational>, formulas: Formulas) -> Result<CanonicalMap> {
-    let k = classify(curve)?;
+///
+/// # Example
+/// ```
+/// use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
+/// use casteljau::classify::{classify, NodeType, canonical::canonical_map, moving_line::MovingLines};
+/// // a cusp at t = 1/2: canonical curve x³ − 3y² = 0
+/// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+/// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
+/// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
+/// assert_eq!(map.node, NodeType::Cusp);
+/// assert!(map.prove(&c).is_ok()); // M·C((t − t_E)/(t_F − t_E)) ≡ P(t), proved on a grid
+/// // as printed, (12) puts G on D and the map degenerates
+/// let printed = canonical_map(&c, &k, &ml, Reading::AsPrinted).unwrap();
+/// assert!(printed.prove(&c).is_err());
+/// ```
+pub fn canonical_map(
+    curve: &BezierCurve<BigRational>,
+    k: &Classification,
+    moving_lines: &MovingLines,
+    formulas: Reading,
+) -> Result<CanonicalMap> {
     let node = k.node_type.filter(|_| curve.degree() == 3).ok_or_else(|| Error::InvalidArgument {
         message: format!("canonical forms need a genuine cubic; this curve is {}", k.class),
     })?;
-    let lines = Lines { ml: MovingLines::new(curve)? };
+    let lines = Lines { ml: moving_lines };
     let fail = |what: &str| Error::InvalidArgument { message: format!("reference point {what} is at infinity") };
     let p_at = |t: &Tower| lift_curve(curve).eval(t);
     let col = |v: Point<Tower>, f: &Tower| v.scale(f);
@@ -169,8 +181,8 @@ pub fn canonical_map(curve: &BezierCurve<BigRational>, formulas: Formulas) -> Re
                 NodeType::Crunode => {
                     let tf = te.clone() + tower_sqrt(&d);
                     let f = match formulas {
-                        Formulas::AsPrinted => lines.meet(&tf, &tf),
-                        Formulas::Corrected => lines.meet(&tf, &te),
+                        Reading::AsPrinted => lines.meet(&tf, &tf),
+                        Reading::Corrected => lines.meet(&tf, &te),
                     }
                     .ok_or_else(|| fail("F"))?;
                     let c1 = col(e.sub(&f), &sqrt3());
@@ -180,8 +192,8 @@ pub fn canonical_map(curve: &BezierCurve<BigRational>, formulas: Formulas) -> Re
                     let tf = te.clone() + Tower::one();
                     let f = lines.meet(&tf, &tf).ok_or_else(|| fail("F"))?;
                     let g = match formulas {
-                        Formulas::AsPrinted => lines.meet(&te, &te),
-                        Formulas::Corrected => lines.meet(&te, &tf),
+                        Reading::AsPrinted => lines.meet(&te, &te),
+                        Reading::Corrected => lines.meet(&te, &tf),
                     }
                     .ok_or_else(|| fail("G"))?;
                     let c1 = col(f.sub(&g), &sqrt3());
@@ -190,7 +202,7 @@ pub fn canonical_map(curve: &BezierCurve<BigRational>, formulas: Formulas) -> Re
                 _ => {
                     // (15) G = 2E − D; (16) t_F the larger root of L1[t]·G = 0.
                     let g = e.scale(&Tower::from_i64(2)).sub(&dp);
-                    let tf = larger_root(&lines.ml, &g).ok_or_else(|| fail("t_F"))?;
+                    let tf = larger_root(lines.ml, &g).ok_or_else(|| fail("t_F"))?;
                     let f = lines.meet(&tf, &tf).ok_or_else(|| fail("F"))?;
                     let half = Tower::one() / Tower::from_i64(2);
                     let c0 = g.sub(&dp).scale(&half);

@@ -20,6 +20,7 @@
 
 pub mod canonical;
 pub mod certified;
+pub mod evidence;
 pub mod moving_line;
 pub mod rational_cubic;
 
@@ -48,6 +49,18 @@ pub enum NodeType {
     /// Double point at infinity (`A = 0`): canonical form `y = x³`.
     Explicit,
 }
+
+/// The names of [`NodeType`], [`CurveClass`] and [`SegmentCategory`] in JSON: their `as_str`.
+macro_rules! serialize_as_str {
+    ($($t:ty),*) => {$(
+        impl serde::Serialize for $t {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+                s.serialize_str(self.as_str())
+            }
+        }
+    )*};
+}
+serialize_as_str!(NodeType, CurveClass, SegmentCategory);
 
 impl NodeType {
     /// `crunode`, `cusp`, `acnode` or `explicit`.
@@ -159,12 +172,14 @@ impl SegmentCategory {
 }
 
 /// Features of the segment `t ∈ [0, 1]` (closed: endpoints count).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct SegmentFeatures {
     /// Both self-intersection parameters lie in `[0, 1]`.
+    #[serde(rename = "loop")]
     pub has_loop: bool,
     /// The tangent vanishes and the curve turns back at a parameter in `[0, 1]` (the cusp of a
     /// genuine cubic, or the turning point of a collinear curve).
+    #[serde(rename = "cusp")]
     pub has_cusp: bool,
     /// Number of distinct real inflection parameters in `[0, 1]`.
     pub inflections: usize,
@@ -173,7 +188,13 @@ pub struct SegmentFeatures {
 }
 
 /// Everything casteljau knows exactly about a planar curve of degree ≤ 3.
-#[derive(Clone, Debug, PartialEq, Eq)]
+///
+/// Its JSON (the fields of `classify --json`): `degree`, `real_degree`, `collinear`, `class`,
+/// `reason`, `node_type` (or `null`), `double_point` (exact strings, or `null`),
+/// `double_point_parameters`, `inflection_parameters`, `cusp_parameters` (exact strings such as
+/// `"1/2 + 1/6*sqrt(5)"`), `invariants` (`{"A", "B", "C"}`), `t_E` and `d` (only when `A ≠ 0`)
+/// and `segment` (`{"loop", "cusp", "inflections", "category"}`).
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Classification {
     /// The written degree.
     pub degree: usize,
@@ -197,11 +218,35 @@ pub struct Classification {
     /// points), ascending.
     pub cusp_parameters: Vec<Parameter>,
     /// `(A, B, C) = (a2×a3, a1×a3, a1×a2)`.
+    #[serde(serialize_with = "invariants_json")]
     pub invariants: [BigRational; 3],
     /// `t_E = −B/(2A)` and `d = (4AC − 3B²)/(4A²)` when `A ≠ 0`.
+    #[serde(flatten, serialize_with = "t_e_and_d_json")]
     pub t_e_and_d: Option<(BigRational, BigRational)>,
     /// Features of the segment `[0, 1]`.
     pub segment: SegmentFeatures,
+}
+
+fn invariants_json<S: serde::Serializer>(v: &[BigRational; 3], s: S) -> std::result::Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = s.serialize_map(Some(3))?;
+    for (name, x) in ["A", "B", "C"].iter().zip(v) {
+        m.serialize_entry(name, &x.to_string())?;
+    }
+    m.end()
+}
+
+fn t_e_and_d_json<S: serde::Serializer>(
+    v: &Option<(BigRational, BigRational)>,
+    s: S,
+) -> std::result::Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = s.serialize_map(None)?;
+    if let Some((t_e, d)) = v {
+        m.serialize_entry("t_E", &t_e.to_string())?;
+        m.serialize_entry("d", &d.to_string())?;
+    }
+    m.end()
 }
 
 /// Largest degree [`classify`] accepts.

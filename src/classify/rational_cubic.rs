@@ -63,6 +63,49 @@ pub struct RationalClassification {
     pub has_cusp: bool,
 }
 
+impl serde::Serialize for RationalClassification {
+    /// The fields of `classify --json --weights`: `rational` (`true`), `class`, `reason`,
+    /// `node_type`, `double_point`, `double_point_homogeneous`, `double_point_at_infinity`,
+    /// `double_point_parameters`, `parameter_at_infinity` and `segment` (`{"loop", "cusp"}`).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        #[derive(serde::Serialize)]
+        struct Segment {
+            #[serde(rename = "loop")]
+            has_loop: bool,
+            #[serde(rename = "cusp")]
+            has_cusp: bool,
+        }
+        #[derive(serde::Serialize)]
+        struct View<'a> {
+            rational: bool,
+            class: &'a str,
+            reason: &'a str,
+            node_type: Option<NodeType>,
+            double_point: &'a Option<Point<BigRational>>,
+            double_point_homogeneous: &'a Option<Point<BigRational>>,
+            double_point_at_infinity: bool,
+            double_point_parameters: &'a [Parameter],
+            parameter_at_infinity: bool,
+            segment: Segment,
+        }
+        serde::Serialize::serialize(
+            &View {
+                rational: true,
+                class: self.class,
+                reason: &self.reason,
+                node_type: self.node_type,
+                double_point: &self.double_point,
+                double_point_homogeneous: &self.double_point_homogeneous,
+                double_point_at_infinity: self.at_infinity,
+                double_point_parameters: &self.double_point_parameters,
+                parameter_at_infinity: self.parameter_at_infinity,
+                segment: Segment { has_loop: self.has_loop, has_cusp: self.has_cusp },
+            },
+            s,
+        )
+    }
+}
+
 /// Classifies the rational cubic with homogeneous control points `h` (`(X, Y, W)` each).
 ///
 /// # Errors

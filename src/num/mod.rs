@@ -8,6 +8,7 @@ pub mod parse;
 pub mod point;
 pub mod quadratic_field;
 pub mod scalar;
+pub mod serial;
 
 pub use point::Point;
 pub use quadratic_field::QuadraticExt;

@@ -205,3 +205,20 @@ pub fn parse_points(text: &str, dim: usize, line: Option<usize>) -> Result<Vec<P
     let n = toks.len() / dim;
     Ok((0..n).map(|_| Point::new(it.by_ref().take(dim).collect())).collect())
 }
+
+/// A list of exact numbers separated by whitespace or commas (weights, scale ratios, knot
+/// intervals): the one number-list reader of the crate.
+///
+/// # Errors
+/// As [`parse_points`] with `dim = 1`: a bad token (named with its position), or no number.
+///
+/// # Example
+/// ```
+/// use casteljau::{num::parse::parse_numbers, rat, ratio};
+/// assert_eq!(parse_numbers("1, 1/2, 0.25").unwrap(), vec![rat(1), ratio(1, 2), ratio(1, 4)]);
+/// assert_eq!(parse_numbers("1 1/2 0.25").unwrap(), parse_numbers("1, 1/2, 0.25").unwrap());
+/// assert!(parse_numbers("1 x").is_err());
+/// ```
+pub fn parse_numbers(text: &str) -> Result<Vec<BigRational>> {
+    Ok(parse_points(text, 1, None)?.into_iter().map(|p| p.coords.into_iter().next().expect("dimension 1")).collect())
+}

@@ -474,9 +474,9 @@ pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &Cur
                 .collect();
             fig.polyline(run, PALETTE[3], 3.5, false);
         }
-        if let Ok(map) =
-            crate::classify::canonical::canonical_map(curve, crate::classify::canonical::Formulas::Corrected)
-        {
+        let map = crate::classify::moving_line::MovingLines::new(curve)
+            .and_then(|ml| crate::classify::canonical::canonical_map(curve, k, &ml, crate::proof::Reading::Corrected));
+        if let Ok(map) = map {
             // reference points near the curve (far ones would only shrink the drawing)
             let (lo, hi) = bounds(&poly);
             for (name, p) in &map.points {

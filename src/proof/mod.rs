@@ -31,6 +31,18 @@
 
 pub mod expr;
 
+/// Which statement of a seed's claim is meant: the one **as printed** (which may be wrong: the
+/// seeds are OCR'd and contain errors) or the **corrected** one that holds. One enum for every
+/// claim with two readings (canonical maps, spline formulas, weight changes, Menelaus ratios).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Reading {
+    /// The formula exactly as printed in the seed.
+    AsPrinted,
+    /// The statement that holds (identical to the printed one where the seed is right).
+    Corrected,
+}
+
 use crate::error::{Error, Result};
 use crate::num::scalar::Exact;
 use std::fmt;

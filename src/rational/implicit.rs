@@ -18,7 +18,7 @@ use num_rational::BigRational;
 
 /// The outcome of [`prove_implicit`].
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum ImplicitVerdict {
+pub enum ImplicitOutcome {
     /// `f(x(t)) ≡ 0`: the curve lies on the curve/surface `f = 0`.
     Proved {
         /// `n·d`, the degree bound of `W^d f(X/W, …)`.
@@ -78,12 +78,12 @@ pub fn total_degree(f: &Expr, vars: &[&str]) -> Result<usize> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{rational::implicit::{prove_implicit, ImplicitVerdict}, rational::rational_bezier::RationalBezier, num::parse::parse_points, rat};
+/// use casteljau::{rational::implicit::{prove_implicit, ImplicitOutcome}, rational::rational_bezier::RationalBezier, num::parse::parse_points, rat};
 /// let folium = RationalBezier::new(parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(), vec![rat(1), rat(1), rat(1), rat(2)]).unwrap();
-/// assert!(matches!(prove_implicit(&folium, "x^3 - 3*x*y + y^3").unwrap(), ImplicitVerdict::Proved { degree_bound: 9, .. }));
-/// assert!(matches!(prove_implicit(&folium, "x^3 - 2*x*y + y^3").unwrap(), ImplicitVerdict::Counterexample { .. }));
+/// assert!(matches!(prove_implicit(&folium, "x^3 - 3*x*y + y^3").unwrap(), ImplicitOutcome::Proved { degree_bound: 9, .. }));
+/// assert!(matches!(prove_implicit(&folium, "x^3 - 2*x*y + y^3").unwrap(), ImplicitOutcome::Counterexample { .. }));
 /// ```
-pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<ImplicitVerdict> {
+pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<ImplicitOutcome> {
     let dim = curve.dim();
     if dim > 3 {
         return Err(Error::InvalidArgument { message: "implicit equations take curves of dimension ≤ 3".into() });
@@ -114,7 +114,7 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
                 vars.iter().zip(&point.coords).map(|(n, v)| (n.to_string(), Rational(v.clone()))).collect();
             let value = f.eval(&mut env).map_err(|e| Error::InvalidArgument { message: format!("{e:?}") })?;
             if !value.is_zero() {
-                return Ok(ImplicitVerdict::Counterexample { t, point, value: value.0 });
+                return Ok(ImplicitOutcome::Counterexample { t, point, value: value.0 });
             }
             params.push(t);
             if params.len() > bound {
@@ -123,5 +123,5 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
         }
         q += 1;
     }
-    Ok(ImplicitVerdict::Proved { degree_bound: bound, parameters: params })
+    Ok(ImplicitOutcome::Proved { degree_bound: bound, parameters: params })
 }

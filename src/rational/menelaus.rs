@@ -91,9 +91,13 @@ impl<S: Exact> Configuration<S> {
         m * &b == n * &a
     }
 
-    /// (4) as printed: `P0 P_a : P1 P_e = w0 t : w0 (1−t)` — signed lengths along the two lines
-    /// compared as `|P0 P_a|² (1−t)² = |P1 P_e|² t²`.
-    pub fn claim_4_as_printed_holds(&self) -> bool {
+    /// (4): as printed, `P0 P_a : P1 P_e = w0 t : w0 (1−t)` — signed lengths along the two
+    /// lines compared as `|P0 P_a|² (1−t)² = |P1 P_e|² t²`; corrected, the appendix's (56)
+    /// ([`Self::claim_56_holds`]).
+    pub fn claim_4_holds(&self, reading: crate::proof::Reading) -> bool {
+        if reading == crate::proof::Reading::Corrected {
+            return self.claim_56_holds();
+        }
         let l1 = self.p_a.sub(&self.p[0]);
         let l2 = self.p_e.sub(&self.p[1]);
         let u = S::one() - &self.t;

@@ -21,6 +21,7 @@ use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar};
 use crate::poly::bernstein::{binomial_scalar, pow};
 use crate::poly::roots::{Root, isolate_in};
+use crate::proof::Reading;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
@@ -280,27 +281,19 @@ impl<S: Scalar> RationalBezier<S> {
         Ok(out)
     }
 
-    /// Weight change, seed 002 (23), *as printed*: the point of the curve with `w_i + Δw`,
-    /// claimed to be `𝒱[γ_i(t)Δw : W_0(t;n)](x(t), P_i)` with `γ_i(t) = C(n,i)(1−t)^i t^{n−i}`.
+    /// Weight change, seed 002 (23): the point of the curve with `w_i + Δw`, claimed to be
+    /// `𝒱[γ_i(t)Δw : W_0(t;n)](x(t), P_i)`, with `γ_i(t) = C(n,i)(1−t)^i t^{n−i}` as printed
+    /// ([`Reading::AsPrinted`], which fails) or the Bernstein polynomial `γ_i(t) = B_i^n(t)`
+    /// that makes it hold ([`Reading::Corrected`]).
     ///
     /// # Errors
     /// As [`Self::eval`], or for a point at infinity.
-    pub fn weight_change_as_printed(&self, i: usize, dw: &S, t: &S) -> Result<Point<S>> {
-        let u = S::one() - t;
+    pub fn weight_change(&self, i: usize, dw: &S, t: &S, reading: Reading) -> Result<Point<S>> {
         let n = self.degree();
-        let gamma = binomial_scalar::<S>(n, i) * pow(&u, i) * pow(t, n - i);
-        self.weight_change_with(i, dw, t, gamma)
-    }
-
-    /// Weight change (23) with the Bernstein factor that makes it hold: `γ_i(t) = B_i^n(t)`.
-    ///
-    /// # Errors
-    /// As [`Self::weight_change_as_printed`].
-    pub fn weight_change(&self, i: usize, dw: &S, t: &S) -> Result<Point<S>> {
-        self.weight_change_with(i, dw, t, crate::poly::bernstein::bernstein(i, self.degree(), t))
-    }
-
-    fn weight_change_with(&self, i: usize, dw: &S, t: &S, gamma: S) -> Result<Point<S>> {
+        let gamma = match reading {
+            Reading::AsPrinted => binomial_scalar::<S>(n, i) * pow(&(S::one() - t), i) * pow(t, n - i),
+            Reading::Corrected => crate::poly::bernstein::bernstein(i, n, t),
+        };
         let p =
             self.points()[i].clone().ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
         let x = self.eval(t)?;

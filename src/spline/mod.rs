@@ -18,6 +18,7 @@ pub mod net;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar, rat};
+use crate::proof::Reading;
 use crate::rational::rational_bezier::{RationalBezier, divide};
 use num_rational::BigRational;
 use std::cmp::Ordering;
@@ -184,18 +185,75 @@ impl RationalSpline {
     }
 }
 
-/// Which version of the seed's formulas to use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Printed {
-    /// As printed in the seed.
-    AsPrinted,
-    /// As corrected (weights of the far points in every rational ratio).
-    Corrected,
-}
-
 fn w_lin(a: &BigRational, b: &BigRational, x: &BigRational, y: &BigRational) -> BigRational {
     // 𝒲[a:b](x, y) for numbers: (b x + a y)/(a + b)
     (b.clone() * x + a.clone() * y) / (a.clone() + b)
+}
+
+/// How a spline is turned into rational Bézier segments: the one switch behind `spline
+/// to-bezier --method`, the `method` of the claim files and spline nets.
+///
+/// Written `boehm`, `seed` or `seed-printed` ([`FromStr`](std::str::FromStr), and so in claim
+/// files).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize)]
+#[serde(try_from = "String")]
+pub enum Conversion {
+    /// Boehm knot insertion (any degree).
+    Boehm,
+    /// The seed's rational interpolation formulas: (25)–(29) for cubics (which hold as
+    /// printed, so both readings give them) and (53) for quadratics, as printed or corrected.
+    Seed(Reading),
+}
+
+impl std::str::FromStr for Conversion {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "boehm" => Ok(Conversion::Boehm),
+            "seed" => Ok(Conversion::Seed(Reading::Corrected)),
+            "seed-printed" => Ok(Conversion::Seed(Reading::AsPrinted)),
+            other => Err(Error::InvalidArgument {
+                message: format!("the conversion method is boehm, seed or seed-printed, not {other:?}"),
+            }),
+        }
+    }
+}
+
+impl TryFrom<String> for Conversion {
+    type Error = Error;
+    fn try_from(s: String) -> Result<Self> {
+        s.parse()
+    }
+}
+
+impl RationalSpline {
+    /// The rational Bézier segments, one per span, by the chosen route.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for the seed's formulas on a degree other than 2 or 3, or
+    /// when a ratio of their construction vanishes.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, proof::Reading, spline::{Conversion, RationalSpline}};
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// // a quadratic spline with scale ratios 1, 2, 1, 1, 1: two segments
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// let boehm = sp.to_bezier(Conversion::Boehm).unwrap();
+    /// assert_eq!(boehm.len(), 2);
+    /// assert_eq!(boehm, sp.to_bezier(Conversion::Seed(Reading::Corrected)).unwrap());
+    /// ```
+    pub fn to_bezier(&self, how: Conversion) -> Result<Vec<RationalBezier<BigRational>>> {
+        let segments = 0..self.segments();
+        match (how, self.degree) {
+            (Conversion::Boehm, _) => Ok(self.to_bezier_boehm()),
+            (Conversion::Seed(_), 3) => segments.map(|s| seed_cubic_segment(self, s)).collect(),
+            (Conversion::Seed(reading), 2) => segments.map(|s| seed_quadratic_segment(self, s, reading)).collect(),
+            (Conversion::Seed(_), n) => Err(Error::InvalidArgument {
+                message: format!("the seed gives formulas for degrees 2 and 3, not {n}: use the boehm method"),
+            }),
+        }
+    }
 }
 
 /// Seed 002 (25)–(29): the rational Bézier segment `s` of a cubic rational spline. `P_{-1}` and
@@ -238,7 +296,7 @@ pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezie
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] unless the spline is quadratic.
-pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Printed) -> Result<RationalBezier<BigRational>> {
+pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 2 {
         return Err(Error::InvalidArgument { message: "(53) is for quadratic splines".into() });
     }
@@ -248,8 +306,8 @@ pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Printed) -
     let k: Vec<BigRational> = sp.homogeneous[s..s + 3].iter().map(|h| h.coords[h.dim() - 1].clone()).collect();
     let fail = || Error::InvalidArgument { message: "a ratio of the construction vanishes".into() };
     let (left_far, right_near) = match version {
-        Printed::AsPrinted => (k[0].clone(), k[2].clone()),
-        Printed::Corrected => (k[1].clone(), k[1].clone()),
+        Reading::AsPrinted => (k[0].clone(), k[2].clone()),
+        Reading::Corrected => (k[1].clone(), k[1].clone()),
     };
     let p0 = divide(&(lm1.clone() * &left_far), &(l0.clone() * &k[0]), &q[0], &q[1]).ok_or_else(fail)?;
     let p2 = divide(&(l0.clone() * &k[2]), &(l1.clone() * &right_near), &q[1], &q[2]).ok_or_else(fail)?;

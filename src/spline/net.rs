@@ -11,18 +11,9 @@ use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
 use crate::rational::rational_bezier::RationalBezier;
-use crate::spline::{Printed, RationalSpline, seed_quadratic_segment};
+use crate::spline::{Conversion, RationalSpline};
 use crate::surface::RationalPatch;
 use num_rational::BigRational;
-
-/// How each curve of the net is converted.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Conversion {
-    /// Boehm knot insertion (any degree).
-    Boehm,
-    /// The seed's quadratic formulas (53)–(54), as printed or corrected (degree (2, 2)).
-    SeedQuadratic(Printed),
-}
 
 /// A rational spline net.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -38,10 +29,7 @@ pub struct SplineNet {
 }
 
 fn convert(sp: &RationalSpline, how: Conversion) -> Result<Vec<RationalBezier<BigRational>>> {
-    match how {
-        Conversion::Boehm => Ok(sp.to_bezier_boehm()),
-        Conversion::SeedQuadratic(v) => (0..sp.segments()).map(|s| seed_quadratic_segment(sp, s, v)).collect(),
-    }
+    sp.to_bezier(how)
 }
 
 fn transpose<T: Clone>(m: &[Vec<T>]) -> Vec<Vec<T>> {

@@ -8,6 +8,7 @@
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::Scalar;
+use crate::proof::Reading;
 use crate::rational::rational_bezier::{RationalBezier, divide};
 use num_rational::BigRational;
 
@@ -239,8 +240,8 @@ impl RationalPatch {
     }
 
     /// Weight change (48)–(49): `S'(u, v) = 𝒲[γ_i(u) γ_j(v) Δw : W_00(u, v)](S(u, v), P_ij)` with
-    /// `γ` the Bernstein polynomial `B_i^m(u)` (`printed = false`) or the seed's
-    /// `C(m,i)(1−u)^i u^{m−i}` (`printed = true`).
+    /// `γ` the Bernstein polynomial `B_i^m(u)` ([`Reading::Corrected`]) or the seed's
+    /// `C(m,i)(1−u)^i u^{m−i}` ([`Reading::AsPrinted`]).
     ///
     /// # Errors
     /// [`Error::WeightsVanish`] where the patch is undefined; a point at infinity.
@@ -251,11 +252,11 @@ impl RationalPatch {
         dw: &BigRational,
         u: &BigRational,
         v: &BigRational,
-        printed: bool,
+        reading: Reading,
     ) -> Result<Point<BigRational>> {
         let (m, n) = self.degree();
         let gamma = |k: usize, d: usize, x: &BigRational| {
-            if printed {
+            if reading == Reading::AsPrinted {
                 crate::poly::bernstein::binomial_scalar::<BigRational>(d, k)
                     * crate::poly::bernstein::pow(&(crate::num::scalar::rat(1) - x), k)
                     * crate::poly::bernstein::pow(x, d - k)

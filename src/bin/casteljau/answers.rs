@@ -1,6 +1,8 @@
 //! The answers of the `casteljau` commands: each computes exactly and returns the text line(s)
-//! and the JSON object for one curve.
+//! and the JSON object for one curve. Where the library has a result type, the JSON is that
+//! type's `Serialize` (the types are the schema); this module adds only the text rendering.
 
+use crate::batch::Answer;
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::curve::casteljau::subdivision_intervals;
 use casteljau::curve::fraction_free;
@@ -39,10 +41,10 @@ pub(crate) fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u
             json!({"t": t0.to_string(), "left": points_json(l.points()), "right": points_json(r.points())}),
         ));
     }
-    crate::cli::output_limit(
+    crate::batch::output_limit(
         "subdivision output (pieces × points)",
         (c.degree() + 1) << depth.min(40),
-        crate::cli::MAX_SUBDIVISION_POINTS,
+        crate::batch::MAX_SUBDIVISION_POINTS,
     )?;
     let pieces = fraction_free::subdivide_repeatedly(c, t0, depth)?;
     let ivs = subdivision_intervals(t0, depth);
@@ -53,6 +55,22 @@ pub(crate) fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u
         .map(|(p, (a, b))| json!({"interval": [a.to_string(), b.to_string()], "points": points_json(p.points())}))
         .collect();
     Ok((text, json!({"t": t0.to_string(), "depth": depth, "pieces": js})))
+}
+
+pub(crate) fn elevate(c: &BezierCurve<BigRational>, by: usize) -> Result<(String, Value)> {
+    let e = fraction_free::elevate(c, by)?;
+    Ok((e.to_string(), json!({"degree": e.degree(), "points": points_json(e.points())})))
+}
+
+pub(crate) fn derivative(c: &BezierCurve<BigRational>, order: usize) -> (String, Value) {
+    let d = c.derivative(order);
+    (d.to_string(), json!({"order": order, "degree": d.degree(), "points": points_json(d.points())}))
+}
+
+pub(crate) fn reduce(c: &BezierCurve<BigRational>) -> (String, Value) {
+    let r = fraction_free::reduce_degree(c);
+    let text = format!("degree {} (written as {}): {}", r.degree(), c.degree(), r);
+    (text, json!({"degree": c.degree(), "real_degree": r.degree(), "points": points_json(r.points())}))
 }
 
 pub(crate) fn triangle(c: &BezierCurve<BigRational>, t: &BigRational) -> Result<(String, Value)> {
@@ -82,7 +100,7 @@ pub(crate) fn power(c: &BezierCurve<BigRational>) -> (String, Value) {
         })
         .collect();
     let mut value = json!({"degree": c.degree(), "coefficients": points_json(&coeffs)});
-    if c.degree() <= crate::cli::MAX_MATRIX_DEGREE {
+    if c.degree() <= crate::batch::MAX_MATRIX_DEGREE {
         let matrix: Vec<Vec<String>> = casteljau::poly::bernstein::bernstein_to_power_matrix(c.degree())
             .iter()
             .map(|r| r.iter().map(|v| v.to_string()).collect())
@@ -126,74 +144,40 @@ pub fn format_polynomial(coeffs: &[BigRational], var: &str) -> String {
     if s.is_empty() { "0".into() } else { s }
 }
 
+/// The JSON of `classify`: the [`Classification`](casteljau::classify::Classification), the
+/// cubic's [`CubicEvidence`](casteljau::classify::evidence::CubicEvidence) and, with `--float`,
+/// `f64` approximations.
+#[derive(serde::Serialize)]
+struct ClassifyJson<'a> {
+    #[serde(flatten)]
+    classification: &'a casteljau::classify::Classification,
+    #[serde(flatten)]
+    evidence: Option<casteljau::classify::evidence::CubicEvidence>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float: Option<FloatApproximations>,
+}
+
+/// `--float`: nearest `f64`s of the exact answers.
+#[derive(serde::Serialize)]
+struct FloatApproximations {
+    double_point_parameters: Vec<f64>,
+    cusp_parameters: Vec<f64>,
+    inflection_parameters: Vec<f64>,
+    double_point: Option<Vec<f64>>,
+}
+
 pub(crate) fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)> {
-    use casteljau::classify::moving_line::MovingLines;
-    use casteljau::classify::{classify, loop_blinn};
-    let k = classify(c)?;
-    let params = |ps: &[casteljau::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_string())).collect() };
-    let floats = |ps: &[casteljau::classify::Parameter]| -> Value { ps.iter().map(|p| json!(p.to_f64())).collect() };
-    let mut v = json!({
-        "degree": k.degree,
-        "real_degree": k.real_degree,
-        "collinear": k.collinear,
-        "class": k.class.as_str(),
-        "reason": k.reason,
-        "node_type": k.node_type.map(|n| n.as_str()),
-        "double_point": k.double_point.as_ref().map(point_json),
-        "double_point_parameters": params(&k.double_point_parameters),
-        "cusp_parameters": params(&k.cusp_parameters),
-        "inflection_parameters": params(&k.inflection_parameters),
-        "segment": {
-            "loop": k.segment.has_loop,
-            "cusp": k.segment.has_cusp,
-            "inflections": k.segment.inflections,
-            "category": k.segment.category.as_str(),
-        },
-        "invariants": {"A": k.invariants[0].to_string(), "B": k.invariants[1].to_string(), "C": k.invariants[2].to_string()},
+    let k = casteljau::classify::classify(c)?;
+    let evidence = casteljau::classify::evidence::cubic_evidence(c, &k)?;
+    let floats = |ps: &[casteljau::classify::Parameter]| ps.iter().map(|p| p.to_f64()).collect();
+    let float_json = float.then(|| FloatApproximations {
+        double_point_parameters: floats(&k.double_point_parameters),
+        cusp_parameters: floats(&k.cusp_parameters),
+        inflection_parameters: floats(&k.inflection_parameters),
+        double_point: k.double_point.as_ref().map(|p| p.to_f64().coords),
     });
-    if let Some((te, d)) = &k.t_e_and_d {
-        v["t_E"] = json!(te.to_string());
-        v["d"] = json!(d.to_string());
-    }
-    if c.degree() == 3 {
-        let ml = MovingLines::new(c)?;
-        let verified = ml.verify().is_ok();
-        let (lb, lb_node) = loop_blinn(c);
-        v["moving_lines"] = json!({
-            "L00": point_json(&ml.l0[0]), "L01": point_json(&ml.l0[1]),
-            "L10": point_json(&ml.l1[0]), "L11": point_json(&ml.l1[1]), "L12": point_json(&ml.l1[2]),
-            "D": point_json(&ml.double_point),
-            "t_E": ml.t_e().map(|t| t.to_string()),
-            "verified": verified,
-        });
-        if let Ok(map) =
-            casteljau::classify::canonical::canonical_map(c, casteljau::classify::canonical::Formulas::Corrected)
-        {
-            let proved = map.prove(c);
-            v["canonical"] = json!({
-                "equation": casteljau::classify::canonical::canonical_equation(map.node),
-                "matrix": map.matrix.iter().map(|r| r.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
-                "t_E": map.t_e.to_string(),
-                "t_F": map.t_f.to_string(),
-                "parameter": "(t - t_E)/(t_F - t_E)",
-                "points": map.points.iter().map(|(n, p)| (n.to_string(), json!(p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()))).collect::<serde_json::Map<_, _>>(),
-                "proved": proved.is_ok(),
-                "certificate": match &proved { Ok(c) => c.to_string(), Err(e) => format!("counterexample {e}") },
-            });
-        }
-        v["loop_blinn"] = json!({
-            "d1": lb[0].to_string(), "d2": lb[1].to_string(), "d3": lb[2].to_string(),
-            "node_type": lb_node.map(|n| n.as_str()),
-        });
-    }
-    if float {
-        v["float"] = json!({
-            "double_point_parameters": floats(&k.double_point_parameters),
-            "cusp_parameters": floats(&k.cusp_parameters),
-            "inflection_parameters": floats(&k.inflection_parameters),
-            "double_point": k.double_point.as_ref().map(|p| p.to_f64().coords),
-        });
-    }
+    let v = serde_json::to_value(ClassifyJson { classification: &k, evidence, float: float_json })
+        .expect("exact strings and finite floats serialize");
     let show = |ps: &[casteljau::classify::Parameter]| -> String {
         ps.iter()
             .map(|p| if float { format!("{p} (≈{:.6})", p.to_f64()) } else { p.to_string() })
@@ -231,18 +215,7 @@ pub(crate) fn classify_weighted(c: &RationalBezier<BigRational>) -> Result<(Stri
     let h = c.homogeneous().points().to_vec();
     let k = casteljau::classify::rational_cubic::classify_rational(&h)?;
     let params: Vec<String> = k.double_point_parameters.iter().map(|p| p.to_string()).collect();
-    let v = json!({
-        "rational": true,
-        "class": k.class,
-        "reason": k.reason,
-        "node_type": k.node_type.map(|n| n.as_str()),
-        "double_point": k.double_point.as_ref().map(point_json),
-        "double_point_homogeneous": k.double_point_homogeneous.as_ref().map(point_json),
-        "double_point_at_infinity": k.at_infinity,
-        "double_point_parameters": params,
-        "parameter_at_infinity": k.parameter_at_infinity,
-        "segment": {"loop": k.has_loop, "cusp": k.has_cusp},
-    });
+    let v = serde_json::to_value(&k).expect("exact strings serialize");
     let mut text = k.class.to_string();
     if let Some(n) = k.node_type {
         text += &format!(" ({})", n.as_str());
@@ -292,7 +265,7 @@ pub(crate) fn eval_rational(c: &RationalBezier<BigRational>, ts: &[BigRational])
     Ok((text, json!({"degree": c.degree(), "rational": true, "values": js, "defined_on_0_1": defined})))
 }
 
-pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigRational) -> Result<crate::cli::Answer> {
+pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigRational) -> Result<Answer> {
     let roots = c.denominator_roots(a, b);
     let (text, failed, list) = match &roots {
         None => ("undefined everywhere: the denominator is identically 0".to_string(), true, vec![]),
@@ -302,7 +275,7 @@ pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigR
             (format!("undefined: the denominator vanishes at {}", shown.join("; ")), true, shown)
         }
     };
-    Ok(crate::cli::Answer {
+    Ok(Answer {
         text,
         json: json!({"interval": [a.to_string(), b.to_string()], "defined": !failed, "roots": list}),
         failed,
@@ -329,10 +302,10 @@ pub(crate) fn conic(c: &RationalBezier<BigRational>) -> Result<(String, Value)> 
     Ok((text, json!({"conic": kind.as_str(), "shape_factor": shape.map(|k| k.to_string())})))
 }
 
-pub(crate) fn implicit(c: &RationalBezier<BigRational>, poly: &str) -> Result<crate::cli::Answer> {
-    use casteljau::rational::implicit::{ImplicitVerdict, prove_implicit};
+pub(crate) fn implicit(c: &RationalBezier<BigRational>, poly: &str) -> Result<Answer> {
+    use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
     Ok(match prove_implicit(c, poly)? {
-        ImplicitVerdict::Proved { degree_bound, parameters } => crate::cli::Answer {
+        ImplicitOutcome::Proved { degree_bound, parameters } => Answer {
             text: format!(
                 "proved: f(x(t)) ≡ 0 — W^d·f(X/W) has degree ≤ {degree_bound} and vanishes at {} parameters with W ≠ 0",
                 parameters.len()
@@ -340,7 +313,7 @@ pub(crate) fn implicit(c: &RationalBezier<BigRational>, poly: &str) -> Result<cr
             json: json!({"proved": true, "degree_bound": degree_bound, "parameters": parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>()}),
             failed: false,
         },
-        ImplicitVerdict::Counterexample { t, point, value } => crate::cli::Answer {
+        ImplicitOutcome::Counterexample { t, point, value } => Answer {
             text: format!("counterexample: at t = {t} the curve is at {point} where f = {value}"),
             json: json!({"proved": false, "t": t.to_string(), "point": point_json(&point), "value": value.to_string()}),
             failed: true,
@@ -445,21 +418,7 @@ pub(crate) fn surface_contour(
 }
 
 pub(crate) fn spline_to_bezier(sp: &casteljau::spline::RationalSpline, method: &str) -> Result<(String, Value)> {
-    let segs: Vec<RationalBezier<BigRational>> = match (method, sp.degree) {
-        ("boehm", _) => sp.to_bezier_boehm(),
-        ("seed", 3) => {
-            (0..sp.segments()).map(|s| casteljau::spline::seed_cubic_segment(sp, s)).collect::<Result<_>>()?
-        }
-        ("seed", 2) => (0..sp.segments())
-            .map(|s| casteljau::spline::seed_quadratic_segment(sp, s, casteljau::spline::Printed::Corrected))
-            .collect::<Result<_>>()?,
-        ("seed", n) => {
-            return Err(Error::InvalidArgument {
-                message: format!("the seed gives formulas for degrees 2 and 3, not {n}: use --method boehm"),
-            });
-        }
-        (m, _) => return Err(Error::InvalidArgument { message: format!("--method is seed or boehm, not {m:?}") }),
-    };
+    let segs = sp.to_bezier(method.parse()?)?;
     let text = segs
         .iter()
         .enumerate()
@@ -482,8 +441,11 @@ pub(crate) fn spline_to_bezier(sp: &casteljau::spline::RationalSpline, method: &
     Ok((text, json!({"degree": sp.degree, "method": method, "segments": js})))
 }
 
-pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<crate::cli::Answer> {
-    use casteljau::spline::check_segments;
+pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<Answer> {
+    use casteljau::{
+        proof::Reading,
+        spline::{Conversion, check_segments},
+    };
     let boehm = sp.to_bezier_boehm();
     let mut lines = Vec::new();
     let mut failed = false;
@@ -498,15 +460,7 @@ pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<cra
         }
     };
     report("Boehm knot insertion", check_segments(sp, &boehm));
-    let seed: Option<Result<Vec<RationalBezier<BigRational>>>> = match sp.degree {
-        3 => Some((0..sp.segments()).map(|s| casteljau::spline::seed_cubic_segment(sp, s)).collect()),
-        2 => Some(
-            (0..sp.segments())
-                .map(|s| casteljau::spline::seed_quadratic_segment(sp, s, casteljau::spline::Printed::Corrected))
-                .collect(),
-        ),
-        _ => None,
-    };
+    let seed = matches!(sp.degree, 2 | 3).then(|| sp.to_bezier(Conversion::Seed(Reading::Corrected)));
     if let Some(seed) = seed {
         let seed = seed?;
         report("seed formulas", check_segments(sp, &seed));
@@ -514,7 +468,7 @@ pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<cra
         failed |= !same;
         lines.push(format!("seed formulas = Boehm (points and weights): {same}"));
     }
-    Ok(crate::cli::Answer {
+    Ok(Answer {
         text: lines.join("\n"),
         json: json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines}),
         failed,

@@ -1,13 +1,11 @@
 //! Runners of the commands with their own input and output: `prove`, `plot`, `surface`,
-//! `spline` (the curve commands share [`crate::cli`]'s batch reader).
+//! `spline`, `gallery` (the curve commands share [`crate::batch`]'s reader).
 
 use crate::answers;
-use crate::cli::{
-    Answer, CurveArgs, PatchArgs, RationalArgs, SplineOp, SurfaceOp, Weights, batch, numbers, option_number, patch_of,
-    rational_batch, rational_curve,
-};
+use crate::args::{PatchArgs, PlotArgs, ProveArgs, SplineOp, SurfaceOp};
+use crate::batch::{Answer, Weights, batch, numbers, option_number, patch_of, rational_batch, rational_curve};
 use casteljau::error::{Error, Result};
-use serde_json::{Value, json};
+use serde_json::Value;
 use std::io::Write;
 
 pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
@@ -72,18 +70,33 @@ pub(crate) fn spline(op: SplineOp, out: &mut dyn Write) -> i32 {
     })
 }
 
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn plot(
-    opts: Result<casteljau::plot::CurveOptions>,
-    family: Option<String>,
-    grid: bool,
-    title: Option<String>,
-    width: u32,
-    output: Option<std::path::PathBuf>,
-    rational: RationalArgs,
-    curve: CurveArgs,
-    out: &mut dyn Write,
-) -> i32 {
+pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
+    let PlotArgs {
+        polygon,
+        construction,
+        subdivide_at,
+        depth,
+        features,
+        weights_family: family,
+        grid,
+        title,
+        width,
+        output,
+        rational,
+        curve,
+    } = args;
+    let width = width.clamp(16, 8192);
+    let opts = (|| -> Result<casteljau::plot::CurveOptions> {
+        Ok(casteljau::plot::CurveOptions {
+            polygon,
+            construction: construction.as_deref().map(|t| option_number("--construction", t)).transpose()?,
+            subdivide: subdivide_at
+                .as_deref()
+                .map(|t| option_number("--subdivide", t).map(|t| (t, depth)))
+                .transpose()?,
+            features,
+        })
+    })();
     use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational};
     use std::cell::RefCell;
     let fig = RefCell::new(Figure::new().grid(grid));
@@ -147,14 +160,22 @@ pub(crate) fn plot(
     code
 }
 
-pub(crate) fn prove(
-    paths: &[std::path::PathBuf],
-    filter: Option<&str>,
-    json_out: bool,
-    junit: Option<&std::path::Path>,
-    write_readme: Option<&std::path::Path>,
-    out: &mut dyn Write,
-) -> i32 {
+pub(crate) fn gallery(dir: &std::path::Path, out: &mut dyn Write) -> i32 {
+    match casteljau::plot::gallery::write(dir) {
+        Ok(files) => {
+            let _ = writeln!(out, "wrote {} files to {}", files.len(), dir.display());
+            0
+        }
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            2
+        }
+    }
+}
+
+pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
+    let (paths, filter, json_out) = (&args.paths, args.filter.as_deref(), args.json);
+    let (junit, write_readme) = (args.junit.as_deref(), args.write_readme.as_deref());
     use casteljau::catalogue;
     use std::io::IsTerminal;
     let paths = if paths.is_empty() { vec![catalogue::default_path()] } else { paths.to_vec() };
@@ -190,12 +211,7 @@ pub(crate) fn prove(
             failed += 1;
         }
         let line = if json_out {
-            json!({
-                "id": r.id, "source": c.source, "statement": c.statement, "expected": r.expected.as_str(),
-                "verdict": r.found.as_str(), "passed": r.passed(), "method": r.method, "detail": r.detail,
-                "corrected": r.corrected_detail, "seconds": r.seconds,
-            })
-            .to_string()
+            serde_json::to_value(&r).expect("claim results serialize").to_string()
         } else {
             format!(
                 "{} {:<44} {:<17} {:<13} {:>8.4}s  {}",

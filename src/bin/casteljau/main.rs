@@ -1,9 +1,102 @@
-//! The `casteljau` binary: parses the command line and exits with its code.
+//! The `casteljau` binary: parses the command line, dispatches each command to its runner and
+//! exits with its code.
+//!
+//! * [`args`]: the clap structs, one per command or shared group.
+//! * [`batch`]: reading curves (argument, file, stdin), limits, writing one answer per curve.
+//! * [`answers`]: each command's exact answer for one curve, as text and typed JSON.
+//! * [`commands`]: the commands with their own input and output (`prove`, `plot`, `surface`,
+//!   `spline`, `gallery`).
 
 mod answers;
-mod cli;
+mod args;
+mod batch;
 mod commands;
 
+use args::{Cli, Command};
+use batch::{Answer, MAX_TRIANGLE_DEGREE, Weights, batch, option_number, output_limit, rational_batch, rational_curve};
+use casteljau::error::{Error, Result};
+use casteljau::rat;
+use clap::Parser;
+use num_rational::BigRational;
+use std::io::Write;
+
 fn main() {
-    std::process::exit(cli::main());
+    let cli = Cli::parse();
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let code = run(cli, &mut out);
+    let _ = out.flush();
+    std::process::exit(code);
+}
+
+/// Runs a parsed command, writing answers to `out` and errors to stderr; returns the exit code.
+fn run(cli: Cli, out: &mut dyn Write) -> i32 {
+    match cli.command {
+        Command::Prove(args) => commands::prove(&args, out),
+        Command::Eval { t, rational, curve } => {
+            let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
+            rational_batch(&rational, curve, out, move |c, w| {
+                let ts = ts.clone()?;
+                match w {
+                    Weights::Polynomial => answers::eval(c, &ts).map(Answer::from),
+                    w => answers::eval_rational(&rational_curve(c, w)?, &ts).map(Answer::from),
+                }
+            })
+        }
+        Command::Subdivide { t, depth, rational, curve } => {
+            let t0 = option_number("--t", &t);
+            rational_batch(&rational, curve, out, move |c, w| {
+                let t0 = t0.clone()?;
+                match w {
+                    Weights::Polynomial => answers::subdivide(c, &t0, depth).map(Answer::from),
+                    _ if depth != 1 => Err(Error::InvalidArgument {
+                        message: "--depth is for polynomial curves; rational curves split once".into(),
+                    }),
+                    w => answers::subdivide_rational(&rational_curve(c, w)?, &t0).map(Answer::from),
+                }
+            })
+        }
+        Command::Elevate { by, rational, curve } => rational_batch(&rational, curve, out, move |c, w| match w {
+            Weights::Polynomial => answers::elevate(c, by).map(Answer::from),
+            w => answers::elevate_rational(&rational_curve(c, w)?, by).map(Answer::from),
+        }),
+        Command::Implicit { poly, rational, curve } => {
+            rational_batch(&rational, curve, out, move |c, w| answers::implicit(&rational_curve(c, w)?, &poly))
+        }
+        Command::Defined { from, to, rational, curve } => {
+            let range =
+                option_number("--from", &from).and_then(|a| Ok((a, option_number("--to", &to)?))).and_then(|(a, b)| {
+                    if a >= b || a < rat(0) || b > rat(1) {
+                        Err(Error::InvalidArgument { message: format!("need 0 <= --from < --to <= 1, got [{a}, {b}]") })
+                    } else {
+                        Ok((a, b))
+                    }
+                });
+            rational_batch(&rational, curve, out, move |c, w| {
+                let (a, b) = range.clone()?;
+                answers::defined(&rational_curve(c, w)?, &a, &b)
+            })
+        }
+        Command::Surface { op } => commands::surface(op, out),
+        Command::Gallery { dir } => commands::gallery(&dir, out),
+        Command::Plot(args) => commands::plot(args, out),
+        Command::Spline { op } => commands::spline(op, out),
+        Command::Conic { rational, curve } => {
+            rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
+        }
+        Command::Power { curve } => batch(&curve, out, |c| Ok(answers::power(c).into())),
+        Command::Triangle { t, curve } => {
+            let t = option_number("--t", &t);
+            batch(&curve, out, move |c| {
+                output_limit("triangle of degree", c.degree(), MAX_TRIANGLE_DEGREE)?;
+                answers::triangle(c, &t.clone()?).map(Answer::from)
+            })
+        }
+        Command::Derivative { order, curve } => batch(&curve, out, |c| Ok(answers::derivative(c, order).into())),
+        Command::Reduce { curve } => batch(&curve, out, |c| Ok(answers::reduce(c).into())),
+        Command::Classify { float, rational, curve } => rational_batch(&rational, curve, out, move |c, w| match w {
+            Weights::Polynomial => answers::classify(c, float).map(Answer::from),
+            w => answers::classify_weighted(&rational_curve(c, w)?).map(Answer::from),
+        }),
+    }
 }

@@ -1,0 +1,359 @@
+//! The command line's arguments: clap-derived plain structs, one per command or shared group.
+
+use clap::{Args, Parser, Subcommand};
+
+pub const AFTER_HELP: &str = "\
+CURVES: control points as exact numbers (integers, p/q, decimals such as 0.125 or 1.5e-3),
+commas between points: \"x0 y0, x1 y1, x2 y2\". With --input FILE (or '-' / no curve: stdin)
+each line is one curve; numbers may be separated by whitespace or commas, read --dim at a time.
+Blank lines and lines starting with '#' are skipped.
+
+EXIT CODES: 0 ok; 1 a check failed; 2 bad input (the message names the token and position).";
+
+/// casteljau: Bézier curves in exact arithmetic.
+#[derive(Parser, Debug)]
+#[command(name = "casteljau", version, about, after_help = AFTER_HELP)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Evaluate b(t) exactly (fraction-free de Casteljau).
+    Eval {
+        /// Parameter values (repeatable): exact numbers.
+        #[arg(long = "t", required = true, allow_hyphen_values = true)]
+        t: Vec<String>,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Split at t (Lemma 2) into the control polygons of [0,t] and [t,1]; with --depth, repeat.
+    Subdivide {
+        /// The split parameter.
+        #[arg(long = "t", default_value = "1/2", allow_hyphen_values = true)]
+        t: String,
+        /// Split every piece again, depth times (2^depth pieces, as in seed 001 Fig. 10).
+        #[arg(long, default_value_t = 1)]
+        depth: u32,
+        /// Rational curves (depth 1).
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Degree elevation: the same curve with `by` more control points.
+    Elevate {
+        /// How many degrees to add.
+        #[arg(long, default_value_t = 1)]
+        by: usize,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Power form: coefficients c_k with b(t) = Σ c_k t^k, and the conversion matrix.
+    Power {
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The de Casteljau scheme: every b_i^r(t).
+    Triangle {
+        /// The parameter.
+        #[arg(long = "t", allow_hyphen_values = true)]
+        t: String,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The k-th derivative curve (hodograph for k = 1).
+    Derivative {
+        /// The order k.
+        #[arg(long, default_value_t = 1)]
+        order: usize,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Exact degree reduction: the true degree and the control points of that degree.
+    Reduce {
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Classify planar curves of degree ≤ 3 exactly: node type, double point, parameters,
+    /// segment features on [0,1].
+    Classify {
+        /// Also print f64 approximations of the exact parameters.
+        #[arg(long)]
+        float: bool,
+        /// A rational cubic (classified projectively).
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Prove or refute that a (rational) curve lies on f = 0: exit 0 proved, 1 counterexample.
+    Implicit {
+        /// The polynomial f in x, y (and z), e.g. "x^3 - 3*x*y + y^3".
+        #[arg(long, allow_hyphen_values = true)]
+        poly: String,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Is the rational curve defined on [a, b] (default [0, 1])? Exact root isolation of the
+    /// denominator Σ w_i B_i(t): exit 0 defined, 1 with isolating intervals of its roots.
+    Defined {
+        /// Start of the interval.
+        #[arg(long, default_value = "0", allow_hyphen_values = true)]
+        from: String,
+        /// End of the interval.
+        #[arg(long, default_value = "1", allow_hyphen_values = true)]
+        to: String,
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The conic of a rational quadratic: ellipse, parabola, hyperbola (from w1² − w0·w2).
+    Conic {
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// Rational tensor-product Bézier patches: points row-major, (m+1)(n+1) of them.
+    Surface {
+        /// What to do with the patch.
+        #[command(subcommand)]
+        op: SurfaceOp,
+    },
+    /// Rational splines with scale ratios → C^(n-1)-joined rational Bézier segments.
+    Spline {
+        /// What to do with the spline.
+        #[command(subcommand)]
+        op: SplineOp,
+    },
+    /// Draw curves as standalone SVG (to stdout or -o FILE); every curve of a batch in one figure.
+    Plot(PlotArgs),
+    /// Write the seed figures that can be reproduced (SVG) and an index.html into DIR.
+    Gallery {
+        /// The folder.
+        dir: std::path::PathBuf,
+    },
+    /// Check the claim catalogue (default proofs/): one line per claim, exit 0 iff every
+    /// verdict is as expected, 1 otherwise, 2 on malformed claim files.
+    Prove(ProveArgs),
+}
+
+/// Patch operations.
+#[derive(Subcommand, Debug)]
+pub enum SurfaceOp {
+    /// S(u, v): the closed form (41), checked against de Casteljau u-then-v and v-then-u.
+    Eval {
+        /// Parameter u.
+        #[arg(long, allow_hyphen_values = true)]
+        u: String,
+        /// Parameter v.
+        #[arg(long, allow_hyphen_values = true)]
+        v: String,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+    /// Split at u = U (or v = V).
+    Subdivide {
+        /// Split in u here.
+        #[arg(long, allow_hyphen_values = true)]
+        u: Option<String>,
+        /// Split in v here.
+        #[arg(long, allow_hyphen_values = true)]
+        v: Option<String>,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+    /// Degree elevation in u and v.
+    Elevate {
+        /// Degrees added in u.
+        #[arg(long, default_value_t = 0)]
+        u_by: usize,
+        /// Degrees added in v.
+        #[arg(long, default_value_t = 0)]
+        v_by: usize,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+    /// The contour z = C as an exact implicit polynomial in (u, v), and a sampled polyline.
+    Contour {
+        /// The height C.
+        #[arg(long, allow_hyphen_values = true)]
+        z: String,
+        /// Sample the contour on an N×N grid (f64 segments, for plots).
+        #[arg(long, default_value_t = 0)]
+        polyline: usize,
+        /// The patch.
+        #[command(flatten)]
+        patch: PatchArgs,
+    },
+}
+
+/// A patch given as a curve line of (m+1)(n+1) points.
+#[derive(Args, Debug)]
+pub struct PatchArgs {
+    /// Degrees "m,n" (rows along u, columns along v).
+    #[arg(long)]
+    pub degree: String,
+    /// Weights, row-major (default all 1).
+    #[command(flatten)]
+    pub rational: RationalArgs,
+    /// The control net, row-major, and output form (3D by default).
+    #[command(flatten)]
+    pub curve: CurveArgs,
+}
+
+/// Spline operations.
+#[derive(Subcommand, Debug)]
+pub enum SplineOp {
+    /// The rational Bézier segments of the spline, with their weights.
+    ToBezier {
+        /// `seed` (the seed's rational interpolation formulas: cubic (25)-(29), quadratic (53)
+        /// corrected) or `boehm` (knot insertion, any degree).
+        #[arg(long, default_value = "boehm")]
+        method: String,
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+    /// Prove the segments: equal to the NURBS on each span, C^(n-1) joins, seed = Boehm.
+    Check {
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+}
+
+/// A rational spline.
+#[derive(Args, Debug)]
+pub struct SplineArgs {
+    /// The degree n.
+    #[arg(long, default_value_t = 3)]
+    pub degree: usize,
+    /// Scale ratios (knot intervals), m + n of them for m + 1 control points.
+    #[arg(long, allow_hyphen_values = true)]
+    pub ratios: String,
+    /// Weights k_i (default all 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub weights: Option<String>,
+    /// The control polygon, and output form.
+    #[command(flatten)]
+    pub curve: CurveArgs,
+}
+
+/// `plot`: what to draw and where.
+#[derive(Args, Debug)]
+pub struct PlotArgs {
+    /// Draw and label the control polygon.
+    #[arg(long)]
+    pub polygon: bool,
+    /// Overlay the de Casteljau construction at this parameter.
+    #[arg(long, allow_hyphen_values = true)]
+    pub construction: Option<String>,
+    /// Overlay repeated subdivision at this parameter (with --depth).
+    #[arg(long = "subdivide", allow_hyphen_values = true)]
+    pub subdivide_at: Option<String>,
+    /// Depth of --subdivide.
+    #[arg(long, default_value_t = 1)]
+    pub depth: u32,
+    /// Mark classification features (double point, cusp, inflections, loop, E, canonical frame).
+    #[arg(long)]
+    pub features: bool,
+    /// A family of curves varying one weight, e.g. "w1=1,3,4" (needs --weights for the rest).
+    #[arg(long)]
+    pub weights_family: Option<String>,
+    /// Grid lines at integer coordinates.
+    #[arg(long)]
+    pub grid: bool,
+    /// A title.
+    #[arg(long)]
+    pub title: Option<String>,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 480)]
+    pub width: u32,
+    /// Write the SVG here instead of stdout.
+    #[arg(long, short)]
+    pub output: Option<std::path::PathBuf>,
+    /// Rational curves.
+    #[command(flatten)]
+    pub rational: RationalArgs,
+    /// The curve(s).
+    #[command(flatten)]
+    pub curve: CurveArgs,
+}
+
+/// `prove`: which claims, and where the reports go.
+#[derive(Args, Debug)]
+pub struct ProveArgs {
+    /// Claim files or folders (default: proofs/).
+    pub paths: Vec<std::path::PathBuf>,
+    /// Only claims whose id contains this text.
+    #[arg(long)]
+    pub filter: Option<String>,
+    /// One JSON object per claim.
+    #[arg(long)]
+    pub json: bool,
+    /// Also write a JUnit XML report to this file.
+    #[arg(long)]
+    pub junit: Option<std::path::PathBuf>,
+    /// Regenerate the catalogue's README (default proofs/README.md) from this run.
+    #[arg(long, num_args = 0..=1, default_missing_value = "proofs/README.md")]
+    pub write_readme: Option<std::path::PathBuf>,
+}
+
+/// Weights of a rational curve (for eval, subdivide, elevate, implicit, conic, classify).
+#[derive(Args, Debug, Clone)]
+pub struct RationalArgs {
+    /// Weights w0..wn (exact numbers, one per control point): a rational curve.
+    #[arg(long, allow_hyphen_values = true)]
+    pub weights: Option<String>,
+    /// Read control points as homogeneous "w·x w·y w" (w = 0: a point at infinity, a direction).
+    #[arg(long)]
+    pub homogeneous: bool,
+}
+
+/// Where the curves come from, and the output form.
+#[derive(Args, Debug)]
+pub struct CurveArgs {
+    /// One curve, e.g. "0 0, 1 2, 2 0". Omit to read --input or stdin.
+    #[arg(allow_hyphen_values = true)]
+    pub curve: Option<String>,
+    /// A batch file, one curve per line ('-' for stdin).
+    #[arg(long, short)]
+    pub input: Option<String>,
+    /// Dimension of the control points (2 or 3; any ≥ 1 works).
+    #[arg(long, default_value_t = 2)]
+    pub dim: usize,
+    /// JSON Lines output with exact strings.
+    #[arg(long)]
+    pub json: bool,
+}

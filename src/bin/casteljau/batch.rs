@@ -1,0 +1,237 @@
+//! Reading curves from the command line, a file or stdin, the limits on input and output, and
+//! writing one answer per curve (text, or JSON Lines with the input's `line`).
+//!
+//! Exit codes: `0` success, `1` a check failed, `2` bad input. In a batch every line is
+//! answered; a bad line gets an error (with its line number) and the exit code is 2 at the end.
+
+use crate::args::{CurveArgs, RationalArgs};
+use casteljau::curve::bezier::BezierCurve;
+use casteljau::error::{Error, Position, Result};
+use casteljau::num::parse::{parse_number, parse_numbers, parse_points};
+use casteljau::num::point::Point;
+use casteljau::rational::rational_bezier::RationalBezier;
+use num_rational::BigRational;
+use serde_json::{Value, json};
+use std::io::{BufRead, Read, Write};
+
+/// The numbers of an option such as `--ratios`, errors prefixed with the option's name.
+pub fn numbers(option: &str, text: &str) -> Result<Vec<BigRational>> {
+    parse_numbers(text).map_err(|e| Error::InvalidArgument { message: format!("{option}: {e}") })
+}
+
+/// The patch of `--degree m,n` from a curve line of `(m+1)(n+1)` points.
+pub fn patch_of(
+    c: &BezierCurve<BigRational>,
+    degree: &str,
+    rational: &RationalArgs,
+) -> Result<casteljau::surface::RationalPatch> {
+    let bad = |m: String| Error::InvalidArgument { message: m };
+    let (m, n) = degree
+        .split_once(',')
+        .and_then(|(a, b)| Some((a.trim().parse::<usize>().ok()?, b.trim().parse::<usize>().ok()?)))
+        .ok_or_else(|| bad(format!("--degree must be \"m,n\", got {degree:?}")))?;
+    if m > casteljau::surface::MAX_PATCH_DEGREE || n > casteljau::surface::MAX_PATCH_DEGREE {
+        return Err(Error::TooLarge {
+            what: "patch degree",
+            value: m.max(n),
+            limit: casteljau::surface::MAX_PATCH_DEGREE,
+        });
+    }
+    let pts = c.points();
+    if pts.len() != (m + 1) * (n + 1) {
+        return Err(bad(format!("a degree ({m}, {n}) patch needs {} points, got {}", (m + 1) * (n + 1), pts.len())));
+    }
+    let rows: Vec<Vec<Point<BigRational>>> = pts.chunks(n + 1).map(|r| r.to_vec()).collect();
+    if rational.homogeneous {
+        return casteljau::surface::RationalPatch::from_homogeneous(rows);
+    }
+    let w = match parse_weights(rational)? {
+        Some(w) if w.len() != pts.len() => {
+            return Err(bad(format!("{} weights for {} control points", w.len(), pts.len())));
+        }
+        Some(w) => w,
+        None => vec![casteljau::num::scalar::rat(1); pts.len()],
+    };
+    casteljau::surface::RationalPatch::new(rows, w.chunks(n + 1).map(|r| r.to_vec()).collect())
+}
+
+/// `--weights`, parsed (`None` without it); an error with `--homogeneous` as well.
+pub fn parse_weights(args: &RationalArgs) -> Result<Option<Vec<BigRational>>> {
+    if args.homogeneous && args.weights.is_some() {
+        return Err(Error::InvalidArgument { message: "give --weights or --homogeneous, not both".into() });
+    }
+    let Some(w) = &args.weights else { return Ok(None) };
+    numbers("--weights", w).map(Some)
+}
+
+/// How a command's control points carry weights.
+#[derive(Clone, Copy, Debug)]
+pub enum Weights<'a> {
+    /// A polynomial curve (all weights 1).
+    Polynomial,
+    /// `--weights`.
+    Given(&'a [BigRational]),
+    /// `--homogeneous`.
+    Homogeneous,
+}
+
+/// The rational curve given by a parsed control polygon and its weights.
+pub fn rational_curve(c: &BezierCurve<BigRational>, weights: Weights<'_>) -> Result<RationalBezier<BigRational>> {
+    match weights {
+        Weights::Polynomial => {
+            RationalBezier::new(c.points().to_vec(), vec![casteljau::num::scalar::rat(1); c.points().len()])
+        }
+        Weights::Given(w) => RationalBezier::new(c.points().to_vec(), w.to_vec()),
+        Weights::Homogeneous => RationalBezier::from_homogeneous(c.points().to_vec()),
+    }
+}
+
+/// One command's answer for one curve.
+pub struct Answer {
+    /// Text output.
+    pub text: String,
+    /// JSON output.
+    pub json: Value,
+    /// A check failed (exit code 1).
+    pub failed: bool,
+}
+
+impl From<(String, Value)> for Answer {
+    fn from((text, json): (String, Value)) -> Self {
+        Answer { text, json, failed: false }
+    }
+}
+
+/// Largest accepted `--dim`.
+pub const MAX_DIM: usize = 64;
+/// Largest degree whose conversion matrix `power --json` includes.
+pub const MAX_MATRIX_DEGREE: usize = 30;
+/// Largest degree `triangle` prints (its output has (n+1)(n+2)/2 points).
+pub const MAX_TRIANGLE_DEGREE: usize = 500;
+/// Largest number of control points `subdivide --depth` prints.
+pub const MAX_SUBDIVISION_POINTS: usize = 1 << 20;
+
+/// An error when `value` exceeds `limit`.
+pub fn output_limit(what: &'static str, value: usize, limit: usize) -> Result<()> {
+    if value > limit { Err(Error::TooLarge { what, value, limit }) } else { Ok(()) }
+}
+
+/// Largest batch input, in bytes.
+pub const MAX_INPUT_BYTES: u64 = 256 * 1024 * 1024;
+
+/// [`batch`] for commands that accept rational curves: parses `--weights` once and reads points
+/// with one more coordinate under `--homogeneous`.
+pub fn rational_batch(
+    rational: &RationalArgs,
+    mut curve: CurveArgs,
+    out: &mut dyn Write,
+    f: impl Fn(&BezierCurve<BigRational>, Weights<'_>) -> Result<Answer>,
+) -> i32 {
+    let weights = match parse_weights(rational) {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+    };
+    if rational.homogeneous {
+        curve.dim += 1;
+    }
+    let w = match (&weights, rational.homogeneous) {
+        (Some(w), _) => Weights::Given(w),
+        (None, true) => Weights::Homogeneous,
+        (None, false) => Weights::Polynomial,
+    };
+    batch(&curve, out, |c| f(c, w))
+}
+
+pub fn option_number(option: &str, s: &str) -> Result<BigRational> {
+    parse_number(s.trim(), Position { line: None, column: 1, token: 1 }).map_err(|e| match e {
+        Error::ParseNumber { token, reason, .. } => {
+            Error::InvalidArgument { message: format!("{option}: bad number {token:?}: {reason}") }
+        }
+        other => other,
+    })
+}
+
+/// Reads the curves (argument, file, or stdin) and answers each; exit 2 if any line was bad.
+pub fn batch(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer>) -> i32 {
+    if args.dim == 0 || args.dim > MAX_DIM {
+        eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
+        return 2;
+    }
+    let inputs: Vec<(Option<usize>, String)> = match (&args.curve, &args.input) {
+        (Some(_), Some(_)) => {
+            eprintln!("casteljau: give a curve or --input, not both");
+            return 2;
+        }
+        (Some(c), None) => vec![(None, c.clone())],
+        (None, source) => match read_lines(source.as_deref()) {
+            Ok(lines) => lines,
+            Err(e) => {
+                eprintln!("casteljau: {e}");
+                return 2;
+            }
+        },
+    };
+    let mut code = 0;
+    let mut failed = false;
+    for (line, text) in inputs {
+        let answer = parse_points(&text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c));
+        let written = match answer {
+            Ok(Answer { text, json: mut value, failed: f }) => {
+                failed |= f;
+                if args.json {
+                    if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
+                        obj.insert("line".into(), json!(l));
+                    }
+                    writeln!(out, "{value}")
+                } else {
+                    writeln!(out, "{text}")
+                }
+            }
+            Err(e) => {
+                code = 2;
+                let e = match (e, line) {
+                    (Error::EmptyCurve { .. }, l) => Error::EmptyCurve { line: l },
+                    (e, _) => e,
+                };
+                if args.json {
+                    writeln!(out, "{}", json!({"line": line, "error": e.to_string()}))
+                } else {
+                    eprintln!("casteljau: {e}");
+                    Ok(())
+                }
+            }
+        };
+        if written.is_err() {
+            return code.max(2); // stdout closed (e.g. a pipe): stop quietly
+        }
+    }
+    if code == 0 && failed { 1 } else { code }
+}
+
+fn read_lines(source: Option<&str>) -> std::result::Result<Vec<(Option<usize>, String)>, String> {
+    let mut text = String::new();
+    let read = match source {
+        None | Some("-") => std::io::stdin().lock().take(MAX_INPUT_BYTES + 1).read_to_string(&mut text),
+        Some(path) => std::fs::File::open(path)
+            .map_err(|e| format!("cannot open {path}: {e}"))?
+            .take(MAX_INPUT_BYTES + 1)
+            .read_to_string(&mut text),
+    };
+    read.map_err(|e| format!("cannot read input: {e}"))?;
+    if text.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!("input larger than {MAX_INPUT_BYTES} bytes"));
+    }
+    Ok(text
+        .as_bytes()
+        .lines()
+        .enumerate()
+        .filter_map(|(i, l)| {
+            let l = l.ok()?;
+            let trimmed = l.trim();
+            (!trimmed.is_empty() && !trimmed.starts_with('#')).then(|| (Some(i + 1), l))
+        })
+        .collect())
+}
