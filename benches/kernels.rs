@@ -2,7 +2,7 @@
 //!
 //! `cargo bench --bench kernels`; README's table is read from this run's output.
 
-use casteljau::{BezierCurve, Point, Scalar, curve::fraction_free, poly::bernstein, ratio};
+use casteljau::{BezierCurve, Point, Scalar, curve::fraction_free, ratio};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
 use std::hint::black_box;
@@ -63,7 +63,7 @@ fn subdivide(c: &mut Criterion) {
 fn identity_8(c: &mut Criterion) {
     let mut g = c.benchmark_group("identity_8");
     g.sample_size(10);
-    g.bench_function("n=20,all j", |b| b.iter(|| bernstein::identity_8(black_box(20), 20).unwrap()));
+    g.bench_function("n=20,all j", |b| b.iter(|| casteljau::proof::identity_8(black_box(20), 20).unwrap()));
     g.finish();
 }
 

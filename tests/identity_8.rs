@@ -3,7 +3,7 @@
 
 use casteljau::num::scalar::{Rational, Scalar};
 use casteljau::poly::bernstein::bernstein;
-use casteljau::poly::bernstein::identity_8;
+use casteljau::proof::identity_8;
 use casteljau::proof::{self, GridProver};
 
 #[test]

@@ -35,11 +35,36 @@ use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// `Q(√3)`.
+///
+/// # Example
+/// ```
+/// use casteljau::{Scalar, rat, classify::canonical::Sqrt3Field};
+/// let s3 = Sqrt3Field::sqrt(rat(3));
+/// assert_eq!(s3.clone() * s3, Sqrt3Field::from_i64(3));
+/// ```
 pub type Sqrt3Field = QuadraticExt<BigRational>;
 /// `Q(√3)(√r)`: where the canonical maps live.
+///
+/// # Example
+/// ```
+/// use casteljau::{Scalar, rat, classify::canonical::{Tower, tower_sqrt}};
+/// let x = tower_sqrt(&rat(5)) * tower_sqrt(&rat(3));
+/// assert_eq!(x.clone() * x, Tower::from_i64(15));
+/// ```
 pub type Tower = QuadraticExt<Sqrt3Field>;
 
 /// An affine map `M` (2×3, last column the translation) from a canonical cubic to a curve.
+///
+/// # Example
+/// ```
+/// # use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
+/// # use casteljau::classify::{classify, canonical::*, moving_line::MovingLines};
+/// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+/// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
+/// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
+/// assert_eq!(canonical_equation(map.node), "x^3 - 3*y^2 = 0");
+/// assert!(map.prove(&c).is_ok());
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CanonicalMap {
     /// The node type, naming the canonical curve.
@@ -55,6 +80,12 @@ pub struct CanonicalMap {
 }
 
 /// The canonical implicit equation of a node type.
+///
+/// # Example
+/// ```
+/// use casteljau::classify::{NodeType, canonical::canonical_equation};
+/// assert_eq!(canonical_equation(NodeType::Crunode), "x^3 + x^2 - 3*y^2 = 0");
+/// ```
 pub fn canonical_equation(node: NodeType) -> &'static str {
     match node {
         NodeType::Crunode => "x^3 + x^2 - 3*y^2 = 0",
@@ -77,6 +108,13 @@ fn sqrt3() -> Tower {
 
 /// `√r` for rational `r ≥ 0` in the tower: rational, a rational multiple of `√3`, or a new
 /// generator over `Q(√3)`.
+///
+/// # Example
+/// ```
+/// use casteljau::{Scalar, rat, classify::canonical::{Tower, tower_sqrt}};
+/// assert_eq!(tower_sqrt(&rat(4)), Tower::from_i64(2));
+/// assert_eq!(tower_sqrt(&rat(12)) * tower_sqrt(&rat(12)), Tower::from_i64(12));
+/// ```
 pub fn tower_sqrt(r: &BigRational) -> Tower {
     // √r = q√m with m an integer (Sqrt3Field::sqrt normalises); √m = √3·√(m/3) when 3 | m.
     let s = Sqrt3Field::sqrt(r.clone());
@@ -93,6 +131,15 @@ pub fn tower_sqrt(r: &BigRational) -> Tower {
 }
 
 /// The canonical curve `C(s)` of a node type, over the tower.
+///
+/// # Example
+/// ```
+/// use casteljau::{Scalar, classify::{NodeType, canonical::{Tower, canonical_point}}};
+/// // the canonical cusp x³ − 3y² = 0 at s = 1
+/// let p = canonical_point(NodeType::Cusp, &Tower::from_i64(1));
+/// let (x, y) = (p.coords[0].clone(), p.coords[1].clone());
+/// assert!((x.clone() * x.clone() * x - Tower::from_i64(3) * y.clone() * y).is_zero());
+/// ```
 pub fn canonical_point(node: NodeType, s: &Tower) -> Point<Tower> {
     let s2 = s.clone() * s;
     let s3 = s2.clone() * s;
@@ -241,6 +288,19 @@ fn larger_root(ml: &MovingLines, g: &Point<Tower>) -> Option<Tower> {
 
 impl CanonicalMap {
     /// `M · (x, y, 1)`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
+    /// # use casteljau::classify::{classify, canonical::*, moving_line::MovingLines};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
+    /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
+    /// use casteljau::Scalar;
+    /// // M maps the canonical cusp point (0, 0) to D
+    /// let d = map.apply(&casteljau::Point::new(vec![Tower::from_i64(0), Tower::from_i64(0)]));
+    /// assert_eq!(d.to_string(), "(1/2, 3/4)");
+    /// ```
     pub fn apply(&self, p: &Point<Tower>) -> Point<Tower> {
         Point::new(
             self.matrix
@@ -255,6 +315,16 @@ impl CanonicalMap {
     ///
     /// # Errors
     /// A counterexample `t` (with the coordinate index as `identity`) when the map is wrong.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
+    /// # use casteljau::classify::{classify, canonical::*, moving_line::MovingLines};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
+    /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
+    /// assert!(map.prove(&c).is_ok());
+    /// ```
     pub fn prove(&self, curve: &BezierCurve<BigRational>) -> std::result::Result<Certificate, Counterexample<Tower>> {
         let lifted = lift_curve(curve);
         let te = lift(&self.t_e);

@@ -30,6 +30,7 @@ use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, Scalar, rat};
+use crate::poly::polynomial::{center_plus_minus_sqrt, quadratic_roots};
 use num_rational::BigRational;
 use std::cmp::Ordering;
 use std::fmt;
@@ -261,11 +262,6 @@ pub(crate) fn in_unit_interval(t: &Parameter) -> bool {
     t.sign() != Ordering::Less && (Parameter::one() - t).sign() != Ordering::Less
 }
 
-/// `c + s·√r` for `s = ±1` (`r ≥ 0`).
-pub(crate) fn shifted(c: &BigRational, r: &BigRational, s: i64) -> Parameter {
-    Parameter::from_ratio(c) + Parameter::sqrt(r.clone()) * Parameter::from_i64(s)
-}
-
 /// Classifies a planar curve of degree ≤ 3, exactly.
 ///
 /// # Errors
@@ -398,7 +394,7 @@ fn genuine_cubic(
     match node {
         NodeType::Crunode => {
             out.reason = format!("d = {d} > 0: self-intersection at t_E ± √d, t_E = {te}");
-            out.double_point_parameters = vec![shifted(&te, &d, -1), shifted(&te, &d, 1)];
+            out.double_point_parameters = center_plus_minus_sqrt(&te, &d).to_vec();
         }
         NodeType::Cusp => {
             out.reason = format!("d = 0: cusp at t_E = {te}");
@@ -408,7 +404,7 @@ fn genuine_cubic(
         _ => {
             out.reason = format!("d = {d} < 0: isolated double point; inflections at t_E ± √(−d/3), t_E = {te}");
             let r = -d.clone() / rat(3);
-            out.inflection_parameters = vec![shifted(&te, &r, -1), shifted(&te, &r, 1)];
+            out.inflection_parameters = center_plus_minus_sqrt(&te, &r).to_vec();
         }
     }
     out.t_e_and_d = Some((te, d));
@@ -423,20 +419,9 @@ fn turning_points(a: &[Point<BigRational>]) -> Vec<Parameter> {
     let c = if Scalar::is_zero(&v.coords[0]) { 1 } else { 0 };
     let alpha: Vec<BigRational> = a.iter().map(|p| p.coords[c].clone() / &v.coords[c]).collect();
     // p'(t) = α1 + 2α2 t + 3α3 t²
+    // a double root of p' is no turning point: the speed vanishes but the curve goes on
     let (c0, c1, c2) = (alpha[1].clone(), rat(2) * &alpha[2], rat(3) * &alpha[3]);
-    if Scalar::is_zero(&c2) {
-        if Scalar::is_zero(&c1) {
-            return vec![];
-        }
-        return vec![Parameter::from_ratio(&(-c0 / c1))];
-    }
-    let disc = c1.clone() * &c1 - rat(4) * &c2 * &c0;
-    if disc.sign() != Ordering::Greater {
-        return vec![]; // a double root: the speed vanishes but the curve does not turn back
-    }
-    let center = -c1 / (rat(2) * &c2);
-    let r = disc / (rat(4) * &c2 * &c2);
-    vec![shifted(&center, &r, -1), shifted(&center, &r, 1)]
+    quadratic_roots(&c0, &c1, &c2).into_iter().filter(|(_, m)| *m == 1).map(|(t, _)| t).collect()
 }
 
 /// The Loop–Blinn classification (GPU Gems 3, ch. 25), computed exactly from the Bézier control

@@ -27,6 +27,16 @@ use num_rational::BigRational;
 type P3 = Point<BigRational>;
 
 /// The moving lines of a planar cubic and the points they define.
+///
+/// # Example
+/// ```
+/// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+/// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+/// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+/// let ml = MovingLines::new(&c).unwrap();
+/// assert_eq!(ml.double_point.from_homogeneous().unwrap().to_string(), "(1/2, 3/4)");
+/// assert!(ml.verify().is_ok());
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct MovingLines {
     /// `Q0, Q1, Q2, Q3` (homogeneous, binomials absorbed).
@@ -51,6 +61,15 @@ impl MovingLines {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless the curve is a planar cubic.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// assert!(MovingLines::new(&BezierCurve::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap()).unwrap()).is_err());
+    /// ```
     pub fn new(curve: &BezierCurve<BigRational>) -> Result<Self> {
         if curve.degree() != 3 || curve.dim() != 2 {
             return Err(Error::InvalidArgument { message: "moving lines need a planar cubic".into() });
@@ -61,6 +80,15 @@ impl MovingLines {
 
     /// The moving lines from homogeneous `Q0..Q3` directly (`Q_i = C(3,i)·w_i·(x_i, y_i, 1)` for
     /// a rational cubic; the construction (3)–(5) is projective).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// assert_eq!(MovingLines::from_homogeneous(ml.q.clone()), ml);
+    /// ```
     pub fn from_homogeneous(q: [P3; 4]) -> Self {
         let v = |i: usize, j: usize, k: usize| q[i].dot(&x(&q[j], &q[k]));
         let (v023, v013, v012) = (v(0, 2, 3), v(0, 1, 3), v(0, 1, 2));
@@ -81,16 +109,45 @@ impl MovingLines {
     }
 
     /// `P[t]` in homogeneous coordinates.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// assert_eq!(ml.point(&ratio(1, 2)).from_homogeneous().unwrap(), c.eval(&ratio(1, 2)));
+    /// ```
     pub fn point(&self, t: &BigRational) -> P3 {
         let u = rat(1) - t;
         let b = [u.clone() * &u * &u, u.clone() * &u * t, u.clone() * t * t, t.clone() * t * t];
         self.q.iter().zip(&b).fold(Point::origin(3), |acc, (q, w)| acc.add(&q.scale(w)))
     }
     /// `L0[t] = (1−t)L00 + tL01`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// let t = ratio(1, 3);
+    /// assert_eq!(ml.l0_at(&t).dot(&ml.point(&t)), ratio(0, 1)); // P[t]·L0[t] = 0
+    /// ```
     pub fn l0_at(&self, t: &BigRational) -> P3 {
         self.l0[0].lerp(&self.l0[1], t)
     }
     /// `L1[t] = (1−t)²L10 + 2(1−t)t L11 + t²L12`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// let t = ratio(2, 7);
+    /// assert_eq!(ml.l1_at(&t).dot(&ml.point(&t)), ratio(0, 1)); // P[t]·L1[t] = 0
+    /// ```
     pub fn l1_at(&self, t: &BigRational) -> P3 {
         let u = rat(1) - t;
         self.l1[0]
@@ -99,17 +156,45 @@ impl MovingLines {
             .add(&self.l1[2].scale(&(t.clone() * t)))
     }
     /// `t_E` of (7), `None` when its denominator vanishes.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// assert_eq!(ml.t_e(), Some(ratio(1, 2)));
+    /// ```
     pub fn t_e(&self) -> Option<BigRational> {
         let c = |l: &P3| l.coords[2].clone();
         let den = c(&self.l1[0]) - rat(2) * c(&self.l1[1]) + c(&self.l1[2]);
         (!Scalar::is_zero(&den)).then(|| (c(&self.l1[0]) - c(&self.l1[1])) / den)
     }
     /// `E = L0[t_E] × L1[t_E]` of (8), homogeneous.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// assert_eq!(ml.e_point().unwrap().from_homogeneous(), Some(c.eval(&ratio(1, 2))));
+    /// ```
     pub fn e_point(&self) -> Option<P3> {
         let t = self.t_e()?;
         Some(x(&self.l0_at(&t), &self.l1_at(&t)))
     }
     /// `f(t) = L1[t]·D` as power coefficients `[f0, f1, f2]`, and its discriminant `f1² − 4f0f2`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// let (_, disc) = ml.f_and_discriminant();
+    /// assert_eq!(disc, ratio(0, 1)); // a cusp: the discriminant vanishes
+    /// ```
     pub fn f_and_discriminant(&self) -> ([BigRational; 3], BigRational) {
         let d = &self.double_point;
         let (c0, c1, c2) = (self.l1[0].dot(d), self.l1[1].dot(d), self.l1[2].dot(d));
@@ -123,6 +208,16 @@ impl MovingLines {
     ///
     /// # Errors
     /// The exact parameter where one of them fails.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+    /// let ml = MovingLines::new(&c).unwrap();
+    /// let cert = ml.verify().unwrap();
+    /// assert!(cert.points_checked > 0);
+    /// ```
     pub fn verify(&self) -> std::result::Result<Certificate, Counterexample<BigRational>> {
         proof::identities::<BigRational>(&[5], |v| {
             let t = &v[0];

@@ -17,7 +17,7 @@
 //! whose double point is at infinity.
 
 use crate::classify::moving_line::MovingLines;
-use crate::classify::{NodeType, Parameter, in_unit_interval, shifted};
+use crate::classify::{NodeType, Parameter, in_unit_interval};
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar, rat};
@@ -25,17 +25,7 @@ use crate::poly::bernstein::to_power;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
-/// A polynomial with exact coefficients, lowest degree first, no trailing zeros.
-type Poly = Vec<BigRational>;
-
-fn trim(mut p: Poly) -> Poly {
-    while p.last().is_some_and(|c| c.is_zero()) {
-        p.pop();
-    }
-    p
-}
-
-use crate::poly::roots::poly_gcd as gcd;
+use crate::poly::polynomial::{Poly, center_plus_minus_sqrt, gcd, trim};
 
 /// What [`classify_rational`] finds.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -206,7 +196,7 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
             match node {
                 NodeType::Crunode => {
                     let r = disc / rat(4);
-                    out.double_point_parameters = vec![shifted(&center, &r, -1), shifted(&center, &r, 1)];
+                    out.double_point_parameters = center_plus_minus_sqrt(&center, &r).to_vec();
                     out.has_loop = out.double_point_parameters.iter().all(in_unit_interval);
                 }
                 NodeType::Cusp => {

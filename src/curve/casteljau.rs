@@ -79,22 +79,20 @@ pub fn subdivide<S: Scalar>(curve: &BezierCurve<S>, t0: &S) -> (BezierCurve<S>, 
 /// # Errors
 /// [`Error::TooLarge`] for `depth > MAX_SUBDIVISION_DEPTH`.
 pub fn subdivide_repeatedly<S: Scalar>(curve: &BezierCurve<S>, t0: &S, depth: u32) -> Result<Vec<BezierCurve<S>>> {
-    check_depth(depth)?;
-    let mut pieces = vec![curve.clone()];
-    for _ in 0..depth {
-        pieces = pieces
-            .iter()
-            .flat_map(|c| {
-                let (l, r) = subdivide(c, t0);
-                [l, r]
-            })
-            .collect();
-    }
-    Ok(pieces)
+    split_repeatedly(curve, depth, |c| subdivide(c, t0))
 }
 
+/// The repetition behind [`subdivide_repeatedly`] and its fraction-free twin
+/// ([`fraction_free::subdivide_repeatedly`](crate::curve::fraction_free::subdivide_repeatedly)):
+/// every piece is split by `split`, `depth` times.
+///
+/// # Errors
 /// [`Error::TooLarge`] for `depth > MAX_SUBDIVISION_DEPTH`.
-pub(crate) fn check_depth(depth: u32) -> Result<()> {
+pub(crate) fn split_repeatedly<S: Scalar>(
+    curve: &BezierCurve<S>,
+    depth: u32,
+    split: impl Fn(&BezierCurve<S>) -> (BezierCurve<S>, BezierCurve<S>),
+) -> Result<Vec<BezierCurve<S>>> {
     if depth > MAX_SUBDIVISION_DEPTH {
         return Err(Error::TooLarge {
             what: "subdivision depth",
@@ -102,7 +100,11 @@ pub(crate) fn check_depth(depth: u32) -> Result<()> {
             limit: MAX_SUBDIVISION_DEPTH as usize,
         });
     }
-    Ok(())
+    let mut pieces = vec![curve.clone()];
+    for _ in 0..depth {
+        pieces = pieces.iter().flat_map(|c| <[_; 2]>::from(split(c))).collect();
+    }
+    Ok(pieces)
 }
 
 /// The parameter intervals of the pieces of [`subdivide_repeatedly`]: piece `k` covers

@@ -166,12 +166,7 @@ pub fn subdivide_repeatedly(
     t0: &BigRational,
     depth: u32,
 ) -> Result<Vec<BezierCurve<BigRational>>> {
-    crate::curve::casteljau::check_depth(depth)?;
-    let mut pieces = vec![curve.clone()];
-    for _ in 0..depth {
-        pieces = pieces.iter().flat_map(|c| <[_; 2]>::from(subdivide(c, t0))).collect();
-    }
-    Ok(pieces)
+    crate::curve::casteljau::split_repeatedly(curve, depth, |c| subdivide(c, t0))
 }
 
 /// Integer triangle rows (flat), or `None` on overflow of `I`.

@@ -100,23 +100,16 @@ impl Figure {
 
     /// The view box: the bounding box of every item, with a 6% margin (and a minimum size).
     pub fn view(&self) -> View {
-        let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-        let mut add = |p: (f64, f64)| {
-            x0 = x0.min(p.0);
-            y0 = y0.min(p.1);
-            x1 = x1.max(p.0);
-            y1 = y1.max(p.1);
-        };
-        for it in &self.items {
-            match it {
-                Item::Polyline { pts, .. } => pts.iter().for_each(|&p| add(p)),
-                Item::Dot { at, .. } | Item::Label { at, .. } => add(*at),
-                Item::Arrow { from, to, .. } => {
-                    add(*from);
-                    add(*to);
-                }
-            }
-        }
+        let points: Vec<(f64, f64)> = self
+            .items
+            .iter()
+            .flat_map(|it| match it {
+                Item::Polyline { pts, .. } => pts.clone(),
+                Item::Dot { at, .. } | Item::Label { at, .. } => vec![*at],
+                Item::Arrow { from, to, .. } => vec![*from, *to],
+            })
+            .collect();
+        let ((mut x0, mut y0), (mut x1, mut y1)) = bounds(&points);
         if !x0.is_finite() {
             (x0, y0, x1, y1) = (0.0, 0.0, 1.0, 1.0);
         }
@@ -362,6 +355,7 @@ fn approx(p: &crate::classify::Parameter) -> BigRational {
     BigRational::from_float(p.to_f64()).unwrap_or_else(|| crate::num::scalar::rat(0))
 }
 
+/// The bounding box `(min, max)` of points (infinite for none): the one box of the plots.
 fn bounds(points: &[(f64, f64)]) -> ((f64, f64), (f64, f64)) {
     points.iter().fold(((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY)), |(lo, hi), p| {
         ((lo.0.min(p.0), lo.1.min(p.1)), (hi.0.max(p.0), hi.1.max(p.1)))
@@ -369,13 +363,7 @@ fn bounds(points: &[(f64, f64)]) -> ((f64, f64), (f64, f64)) {
 }
 
 fn size_of(points: &[(f64, f64)]) -> f64 {
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for p in points {
-        x0 = x0.min(p.0);
-        y0 = y0.min(p.1);
-        x1 = x1.max(p.0);
-        y1 = y1.max(p.1);
-    }
+    let ((x0, y0), (x1, y1)) = bounds(points);
     (x1 - x0).max(y1 - y0).max(1e-9)
 }
 

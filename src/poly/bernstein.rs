@@ -6,7 +6,7 @@
 //! `b_i = Σ_{k≤i} C(i,k)/C(n,k) · c_k`.
 
 use crate::num::point::Point;
-use crate::num::scalar::{Rational, Scalar};
+use crate::num::scalar::Scalar;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive};
@@ -229,30 +229,55 @@ pub fn eval_power<S: Scalar>(coeffs: &[Point<S>], t: &S) -> Point<S> {
     acc
 }
 
-/// Identity (8) of seed 001 for one `n`, all `j` at once:
-/// `B_j^n(st) − Σ_{r=j}^{n} B_j^r(s) B_r^n(t) = 0`, degree ≤ n in `s` and in `t`.
+/// De Casteljau's split of Bernstein coefficients on the integers: for `c` the coefficients of
+/// `p` on `[a, b]` and `t = p_t/q_t` (`q_t > 0`), returns the coefficients of `p` on
+/// `[a, a + t(b − a)]` and `[a + t(b − a), b]`, **both scaled by `q_tⁿ`** (a positive constant,
+/// so signs and roots are unchanged): `β_i^r = (q_t − p_t)β_i^{r−1} + p_t β_{i+1}^{r−1}`, left
+/// `β_0^r q_t^{n−r}`, right `β_r^{n−r} q_t^r`. No fraction is formed.
 ///
-/// `upper` replaces the sum's upper limit `n` (pass `n`; a smaller value is a wrong variant
-/// used to show the prover refutes it).
+/// # Example
+/// ```
+/// use casteljau::poly::bernstein::split_integer;
+/// use num_bigint::BigInt;
+/// // (1 − 2t)² has coefficients 1, −1, 1; at t = 1/2 each half is scaled by 2² = 4
+/// let c: Vec<BigInt> = [1, -1, 1].map(BigInt::from).to_vec();
+/// let (l, r) = split_integer(&c, &BigInt::from(1), &BigInt::from(2));
+/// assert_eq!(l, [4, 0, 0].map(BigInt::from).to_vec());
+/// assert_eq!(r, [0, 0, 4].map(BigInt::from).to_vec());
+/// ```
+pub fn split_integer(c: &[BigInt], p: &BigInt, q: &BigInt) -> (Vec<BigInt>, Vec<BigInt>) {
+    let n = c.len() - 1;
+    let u = q - p;
+    let mut q_pow = vec![BigInt::one()];
+    for k in 1..=n {
+        q_pow.push(&q_pow[k - 1] * q);
+    }
+    let mut row = c.to_vec();
+    let mut left = vec![&row[0] * &q_pow[n]];
+    let mut right = vec![BigInt::from(0); n + 1];
+    right[n] = &row[n] * &q_pow[n];
+    for r in 1..=n {
+        row = (0..row.len() - 1).map(|i| &u * &row[i] + p * &row[i + 1]).collect();
+        left.push(&row[0] * &q_pow[n - r]);
+        right[n - r] = &row[n - r] * &q_pow[n - r];
+    }
+    (left, right)
+}
+
+/// The same split with exact rational coefficients and no scaling: the Bernstein coefficients
+/// of `p` on `[0, t]` and `[t, 1]` (one common denominator, one reduction per coefficient).
 ///
-/// # Errors
-/// A counterexample `(s, t)` with the failing `j` as its `identity`.
-pub fn identity_8(n: usize, upper: usize) -> Result<crate::proof::Certificate, crate::proof::Counterexample<Rational>> {
-    // The grid varies t fastest: the B_j^r(s) table is rebuilt only when s changes.
-    let mut cache: Option<(Rational, Vec<Vec<Rational>>)> = None;
-    crate::proof::identities::<Rational>(&[n, n], |v| {
-        let (s, t) = (&v[0], &v[1]);
-        if cache.as_ref().is_none_or(|(cs, _)| cs != s) {
-            cache = Some((s.clone(), (0..=n).map(|r| bernstein_all(r, s)).collect()));
-        }
-        let b_s = &cache.as_ref().expect("just filled").1;
-        let lhs = bernstein_all(n, &(s.clone() * t));
-        let b_t = bernstein_all(n, t);
-        (0..=n)
-            .map(|j| {
-                let rhs = (j..=upper.min(n)).fold(Rational::zero(), |acc, r| acc + b_s[r][j].clone() * &b_t[r]);
-                lhs[j].clone() - rhs
-            })
-            .collect()
-    })
+/// # Example
+/// ```
+/// use casteljau::{rat, ratio, poly::bernstein::split};
+/// // 1 − 2t (coefficients 1, −1) on [0, 1/4] and [1/4, 1]
+/// assert_eq!(split(&[rat(1), rat(-1)], &ratio(1, 4)), (vec![rat(1), ratio(1, 2)], vec![ratio(1, 2), rat(-1)]));
+/// ```
+pub fn split(c: &[BigRational], t: &BigRational) -> (Vec<BigRational>, Vec<BigRational>) {
+    let d = c.iter().fold(BigInt::one(), |acc, x| num_integer::Integer::lcm(&acc, x.denom()));
+    let ints: Vec<BigInt> = c.iter().map(|x| x.numer() * (&d / x.denom())).collect();
+    let (l, r) = split_integer(&ints, t.numer(), t.denom());
+    let scale = d * num_traits::Pow::pow(t.denom(), c.len() - 1);
+    let back = |v: Vec<BigInt>| v.into_iter().map(|x| BigRational::new(x, scale.clone())).collect();
+    (back(l), back(r))
 }

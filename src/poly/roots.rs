@@ -16,11 +16,14 @@
 //! bits for degree `n` and `τ`-bit coefficients. The work list is explicit (no recursion), so
 //! deep subdivisions cannot overflow the stack.
 
-use crate::curve::bezier::BezierCurve;
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar, rat};
-use crate::poly::bernstein::{from_power, to_power};
+use crate::poly::bernstein::{from_power, split as split_at, split_integer, to_power};
+use crate::poly::polynomial::square_free;
+use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
 use num_rational::BigRational;
+use num_traits::Zero;
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -43,66 +46,8 @@ impl fmt::Display for Root {
     }
 }
 
-/// Remainder of `a` divided by `b` (power form, lowest degree first; `b` without trailing zeros).
-pub(crate) fn poly_rem(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
-    let lb = b.last().expect("non-zero divisor").clone();
-    while a.len() >= b.len() && !a.is_empty() {
-        let f = a.last().expect("non-empty").clone() / &lb;
-        let shift = a.len() - b.len();
-        for (i, c) in b.iter().enumerate() {
-            a[shift + i] = a[shift + i].clone() - f.clone() * c;
-        }
-        while a.last().is_some_and(Scalar::is_zero) {
-            a.pop();
-        }
-    }
-    a
-}
-
-fn poly_div(mut a: Vec<BigRational>, b: &[BigRational]) -> Vec<BigRational> {
-    let lb = b.last().expect("non-zero divisor").clone();
-    let mut q = vec![rat(0); a.len().saturating_sub(b.len()) + 1];
-    while a.len() >= b.len() && !a.is_empty() {
-        let f = a.last().expect("non-empty").clone() / &lb;
-        let shift = a.len() - b.len();
-        q[shift] = f.clone();
-        for (i, c) in b.iter().enumerate() {
-            a[shift + i] = a[shift + i].clone() - f.clone() * c;
-        }
-        a.pop();
-    }
-    q
-}
-
-/// The monic greatest common divisor of two power-form polynomials (`[]` for gcd(0, 0)).
-pub(crate) fn poly_gcd(a: Vec<BigRational>, b: Vec<BigRational>) -> Vec<BigRational> {
-    let trim = |mut p: Vec<BigRational>| {
-        while p.last().is_some_and(Scalar::is_zero) {
-            p.pop();
-        }
-        p
-    };
-    let (mut a, mut b) = (trim(a), trim(b));
-    while !b.is_empty() {
-        let r = poly_rem(a, &b);
-        a = b;
-        b = r;
-    }
-    match a.last().cloned() {
-        Some(l) => a.into_iter().map(|c| c / &l).collect(),
-        None => a,
-    }
-}
-
-/// The square-free part of a power-form polynomial (lowest degree first, non-zero).
-fn square_free(p: Vec<BigRational>) -> Vec<BigRational> {
-    let dp: Vec<BigRational> = p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * rat(k as i64)).collect();
-    let g = poly_gcd(p.clone(), dp);
-    if g.len() <= 1 { p } else { poly_div(p, &g) }
-}
-
-fn sign_changes(c: &[BigRational]) -> usize {
-    let signs: Vec<Ordering> = c.iter().map(Exact::sign).filter(|s| *s != Ordering::Equal).collect();
+fn sign_changes(c: &[BigInt]) -> usize {
+    let signs: Vec<Sign> = c.iter().map(BigInt::sign).filter(|s| *s != Sign::NoSign).collect();
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
@@ -126,10 +71,7 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
         return None;
     }
     let pts: Vec<Point<BigRational>> = c.iter().map(|v| Point::new(vec![v.clone()])).collect();
-    let mut power: Vec<BigRational> = to_power(&pts).into_iter().map(|p| p.coords[0].clone()).collect();
-    while power.last().is_some_and(Scalar::is_zero) {
-        power.pop();
-    }
+    let power: Vec<BigRational> = to_power(&pts).into_iter().map(|p| p.coords[0].clone()).collect();
     let sf = square_free(power);
     if sf.len() <= 1 {
         return Some(vec![]); // a non-zero constant
@@ -142,28 +84,32 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
     }
     let sf_pts: Vec<Point<BigRational>> = sf.iter().map(|v| Point::new(vec![v.clone()])).collect();
     let bern: Vec<BigRational> = from_power(&sf_pts).into_iter().map(|p| p.coords[0].clone()).collect();
+    // signs and roots do not change under a positive factor: clear the denominators once
+    let d = bern.iter().fold(BigInt::from(1), |acc, x| acc.lcm(x.denom()));
+    let ints: Vec<BigInt> = bern.iter().map(|x| x.numer() * (&d / x.denom())).collect();
     let mut out = Vec::new();
-    if bern[0].is_zero() {
+    if ints[0].is_zero() {
         out.push(Root::Exact(rat(0)));
     }
-    split(bern.clone(), rat(0), rat(1), &mut out);
-    if bern.last().expect("coefficients").is_zero() {
+    split(ints.clone(), rat(0), rat(1), &mut out);
+    if ints.last().expect("coefficients").is_zero() {
         out.push(Root::Exact(rat(1)));
     }
     Some(out)
 }
 
-/// Roots in the open interval `(a, b)` of a square-free polynomial with Bernstein coefficients
-/// `c` on `[a, b]`, ascending. `V` sign changes bound the roots in `(a, b)` with the same
-/// parity (Descartes' rule; zero coefficients are skipped), so `V = 1` certifies exactly one.
-/// Terminates by Vincent's theorem (module docs); the pending pieces are kept on an explicit
-/// stack, right halves below left ones, so roots come out in order.
-fn split(c: Vec<BigRational>, a: BigRational, b: BigRational, out: &mut Vec<Root>) {
+/// Roots in the open interval `(a, b)` of a square-free polynomial whose Bernstein
+/// coefficients on `[a, b]` are a positive multiple of `c`, ascending. `V` sign changes bound
+/// the roots in `(a, b)` with the same parity (Descartes' rule; zero coefficients are skipped),
+/// so `V = 1` certifies exactly one. Terminates by Vincent's theorem (module docs); the pending
+/// pieces are kept on an explicit stack, right halves below left ones, so roots come out in
+/// order. The halves come from [`split_integer`] at `1/2`: integers only.
+fn split(c: Vec<BigInt>, a: BigRational, b: BigRational, out: &mut Vec<Root>) {
     enum Task {
-        Piece(Vec<BigRational>, BigRational, BigRational),
+        Piece(Vec<BigInt>, BigRational, BigRational),
         Exact(BigRational),
     }
-    let half = BigRational::new(1.into(), 2.into());
+    let (one, two) = (BigInt::from(1), BigInt::from(2));
     let mut stack = vec![Task::Piece(c, a, b)];
     while let Some(task) = stack.pop() {
         let (c, a, b) = match task {
@@ -177,14 +123,11 @@ fn split(c: Vec<BigRational>, a: BigRational, b: BigRational, out: &mut Vec<Root
             0 => {}
             1 => out.push(Root::Isolated(a, b)),
             _ => {
-                let curve =
-                    BezierCurve::new(c.iter().map(|v| Point::new(vec![v.clone()])).collect()).expect("coefficients");
-                let (l, r) = crate::curve::fraction_free::subdivide(&curve, &half);
+                let (lc, rc) = split_integer(&c, &one, &two);
                 let m = (a.clone() + &b) / rat(2);
-                let lc: Vec<BigRational> = l.points().iter().map(|p| p.coords[0].clone()).collect();
-                let rc: Vec<BigRational> = r.points().iter().map(|p| p.coords[0].clone()).collect();
-                stack.push(Task::Piece(rc.clone(), m.clone(), b));
-                if rc[0].is_zero() {
+                let exact_mid = rc[0].is_zero();
+                stack.push(Task::Piece(rc, m.clone(), b));
+                if exact_mid {
                     stack.push(Task::Exact(m.clone()));
                 }
                 stack.push(Task::Piece(lc, a, m));
@@ -196,11 +139,9 @@ fn split(c: Vec<BigRational>, a: BigRational, b: BigRational, out: &mut Vec<Root
 /// Bernstein coefficients of the same polynomial on `[a, b]` (`0 ≤ a < b ≤ 1`), by two
 /// subdivisions.
 pub fn restrict(c: &[BigRational], a: &BigRational, b: &BigRational) -> Vec<BigRational> {
-    let curve = BezierCurve::new(c.iter().map(|v| Point::new(vec![v.clone()])).collect()).expect("coefficients");
-    let right = if a.is_zero() { curve } else { crate::curve::fraction_free::subdivide(&curve, a).1 };
+    let right = if Scalar::is_zero(a) { c.to_vec() } else { split_at(c, a).1 };
     let s = (b.clone() - a) / (rat(1) - a);
-    let piece = if s == rat(1) { right } else { crate::curve::fraction_free::subdivide(&right, &s).0 };
-    piece.points().iter().map(|p| p.coords[0].clone()).collect()
+    if s == rat(1) { right } else { split_at(&right, &s).0 }
 }
 
 /// The roots of `p(t) = Σ c_i B_i^n(t)` in `[a, b]`, mapped back to `t`.

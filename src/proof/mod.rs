@@ -252,3 +252,35 @@ pub fn identities<S: Exact>(
 ) -> std::result::Result<Certificate, Counterexample<S>> {
     GridProver::new(degrees).expect("grid within limits").check_all(f)
 }
+
+/// Identity (8) of seed 001 for one `n`, all `j` at once:
+/// `B_j^n(st) − Σ_{r=j}^{n} B_j^r(s) B_r^n(t) = 0`, degree ≤ n in `s` and in `t`.
+///
+/// `upper` replaces the sum's upper limit `n` (pass `n`; a smaller value is a wrong variant
+/// used to show the prover refutes it).
+///
+/// # Errors
+/// A counterexample `(s, t)` with the failing `j` as its `identity`.
+pub fn identity_8(
+    n: usize,
+    upper: usize,
+) -> std::result::Result<Certificate, Counterexample<crate::num::scalar::Rational>> {
+    use crate::num::scalar::{Rational, Scalar};
+    // The grid varies t fastest: the B_j^r(s) table is rebuilt only when s changes.
+    let mut cache: Option<(Rational, Vec<Vec<Rational>>)> = None;
+    identities::<Rational>(&[n, n], |v| {
+        let (s, t) = (&v[0], &v[1]);
+        if cache.as_ref().is_none_or(|(cs, _)| cs != s) {
+            cache = Some((s.clone(), (0..=n).map(|r| crate::poly::bernstein::bernstein_all(r, s)).collect()));
+        }
+        let b_s = &cache.as_ref().expect("just filled").1;
+        let lhs = crate::poly::bernstein::bernstein_all(n, &(s.clone() * t));
+        let b_t = crate::poly::bernstein::bernstein_all(n, t);
+        (0..=n)
+            .map(|j| {
+                let rhs = (j..=upper.min(n)).fold(Rational::zero(), |acc, r| acc + b_s[r][j].clone() * &b_t[r]);
+                lhs[j].clone() - rhs
+            })
+            .collect()
+    })
+}

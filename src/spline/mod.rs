@@ -24,6 +24,14 @@ use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// Largest spline degree accepted.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, rat, spline::{RationalSpline, MAX_SPLINE_DEGREE}};
+/// let n = MAX_SPLINE_DEGREE + 1;
+/// let q = vec![Point::new(vec![rat(0), rat(0)]); n + 1];
+/// assert!(RationalSpline::new(n, &q, &vec![rat(1); n + 1], &vec![rat(1); 2 * n]).is_err());
+/// ```
 pub const MAX_SPLINE_DEGREE: usize = 12;
 
 /// A rational spline curve.
@@ -31,6 +39,16 @@ pub const MAX_SPLINE_DEGREE: usize = 12;
 /// # Invariants
 /// `homogeneous.len() ≥ degree + 1`; `knots.len() = homogeneous.len() + degree`; knots strictly
 /// increase (all scale ratios positive).
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::RationalSpline};
+/// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+/// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+/// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+/// assert_eq!((sp.degree, sp.segments()), (2, 2));
+/// assert_eq!(sp.knots, [0, 1, 3, 4, 5, 6].map(rat).to_vec());
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RationalSpline {
     /// The degree `n`.
@@ -47,6 +65,16 @@ impl RationalSpline {
     /// # Errors
     /// [`Error::InvalidArgument`] for wrong counts, a non-positive ratio or weight of 0, or a
     /// degree above [`MAX_SPLINE_DEGREE`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// // m + n = 5 ratios for m + 1 = 4 points of degree 2; a ratio 0 is refused
+    /// assert!(RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(0), rat(1), rat(1), rat(1)]).is_err());
+    /// ```
     pub fn new(
         degree: usize,
         points: &[Point<BigRational>],
@@ -94,6 +122,16 @@ impl RationalSpline {
     ///
     /// # Errors
     /// As [`Self::new`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// let same = RationalSpline::from_homogeneous(2, sp.homogeneous.clone(), &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// assert_eq!(same, sp);
+    /// ```
     pub fn from_homogeneous(
         degree: usize,
         homogeneous: Vec<Point<BigRational>>,
@@ -112,16 +150,44 @@ impl RationalSpline {
     }
 
     /// Number of segments, `m − n + 1`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// assert_eq!(sp.segments(), 2);
+    /// ```
     pub fn segments(&self) -> usize {
         self.homogeneous.len() - self.degree
     }
 
     /// The parameter interval `[u_{n+s}, u_{n+s+1}]` of segment `s`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// assert_eq!(sp.span(0), (rat(3), rat(4)));
+    /// assert_eq!(sp.span(1), (rat(4), rat(5)));
+    /// ```
     pub fn span(&self, s: usize) -> (BigRational, BigRational) {
         (self.knots[self.degree + s].clone(), self.knots[self.degree + s + 1].clone())
     }
 
     /// The homogeneous NURBS point at `u` in segment `s` (de Boor's recursion).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// assert_eq!(sp.eval_homogeneous(0, &rat(4)).from_homogeneous().unwrap(), sp.eval(0, &rat(4)).unwrap());
+    /// ```
     pub fn eval_homogeneous(&self, s: usize, u: &BigRational) -> Point<BigRational> {
         let n = self.degree;
         let j = n + s;
@@ -141,6 +207,16 @@ impl RationalSpline {
     ///
     /// # Errors
     /// [`Error::WeightsVanish`] where the denominator is 0.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// // segment 0 ends where segment 1 starts
+    /// assert_eq!(sp.eval(0, &rat(4)).unwrap(), sp.eval(1, &rat(4)).unwrap());
+    /// ```
     pub fn eval(&self, s: usize, u: &BigRational) -> Result<Point<BigRational>> {
         self.eval_homogeneous(s, u)
             .from_homogeneous()
@@ -148,6 +224,17 @@ impl RationalSpline {
     }
 
     /// Rational Bézier segments by Boehm knot insertion (each boundary knot to multiplicity `n`).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// let segs = sp.to_bezier_boehm();
+    /// assert_eq!(segs.len(), 2);
+    /// assert_eq!(segs[0].eval(&rat(1)).unwrap(), segs[1].eval(&rat(0)).unwrap());
+    /// ```
     pub fn to_bezier_boehm(&self) -> Vec<RationalBezier<BigRational>> {
         let n = self.degree;
         let (mut u, mut p) = (self.knots.clone(), self.homogeneous.clone());
@@ -179,6 +266,16 @@ impl RationalSpline {
     }
 
     /// The local scale ratio `λ_i` around segment `s` (`i = 0` is the segment's own interval).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::RationalSpline};
+    /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+    /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+    /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+    /// assert_eq!(sp.local_ratio(0, 0), rat(1)); // the span's own interval [3, 4]
+    /// assert_eq!(sp.local_ratio(0, -1), rat(2)); // [1, 3]
+    /// ```
     pub fn local_ratio(&self, s: usize, i: i64) -> BigRational {
         let j = (self.degree + s) as i64 + i;
         self.knots[j as usize + 1].clone() - &self.knots[j as usize]
@@ -195,6 +292,14 @@ fn w_lin(a: &BigRational, b: &BigRational, x: &BigRational, y: &BigRational) -> 
 ///
 /// Written `boehm`, `seed` or `seed-printed` ([`FromStr`](std::str::FromStr), and so in claim
 /// files).
+///
+/// # Example
+/// ```
+/// use casteljau::{proof::Reading, spline::Conversion};
+/// assert_eq!("boehm".parse::<Conversion>().unwrap(), Conversion::Boehm);
+/// assert_eq!("seed-printed".parse::<Conversion>().unwrap(), Conversion::Seed(Reading::AsPrinted));
+/// assert!("bohem".parse::<Conversion>().is_err());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize)]
 #[serde(try_from = "String")]
 pub enum Conversion {
@@ -261,6 +366,15 @@ impl RationalSpline {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] unless the spline is cubic.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, rat, spline::{RationalSpline, seed_cubic_segment}};
+/// let q: Vec<Point<_>> = (0..5).map(|i| Point::new(vec![rat(i), rat(i * i % 3)])).collect();
+/// let ratios = [1, 2, 1, 3, 1, 2, 1].map(rat);
+/// let sp = RationalSpline::new(3, &q, &[1, 2, 1, 3, 1].map(rat), &ratios).unwrap();
+/// assert_eq!(seed_cubic_segment(&sp, 1).unwrap(), sp.to_bezier_boehm()[1]);
+/// ```
 pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 3 {
         return Err(Error::InvalidArgument { message: "(25)-(29) are for cubic splines".into() });
@@ -296,6 +410,17 @@ pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezie
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] unless the spline is quadratic.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::RationalSpline};
+/// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+/// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+/// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+/// use casteljau::{proof::Reading, spline::seed_quadratic_segment};
+/// let boehm = sp.to_bezier_boehm();
+/// assert_eq!(seed_quadratic_segment(&sp, 0, Reading::Corrected).unwrap(), boehm[0]);
+/// ```
 pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 2 {
         return Err(Error::InvalidArgument { message: "(53) is for quadratic splines".into() });
@@ -317,6 +442,18 @@ pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -
 }
 
 /// One failed check of [`check_segments`].
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::RationalSpline};
+/// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+/// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+/// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+/// use casteljau::spline::{SegmentMismatch, check_segments};
+/// let mut segs = sp.to_bezier_boehm();
+/// segs.swap(0, 1);
+/// assert!(matches!(check_segments(&sp, &segs), Err(SegmentMismatch::NotTheNurbs { .. })));
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SegmentMismatch {
     /// Segment `s` differs from the NURBS at its local parameter `t`.
@@ -341,6 +478,16 @@ pub enum SegmentMismatch {
 ///
 /// # Errors
 /// The first mismatch found.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::RationalSpline};
+/// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
+/// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+/// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
+/// use casteljau::spline::check_segments;
+/// assert!(check_segments(&sp, &sp.to_bezier_boehm()).is_ok());
+/// ```
 pub fn check_segments(
     sp: &RationalSpline,
     segments: &[RationalBezier<BigRational>],

@@ -16,6 +16,17 @@ use crate::surface::RationalPatch;
 use num_rational::BigRational;
 
 /// A rational spline net.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+/// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+/// let pts: Vec<Vec<Point<_>>> = (0..4)
+///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+///     .collect();
+/// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+/// assert_eq!(net.degree, (2, 2));
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SplineNet {
     /// Degrees `(n_u, n_v)`.
@@ -41,6 +52,17 @@ impl SplineNet {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for ragged input or counts that do not fit the degrees.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+    /// let pts: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+    ///     .collect();
+    /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+    /// assert!(SplineNet::new((2, 2), vec![], vec![], vec![], vec![]).is_err());
+    /// ```
     pub fn new(
         degree: (usize, usize),
         points: Vec<Vec<Point<BigRational>>>,
@@ -75,6 +97,18 @@ impl SplineNet {
     ///
     /// # Errors
     /// As the curve conversions.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+    /// let pts: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+    ///     .collect();
+    /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+    /// let rows = net.to_patches(Conversion::Boehm, false).unwrap();
+    /// assert_eq!(rows, net.to_patches(Conversion::Boehm, true).unwrap()); // order independent
+    /// ```
     pub fn to_patches(&self, how: Conversion, columns_first: bool) -> Result<Vec<Vec<RationalPatch>>> {
         if columns_first {
             self.convert_dir(&self.rows, (self.degree.0, &self.lambda), (self.degree.1, &self.mu), how, false)
@@ -134,6 +168,19 @@ impl SplineNet {
     ///
     /// # Errors
     /// [`Error::WeightsVanish`] where the surface is undefined.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+    /// let pts: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+    ///     .collect();
+    /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+    /// let ((u0, _), (v0, _)) = net.span(0, 0);
+    /// let patch = &net.to_patches(Conversion::Boehm, false).unwrap()[0][0];
+    /// assert_eq!(patch.eval(&rat(0), &rat(0)).unwrap(), net.eval(0, 0, &u0, &v0).unwrap());
+    /// ```
     pub fn eval(&self, s: usize, t: usize, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
         let ncols = self.rows[0].len();
         let pts: Vec<Point<BigRational>> = (0..ncols)
@@ -153,6 +200,17 @@ impl SplineNet {
     }
 
     /// The spans `[u_s, u_{s+1}] × [v_t, v_{t+1}]` of patch `(s, t)`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+    /// let pts: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+    ///     .collect();
+    /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+    /// assert_eq!(net.span(0, 0), ((rat(3), rat(4)), (rat(3), rat(4))));
+    /// ```
     pub fn span(&self, s: usize, t: usize) -> ((BigRational, BigRational), (BigRational, BigRational)) {
         let (ku, kv) = (knots(&self.lambda), knots(&self.mu));
         let (nu, nv) = self.degree;
@@ -170,6 +228,19 @@ fn knots(ratios: &[BigRational]) -> Vec<BigRational> {
 }
 
 /// What [`check_net`] found.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+/// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+/// let pts: Vec<Vec<Point<_>>> = (0..4)
+///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+///     .collect();
+/// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+/// use casteljau::spline::net::check_net;
+/// let r = check_net(&net, Conversion::Boehm).unwrap();
+/// assert!(r.equals_nurbs && r.smooth_joins && r.order_independent);
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct NetReport {
     /// Number of patches.
@@ -191,6 +262,18 @@ pub struct NetReport {
 ///
 /// # Errors
 /// As the conversions.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+/// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+/// let pts: Vec<Vec<Point<_>>> = (0..4)
+///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+///     .collect();
+/// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+/// use casteljau::spline::net::check_net;
+/// assert_eq!(check_net(&net, Conversion::Boehm).unwrap().patches, 4);
+/// ```
 pub fn check_net(net: &SplineNet, how: Conversion) -> Result<NetReport> {
     let a = net.to_patches(how, true)?;
     let b = net.to_patches(how, false)?;

@@ -16,12 +16,33 @@ use num_rational::BigRational;
 ///
 /// # Invariants
 /// `m + 1` rows of `n + 1` homogeneous points each, all of one dimension ≥ 2, none zero.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+/// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+/// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+/// let s = RationalPatch::new(
+///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+/// ).unwrap();
+/// let (u, v) = (ratio(1, 3), ratio(1, 2));
+/// assert_eq!(s.degree(), (1, 2));
+/// assert_eq!(s.eval(&u, &v).unwrap().to_string(), "(1, 1/3, 1/2)");
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RationalPatch {
     rows: Vec<Vec<Point<BigRational>>>,
 }
 
 /// Largest patch degree in either direction.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, rat, surface::{RationalPatch, MAX_PATCH_DEGREE}};
+/// let row = vec![Point::new(vec![rat(0), rat(0), rat(0), rat(1)]); MAX_PATCH_DEGREE + 2];
+/// assert!(RationalPatch::from_homogeneous(vec![row.clone(), row]).is_err());
+/// ```
 pub const MAX_PATCH_DEGREE: usize = 64;
 
 impl RationalPatch {
@@ -30,6 +51,19 @@ impl RationalPatch {
     /// # Errors
     /// [`Error::InvalidArgument`] for ragged rows, count mismatches, zero weights or degrees above
     /// [`MAX_PATCH_DEGREE`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert!(RationalPatch::new(vec![vec![p(0, 0, 0)]], vec![vec![rat(0)]]).is_err()); // a weight 0
+    /// ```
     pub fn new(points: Vec<Vec<Point<BigRational>>>, weights: Vec<Vec<BigRational>>) -> Result<Self> {
         let bad = |m: String| Error::InvalidArgument { message: m };
         if points.len() != weights.len() || points.iter().zip(&weights).any(|(p, w)| p.len() != w.len()) {
@@ -51,6 +85,19 @@ impl RationalPatch {
     ///
     /// # Errors
     /// As [`Self::new`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(RationalPatch::from_homogeneous(s.homogeneous().to_vec()).unwrap(), s);
+    /// ```
     pub fn from_homogeneous(rows: Vec<Vec<Point<BigRational>>>) -> Result<Self> {
         let bad = |m: String| Error::InvalidArgument { message: m };
         let cols = rows.first().map_or(0, Vec::len);
@@ -72,18 +119,70 @@ impl RationalPatch {
     }
 
     /// The degrees `(m, n)`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.degree(), (1, 2));
+    /// ```
     pub fn degree(&self) -> (usize, usize) {
         (self.rows.len() - 1, self.rows[0].len() - 1)
     }
     /// The dimension of the patch's points.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.dim(), 3);
+    /// ```
     pub fn dim(&self) -> usize {
         self.rows[0][0].dim() - 1
     }
     /// The homogeneous control net, row `i` = `u` index.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.homogeneous()[0][1].to_string(), "(1, 0, 1, 1)"); // (w·P, w)
+    /// ```
     pub fn homogeneous(&self) -> &[Vec<Point<BigRational>>] {
         &self.rows
     }
     /// The weights `w_ij`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.weights(), vec![vec![rat(1); 3]; 2]);
+    /// ```
     pub fn weights(&self) -> Vec<Vec<BigRational>> {
         self.rows.iter().map(|r| r.iter().map(|p| p.coords[self.dim()].clone()).collect()).collect()
     }
@@ -95,6 +194,19 @@ impl RationalPatch {
     }
 
     /// The homogeneous point `Σ Σ B_i(u) B_j(v) (w_ij P_ij, w_ij)`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.eval_homogeneous(&u, &v).to_string(), "(1, 1/3, 1/2, 1)");
+    /// ```
     pub fn eval_homogeneous(&self, u: &BigRational, v: &BigRational) -> Point<BigRational> {
         let (m, n) = self.degree();
         let (bu, bv) = (crate::poly::bernstein::bernstein_all(m, u), crate::poly::bernstein::bernstein_all(n, v));
@@ -143,6 +255,19 @@ impl RationalPatch {
     ///
     /// # Errors
     /// [`Error::WeightsVanish`] where `W_00(u, v; m, n) = 0`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.eval(&u, &v).unwrap().to_string(), "(1, 1/3, 1/2)"); // (2v, u, 2v(1 − v))
+    /// ```
     pub fn eval(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
         self.eval_homogeneous(u, v).from_homogeneous().ok_or_else(|| Error::WeightsVanish {
             interval: (format!("(u, v) = ({u}, {v})"), format!("(u, v) = ({u}, {v})")),
@@ -154,6 +279,19 @@ impl RationalPatch {
     ///
     /// # Errors
     /// [`Error::WeightsVanish`] when an intermediate weight vanishes.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.eval_u_then_v(&u, &v).unwrap(), s.eval(&u, &v).unwrap());
+    /// ```
     pub fn eval_u_then_v(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
         let (m, n) = self.degree();
         let (pts, ws): (Vec<_>, Vec<_>) = (0..=n)
@@ -171,6 +309,19 @@ impl RationalPatch {
     ///
     /// # Errors
     /// As [`Self::eval_u_then_v`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.eval_v_then_u(&u, &v).unwrap(), s.eval(&u, &v).unwrap());
+    /// ```
     pub fn eval_v_then_u(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
         let (m, n) = self.degree();
         let (pts, ws): (Vec<_>, Vec<_>) = (0..=m)
@@ -185,23 +336,79 @@ impl RationalPatch {
     }
 
     /// The iso-parameter curve `v ↦ S(u0, v)` as a rational Bézier curve of degree `n`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.iso_u(&u).eval(&v).unwrap(), s.eval(&u, &v).unwrap());
+    /// ```
     pub fn iso_u(&self, u0: &BigRational) -> RationalBezier<BigRational> {
         let n = self.degree().1;
         Self::curve((0..=n).map(|j| Self::curve(self.column(j)).eval_homogeneous(u0)).collect())
     }
 
     /// The iso-parameter curve `u ↦ S(u, v0)` as a rational Bézier curve of degree `m`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.iso_v(&v).eval(&u).unwrap(), s.eval(&u, &v).unwrap());
+    /// ```
     pub fn iso_v(&self, v0: &BigRational) -> RationalBezier<BigRational> {
         Self::curve(self.rows.iter().map(|r| Self::curve(r.clone()).eval_homogeneous(v0)).collect())
     }
 
     /// Splits at `u0`: the patches for `u ∈ [0, u0]` and `[u0, 1]` (every column subdivided).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// let (a, b) = s.subdivide_u(&ratio(1, 4));
+    /// assert_eq!(a.eval(&rat(1), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
+    /// assert_eq!(b.eval(&rat(0), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
+    /// ```
     pub fn subdivide_u(&self, u0: &BigRational) -> (Self, Self) {
         let (a, b) = self.transpose().subdivide_v(u0);
         (a.transpose(), b.transpose())
     }
 
     /// Splits at `v0` (every row subdivided).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// let (a, b) = s.subdivide_v(&ratio(1, 4));
+    /// assert_eq!(a.eval(&u, &rat(1)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
+    /// assert_eq!(b.eval(&u, &rat(0)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
+    /// ```
     pub fn subdivide_v(&self, v0: &BigRational) -> (Self, Self) {
         let halves: Vec<_> = self.rows.iter().map(|r| Self::curve(r.clone()).subdivide(v0)).collect();
         (
@@ -211,6 +418,19 @@ impl RationalPatch {
     }
 
     /// The transposed patch (`u` and `v` exchanged).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.transpose().eval(&v, &u).unwrap(), s.eval(&u, &v).unwrap());
+    /// ```
     pub fn transpose(&self) -> Self {
         let n = self.degree().1;
         RationalPatch { rows: (0..=n).map(|j| self.column(j)).collect() }
@@ -220,6 +440,21 @@ impl RationalPatch {
     ///
     /// # Errors
     /// [`Error::TooLarge`] beyond [`MAX_PATCH_DEGREE`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// let e = s.elevate(1, 1).unwrap();
+    /// assert_eq!(e.degree(), (2, 3));
+    /// assert_eq!(e.eval(&u, &v).unwrap(), s.eval(&u, &v).unwrap());
+    /// ```
     pub fn elevate(&self, ru: usize, rv: usize) -> Result<Self> {
         let (m, n) = self.degree();
         if m + ru > MAX_PATCH_DEGREE || n + rv > MAX_PATCH_DEGREE {
@@ -245,6 +480,22 @@ impl RationalPatch {
     ///
     /// # Errors
     /// [`Error::WeightsVanish`] where the patch is undefined; a point at infinity.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// use casteljau::proof::Reading;
+    /// let changed = s.with_weight_change(1, 1, &rat(2)).unwrap().eval(&u, &v).unwrap();
+    /// assert_eq!(s.weight_change(1, 1, &rat(2), &u, &v, Reading::Corrected).unwrap(), changed);
+    /// assert_ne!(s.weight_change(1, 1, &rat(2), &u, &v, Reading::AsPrinted).unwrap(), changed);
+    /// ```
     pub fn weight_change(
         &self,
         i: usize,
@@ -277,6 +528,19 @@ impl RationalPatch {
     ///
     /// # Errors
     /// For a point at infinity or a resulting zero weight.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// assert_eq!(s.with_weight_change(0, 1, &rat(2)).unwrap().weights()[0], vec![rat(1), rat(3), rat(1)]);
+    /// ```
     pub fn with_weight_change(&self, i: usize, j: usize, dw: &BigRational) -> Result<Self> {
         let mut rows = self.rows.clone();
         let d = self.dim();
@@ -295,6 +559,21 @@ impl RationalPatch {
     /// coefficients `w_ij (z_ij − c)` of the polynomial `F(u, v) = Σ Σ B_i(u) B_j(v) w_ij (z_ij − c)`
     /// of degree `(m, n)`, whose zero set in `[0,1]²` (where `W ≠ 0`) is the contour. `axis` picks
     /// the coordinate (`2` = z).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// // z = 3/8 where 2v(1 − v) = 3/8: v = 1/4 and v = 3/4
+    /// let f = s.contour_polynomial(2, &ratio(3, 8));
+    /// assert_eq!(f, vec![vec![ratio(-3, 8), ratio(5, 8), ratio(-3, 8)]; 2]);
+    /// ```
     pub fn contour_polynomial(&self, axis: usize, c: &BigRational) -> Vec<Vec<BigRational>> {
         let d = self.dim();
         self.rows
@@ -305,6 +584,21 @@ impl RationalPatch {
 
     /// Sampled contour of [`Self::contour_polynomial`] for plots: segments in `(u, v)` from a
     /// marching-squares pass over a `res × res` grid, in `f64` (for drawing only).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
+    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+    /// let s = RationalPatch::new(
+    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
+    /// ).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
+    /// let segs = s.contour_polyline(2, &ratio(3, 8), 16);
+    /// assert!(!segs.is_empty());
+    /// assert!(segs.iter().flatten().all(|&(a, b)| (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)));
+    /// ```
     pub fn contour_polyline(&self, axis: usize, c: &BigRational, res: usize) -> Vec<[(f64, f64); 2]> {
         let coeffs = self.contour_polynomial(axis, c);
         let (m, n) = self.degree();
