@@ -50,8 +50,9 @@ use std::fmt;
 /// Largest number of grid points one check may visit.
 pub const MAX_GRID_POINTS: usize = 50_000_000;
 
-/// Evidence that an identity holds: the degree bounds and the grid it vanished on.
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// Evidence that an identity holds: the degree bounds and the grid it vanished on. Its JSON:
+/// `degrees`, `nodes` (exact strings), `points_checked`, `identities`.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Certificate {
     /// Per-variable degree bounds `d_j`.
     pub degrees: Vec<usize>,
@@ -81,12 +82,15 @@ impl fmt::Display for Certificate {
     }
 }
 
-/// An exact point where an identity fails.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Counterexample<S> {
+/// An exact point where an identity fails. Its JSON: `point`, `value` (exact strings),
+/// `identity`.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Counterexample<S: fmt::Display> {
     /// The variables' values.
+    #[serde(serialize_with = "crate::num::serial::strings")]
     pub point: Vec<S>,
     /// The (non-zero) value of `lhs − rhs` there.
+    #[serde(serialize_with = "crate::num::serial::string")]
     pub value: S,
     /// Which identity of a batch failed (0 for a single identity).
     pub identity: usize,
