@@ -201,7 +201,7 @@ pub fn entries() -> Vec<Entry> {
         1.0,
         true,
     );
-    for (s, seg) in sp.to_bezier_boehm().iter().enumerate() {
+    for (s, seg) in sp.to_bezier_boehm().expect("the seed spline converts").iter().enumerate() {
         draw_rational(&mut f, seg, PALETTE[s % PALETTE.len()], false);
         let poly: Vec<(f64, f64)> =
             seg.points().iter().flatten().map(|p| (ratio_to_f64(&p.coords[0]), ratio_to_f64(&p.coords[1]))).collect();

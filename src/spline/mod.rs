@@ -13,6 +13,7 @@
 //! * [`seed_cubic_segment`] and [`seed_quadratic_segment`]: the seed's rational interpolation
 //!   formulas (25)–(29) and (53), as printed or corrected.
 
+pub mod knots;
 pub mod net;
 
 use crate::error::{Error, Result};
@@ -149,7 +150,8 @@ impl RationalSpline {
         Self::new(degree, &pts, &ws, ratios)
     }
 
-    /// Number of segments, `m − n + 1`.
+    /// Number of segments: the non-empty knot spans of the domain (`m − n + 1` when every
+    /// scale ratio is positive).
     ///
     /// # Example
     /// ```
@@ -160,10 +162,11 @@ impl RationalSpline {
     /// assert_eq!(sp.segments(), 2);
     /// ```
     pub fn segments(&self) -> usize {
-        self.homogeneous.len() - self.degree
+        self.span_indices().len()
     }
 
-    /// The parameter interval `[u_{n+s}, u_{n+s+1}]` of segment `s`.
+    /// The parameter interval of segment `s`: `[u_{n+s}, u_{n+s+1}]` when every scale ratio is
+    /// positive, in general the `s`-th non-empty knot span of the domain.
     ///
     /// # Example
     /// ```
@@ -175,7 +178,8 @@ impl RationalSpline {
     /// assert_eq!(sp.span(1), (rat(4), rat(5)));
     /// ```
     pub fn span(&self, s: usize) -> (BigRational, BigRational) {
-        (self.knots[self.degree + s].clone(), self.knots[self.degree + s + 1].clone())
+        let j = self.span_indices()[s];
+        (self.knots[j].clone(), self.knots[j + 1].clone())
     }
 
     /// The homogeneous NURBS point at `u` in segment `s` (de Boor's recursion).
@@ -190,7 +194,7 @@ impl RationalSpline {
     /// ```
     pub fn eval_homogeneous(&self, s: usize, u: &BigRational) -> Point<BigRational> {
         let n = self.degree;
-        let j = n + s;
+        let j = self.span_indices()[s];
         let mut d: Vec<Point<BigRational>> = self.homogeneous[j - n..=j].to_vec();
         for r in 1..=n {
             for i in (r..=n).rev() {
@@ -223,7 +227,12 @@ impl RationalSpline {
             .ok_or(Error::WeightsVanish { interval: (u.to_string(), u.to_string()) })
     }
 
-    /// Rational Bézier segments by Boehm knot insertion (each boundary knot to multiplicity `n`).
+    /// Rational Bézier segments by Boehm knot insertion (each boundary knot to multiplicity `n`):
+    /// [`Self::bezier_segments`], for any knot vector.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] when an inserted homogeneous point is zero (weights of
+    /// opposite signs cancelling), so a segment has no rational form.
     ///
     /// # Example
     /// ```
@@ -231,38 +240,12 @@ impl RationalSpline {
     /// // a quadratic spline with 4 control points and scale ratios 1, 2, 1, 1, 1: knots 0 1 3 4 5 6
     /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
     /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
-    /// let segs = sp.to_bezier_boehm();
+    /// let segs = sp.to_bezier_boehm().unwrap();
     /// assert_eq!(segs.len(), 2);
     /// assert_eq!(segs[0].eval(&rat(1)).unwrap(), segs[1].eval(&rat(0)).unwrap());
     /// ```
-    pub fn to_bezier_boehm(&self) -> Vec<RationalBezier<BigRational>> {
-        let n = self.degree;
-        let (mut u, mut p) = (self.knots.clone(), self.homogeneous.clone());
-        let m = p.len() - 1;
-        let bounds: Vec<BigRational> = self.knots[n..=m + 1].to_vec();
-        for b in &bounds {
-            while u.iter().filter(|x| *x == b).count() < n {
-                let pm = p.len() - 1;
-                // k in [n, pm] with u_k ≤ b ≤ u_{k+1}, the largest such
-                let k = (n..=pm).rev().find(|&k| u[k] <= *b).expect("b in the domain");
-                let mut q = Vec::with_capacity(p.len() + 1);
-                q.extend_from_slice(&p[..=k - n]);
-                for i in k - n + 1..=k {
-                    let a = (b.clone() - &u[i]) / (u[i + n].clone() - &u[i]);
-                    q.push(p[i - 1].lerp(&p[i], &a));
-                }
-                q.extend_from_slice(&p[k..]);
-                p = q;
-                u.insert(k + 1, b.clone());
-            }
-        }
-        bounds
-            .windows(2)
-            .map(|w| {
-                let k = u.iter().rposition(|x| *x == w[0]).expect("boundary knot");
-                RationalBezier::from_homogeneous(p[k - n..=k].to_vec()).expect("non-zero homogeneous points")
-            })
-            .collect()
+    pub fn to_bezier_boehm(&self) -> Result<Vec<RationalBezier<BigRational>>> {
+        self.bezier_segments()
     }
 
     /// The local scale ratio `λ_i` around segment `s` (`i = 0` is the segment's own interval).
@@ -351,7 +334,13 @@ impl RationalSpline {
     pub fn to_bezier(&self, how: Conversion) -> Result<Vec<RationalBezier<BigRational>>> {
         let segments = 0..self.segments();
         match (how, self.degree) {
-            (Conversion::Boehm, _) => Ok(self.to_bezier_boehm()),
+            (Conversion::Boehm, _) => self.to_bezier_boehm(),
+            (Conversion::Seed(_), _) if self.knots[1..].windows(2).any(|w| w[0] == w[1]) => {
+                Err(Error::InvalidArgument {
+                    message: "the seed's formulas need positive scale ratios (no repeated knots): use the boehm method"
+                        .into(),
+                })
+            }
             (Conversion::Seed(_), 3) => segments.map(|s| seed_cubic_segment(self, s)).collect(),
             (Conversion::Seed(reading), 2) => segments.map(|s| seed_quadratic_segment(self, s, reading)).collect(),
             (Conversion::Seed(_), n) => Err(Error::InvalidArgument {
@@ -373,7 +362,7 @@ impl RationalSpline {
 /// let q: Vec<Point<_>> = (0..5).map(|i| Point::new(vec![rat(i), rat(i * i % 3)])).collect();
 /// let ratios = [1, 2, 1, 3, 1, 2, 1].map(rat);
 /// let sp = RationalSpline::new(3, &q, &[1, 2, 1, 3, 1].map(rat), &ratios).unwrap();
-/// assert_eq!(seed_cubic_segment(&sp, 1).unwrap(), sp.to_bezier_boehm()[1]);
+/// assert_eq!(seed_cubic_segment(&sp, 1).unwrap(), sp.to_bezier_boehm().unwrap()[1]);
 /// ```
 pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 3 {
@@ -418,7 +407,7 @@ pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezie
 /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
 /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
 /// use casteljau::{proof::Reading, spline::seed_quadratic_segment};
-/// let boehm = sp.to_bezier_boehm();
+/// let boehm = sp.to_bezier_boehm().unwrap();
 /// assert_eq!(seed_quadratic_segment(&sp, 0, Reading::Corrected).unwrap(), boehm[0]);
 /// ```
 pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -> Result<RationalBezier<BigRational>> {
@@ -450,7 +439,7 @@ pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -
 /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
 /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
 /// use casteljau::spline::{SegmentMismatch, check_segments};
-/// let mut segs = sp.to_bezier_boehm();
+/// let mut segs = sp.to_bezier_boehm().unwrap();
 /// segs.swap(0, 1);
 /// assert!(matches!(check_segments(&sp, &segs), Err(SegmentMismatch::NotTheNurbs { .. })));
 /// ```
@@ -474,7 +463,9 @@ pub enum SegmentMismatch {
 
 /// Proves that `segments` are the NURBS `sp` on its spans (rational of type ≤ `(n, n)` in the
 /// local parameter: `2n + 1` exact parameters decide each) and that consecutive segments join
-/// with `C^{n−1}` continuity in the spline parameter (`d^r/du^r = λ^{−r} d^r/dt^r`).
+/// with the continuity `C^{n−μ}` of each join's knot multiplicity `μ` (`C^{n−1}` for positive
+/// scale ratios) in the spline parameter (`d^r/du^r = λ^{−r} d^r/dt^r`), by
+/// [`RationalSpline::joins`].
 ///
 /// # Errors
 /// The first mismatch found.
@@ -486,7 +477,7 @@ pub enum SegmentMismatch {
 /// let q: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
 /// let sp = RationalSpline::new(2, &q, &vec![rat(1); 4], &[rat(1), rat(2), rat(1), rat(1), rat(1)]).unwrap();
 /// use casteljau::spline::check_segments;
-/// assert!(check_segments(&sp, &sp.to_bezier_boehm()).is_ok());
+/// assert!(check_segments(&sp, &sp.to_bezier_boehm().unwrap()).is_ok());
 /// ```
 pub fn check_segments(
     sp: &RationalSpline,
@@ -506,18 +497,8 @@ pub fn check_segments(
             }
         }
     }
-    for s in 0..segments.len().saturating_sub(1) {
-        let (la, lb) = (sp.local_ratio(s, 0), sp.local_ratio(s + 1, 0));
-        let left = segments[s].derivatives_at(&rat(1), n - 1);
-        let right = segments[s + 1].derivatives_at(&rat(0), n - 1);
-        let (Ok(left), Ok(right)) = (left, right) else { continue };
-        for r in 0..n {
-            let sl = crate::poly::bernstein::pow(&la, r);
-            let sr = crate::poly::bernstein::pow(&lb, r);
-            if left[r].scale(&sr) != right[r].scale(&sl) {
-                return Err(SegmentMismatch::Discontinuous { segment: s, order: r });
-            }
-        }
+    if let Some((s, j)) = sp.joins(segments).into_iter().enumerate().find(|(_, j)| !j.proved) {
+        return Err(SegmentMismatch::Discontinuous { segment: s, order: j.continuity.max(0) as usize });
     }
     Ok(points)
 }

@@ -446,7 +446,7 @@ pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<Ans
         proof::Reading,
         spline::{Conversion, check_segments},
     };
-    let boehm = sp.to_bezier_boehm();
+    let boehm = sp.to_bezier_boehm()?;
     let mut lines = Vec::new();
     let mut failed = false;
     let mut report = |name: &str, r: std::result::Result<usize, casteljau::spline::SegmentMismatch>| match r {
