@@ -253,3 +253,61 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn knots_surface_equals_the_seed_net_route_and_is_proved() {
+    use casteljau::spline::net::SplineNet;
+    use casteljau::spline::surface::NurbsSurface;
+    let pts: Vec<Vec<Point<BigRational>>> = (0..5)
+        .map(|i| (0..5).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j + i + 2 * j) % 5)])).collect())
+        .collect();
+    let w: Vec<Vec<BigRational>> =
+        (0..5).map(|i| (0..5).map(|j| ratio(1 + (i + 2 * j) % 3, 1 + (i * j) % 2)).collect()).collect();
+    let (lambda, mu) = ([1, 2, 1, 3, 1, 2].map(rat).to_vec(), [2, 1, 1, 2, 3, 1].map(rat).to_vec());
+    let net = SplineNet::new((2, 2), pts.clone(), w.clone(), lambda, mu).unwrap();
+    let rows: Vec<Vec<Point<BigRational>>> =
+        pts.iter().zip(&w).map(|(r, wr)| r.iter().zip(wr).map(|(p, w)| p.to_homogeneous(w)).collect()).collect();
+    let s = NurbsSurface::from_knots(
+        (2, 2),
+        rows,
+        &[0, 1, 3, 4, 7, 8, 10, 11].map(rat),
+        &[0, 2, 3, 4, 6, 9, 10, 11].map(rat),
+    )
+    .unwrap();
+    let by_net = net.to_patches(Conversion::Boehm, false).unwrap();
+    let by_knots = s.bezier_patches().unwrap();
+    assert_eq!(by_knots.len(), 3);
+    for (a, b) in by_net.iter().flatten().zip(by_knots.iter().flatten()) {
+        assert_eq!(a, &b.patch);
+    }
+    let r = s.check().unwrap();
+    assert_eq!(r.patches, 9);
+    assert!(r.equals_surface && r.joins_proved, "{r:?}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random clamped NURBS surfaces with a repeated interior knot: the patches equal the
+    /// surface and every join has the continuity of its multiplicity.
+    #[test]
+    fn knots_surface_patches_are_proved(p in 1usize..=3, q in 1usize..=2, mu in 1usize..=3, raw in prop::collection::vec((-5i64..=5, 1i64..=3), 64)) {
+        use casteljau::spline::surface::NurbsSurface;
+        let mu = mu.min(p);
+        let mut ku: Vec<BigRational> = vec![rat(0); p + 1];
+        ku.extend(std::iter::repeat_n(rat(1), mu));
+        ku.extend(std::iter::repeat_n(rat(3), p + 1));
+        let kv: Vec<BigRational> = [vec![rat(0); q + 1], vec![ratio(1, 2)], vec![rat(1); q + 1]].concat();
+        let (m, l) = (ku.len() - p - 1, kv.len() - q - 1);
+        let rows: Vec<Vec<Point<BigRational>>> = (0..m)
+            .map(|i| (0..l).map(|j| {
+                let (z, w) = raw[(i * l + j) % raw.len()];
+                let w = ratio(w, 2);
+                Point::new(vec![rat(i as i64) * &w, rat(j as i64) * &w, rat(z) * &w, w])
+            }).collect())
+            .collect();
+        let s = NurbsSurface::from_knots((p, q), rows, &ku, &kv).unwrap();
+        let r = s.check().unwrap();
+        prop_assert!(r.equals_surface && r.joins_proved, "{:?}", r);
+    }
+}

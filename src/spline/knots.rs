@@ -369,7 +369,7 @@ impl RationalSpline {
     /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
     /// let up = sp.elevate_degree().unwrap();
     /// assert_eq!(up.degree, 3);
-    /// assert_eq!(up.knot_vector(), &[0, 0, 0, 0, 1, 1, 2, 2].map(rat)); // + the last knot 2
+    /// assert_eq!(up.knot_vector(), &[0, 0, 0, 0, 1, 1, 2, 2, 2].map(rat)); // and the last knot 2
     /// assert_eq!(up.eval_at(&ratio(1, 3)).unwrap(), sp.eval_at(&ratio(1, 3)).unwrap());
     /// ```
     pub fn elevate_degree(&self) -> Result<Self> {
@@ -424,7 +424,7 @@ fn elevate_homogeneous(p: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
 
 /// Homogeneous derivatives of orders `0..=order` agree at the join, scaled to the global
 /// parameter; failing that, affine derivatives (other homogeneous normalisations).
-fn joins_with_order(
+pub(crate) fn joins_with_order(
     left: &RationalBezier<BigRational>,
     right: &RationalBezier<BigRational>,
     la: &BigRational,

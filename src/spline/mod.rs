@@ -15,6 +15,7 @@
 
 pub mod knots;
 pub mod net;
+pub mod surface;
 
 use crate::error::{Error, Result};
 use crate::num::point::Point;
