@@ -32,15 +32,16 @@ pub(crate) fn eval(c: &BezierCurve<BigRational>, ts: &[BigRational]) -> Result<(
     Ok((text, json!({"degree": c.degree(), "values": js})))
 }
 
-pub(crate) fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: u32) -> Result<(String, Value)> {
-    if depth == 1 {
+/// Without `depth` the two halves (`left`, `right`); with any depth the `pieces` form.
+pub(crate) fn subdivide(c: &BezierCurve<BigRational>, t0: &BigRational, depth: Option<u32>) -> Result<(String, Value)> {
+    let Some(depth) = depth else {
         let (l, r) = fraction_free::subdivide(c, t0);
         let text = format!("left:  {l}\nright: {r}");
         return Ok((
             text,
             json!({"t": t0.to_string(), "left": points_json(l.points()), "right": points_json(r.points())}),
         ));
-    }
+    };
     crate::batch::output_limit(
         "subdivision output (pieces × points)",
         (c.degree() + 1) << depth.min(40),
@@ -227,7 +228,7 @@ pub(crate) fn classify_weighted(c: &RationalBezier<BigRational>) -> Result<(Stri
     Ok((text, v))
 }
 
-fn weighted_json(c: &RationalBezier<BigRational>) -> Value {
+pub(crate) fn weighted_json(c: &RationalBezier<BigRational>) -> Value {
     json!({
         "degree": c.degree(),
         "points": c.points().iter().map(|p| p.as_ref().map(point_json)).collect::<Vec<_>>(),
@@ -236,7 +237,7 @@ fn weighted_json(c: &RationalBezier<BigRational>) -> Value {
     })
 }
 
-fn weighted_text(c: &RationalBezier<BigRational>) -> String {
+pub(crate) fn weighted_text(c: &RationalBezier<BigRational>) -> String {
     c.homogeneous()
         .points()
         .iter()
@@ -415,62 +416,4 @@ pub(crate) fn surface_contour(
         v["polyline"] = json!(segs.iter().map(|s| [[s[0].0, s[0].1], [s[1].0, s[1].1]]).collect::<Vec<_>>());
     }
     Ok((text, v))
-}
-
-pub(crate) fn spline_to_bezier(sp: &casteljau::spline::RationalSpline, method: &str) -> Result<(String, Value)> {
-    let segs = sp.to_bezier(method.parse()?)?;
-    let text = segs
-        .iter()
-        .enumerate()
-        .map(|(s, c)| {
-            let (a, b) = sp.span(s);
-            format!("[{a}, {b}]: {}", weighted_text(c))
-        })
-        .collect::<Vec<_>>()
-        .join("\n");
-    let js: Vec<Value> = segs
-        .iter()
-        .enumerate()
-        .map(|(s, c)| {
-            let (a, b) = sp.span(s);
-            let mut v = weighted_json(c);
-            v["span"] = json!([a.to_string(), b.to_string()]);
-            v
-        })
-        .collect();
-    Ok((text, json!({"degree": sp.degree, "method": method, "segments": js})))
-}
-
-pub(crate) fn spline_check(sp: &casteljau::spline::RationalSpline) -> Result<Answer> {
-    use casteljau::{
-        proof::Reading,
-        spline::{Conversion, check_segments},
-    };
-    let boehm = sp.to_bezier_boehm()?;
-    let mut lines = Vec::new();
-    let mut failed = false;
-    let mut report = |name: &str, r: std::result::Result<usize, casteljau::spline::SegmentMismatch>| match r {
-        Ok(points) => lines.push(format!(
-            "{name}: every segment is the NURBS on its span ({points} exact points), joins C^{}",
-            sp.degree - 1
-        )),
-        Err(e) => {
-            failed = true;
-            lines.push(format!("{name}: FAILS: {e:?}"));
-        }
-    };
-    report("Boehm knot insertion", check_segments(sp, &boehm));
-    let seed = matches!(sp.degree, 2 | 3).then(|| sp.to_bezier(Conversion::Seed(Reading::Corrected)));
-    if let Some(seed) = seed {
-        let seed = seed?;
-        report("seed formulas", check_segments(sp, &seed));
-        let same = seed.iter().zip(&boehm).all(|(a, b)| a.points() == b.points() && a.weights() == b.weights());
-        failed |= !same;
-        lines.push(format!("seed formulas = Boehm (points and weights): {same}"));
-    }
-    Ok(Answer {
-        text: lines.join("\n"),
-        json: json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines}),
-        failed,
-    })
 }

@@ -34,14 +34,17 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
-    /// Split at t (Lemma 2) into the control polygons of [0,t] and [t,1]; with --depth, repeat.
+    /// Split at t (Lemma 2) into the control polygons of [0,t] and [t,1] (`left`/`right`); with
+    /// --depth k, repeat: 2^k `pieces` with their parameter intervals.
     Subdivide {
         /// The split parameter.
         #[arg(long = "t", default_value = "1/2", allow_hyphen_values = true)]
         t: String,
-        /// Split every piece again, depth times (2^depth pieces, as in seed 001 Fig. 10).
-        #[arg(long, default_value_t = 1)]
-        depth: u32,
+        /// Split every piece again, depth times (2^depth pieces, as in seed 001 Fig. 10). Any
+        /// explicit depth, 1 included, prints the `pieces` form; without it the `left`/`right`
+        /// form.
+        #[arg(long)]
+        depth: Option<u32>,
         /// Rational curves (depth 1).
         #[command(flatten)]
         rational: RationalArgs,
@@ -147,7 +150,10 @@ pub enum Command {
         #[command(subcommand)]
         op: SurfaceOp,
     },
-    /// Rational splines with scale ratios → C^(n-1)-joined rational Bézier segments.
+    /// Rational splines (knot vectors with multiplicities, or the seed's scale ratios): Bézier
+    /// segments with proved joins, evaluation, knot insertion and removal, degree elevation,
+    /// NURBS surfaces.
+    #[command(after_help = KNOT_HELP)]
     Spline {
         /// What to do with the spline.
         #[command(subcommand)]
@@ -232,40 +238,117 @@ pub struct PatchArgs {
     pub curve: CurveArgs,
 }
 
+/// How `--knots` and `--ratios` describe a spline (shown by `spline --help`).
+pub const KNOT_HELP: &str = "\
+KNOTS: a degree-n spline with control points P_0..P_m takes the standard knot vector of
+m + n + 2 non-decreasing exact numbers (--knots \"0 0 0 0 1 2 3 3 3 3\": clamped cubic, 6 points),
+its domain is [t_n, t_(m+1)]; interior knots may repeat up to n + 1 times (multiplicity mu gives
+C^(n-mu) there). The first and the last knot never influence the curve.
+RATIOS (the seed's form): --ratios \"l_0 .. l_(m+n-1)\" are the knot intervals, all > 0: the knots
+are t_0 = 0, t_(j+1) = t_j + l_j, i.e. the knot vector without its last knot.
+BATCH: one spline per line, either a control polygon (with --knots/--ratios/--weights for all
+lines) or a JSON object {\"degree\":3,\"knots\":[...],\"weights\":[...],\"points\":[[x,y],...]} with
+exact numbers as JSON numbers or strings (\"1/3\"); \"ratios\" instead of \"knots\", and
+\"homogeneous\": true for points given as [w*x, w*y, w] (w = 0: at infinity).";
+
 /// Spline operations.
 #[derive(Subcommand, Debug)]
 pub enum SplineOp {
-    /// The rational Bézier segments of the spline, with their weights.
+    /// The rational Bézier segments of the spline, with their weights and the continuity at
+    /// each join (C^(n-mu), proved).
     ToBezier {
-        /// `seed` (the seed's rational interpolation formulas: cubic (25)-(29), quadratic (53)
-        /// corrected) or `boehm` (knot insertion, any degree).
+        /// `boehm` (knot insertion, any degree and knot vector), `seed` (the seed's rational
+        /// interpolation formulas: cubic (25)-(29), quadratic (53) corrected; positive ratios
+        /// only) or `seed-printed` ((53) as printed).
         #[arg(long, default_value = "boehm")]
         method: String,
         /// The spline.
         #[command(flatten)]
         spline: SplineArgs,
     },
-    /// Prove the segments: equal to the NURBS on each span, C^(n-1) joins, seed = Boehm.
+    /// Prove the segments: equal to the NURBS on each span, each join C^(n-mu), seed = Boehm.
     Check {
         /// The spline.
         #[command(flatten)]
         spline: SplineArgs,
     },
+    /// Evaluate by de Boor's recursion at parameters of the domain (knots included).
+    Eval {
+        /// Parameter values (repeatable).
+        #[arg(long = "u", required = true, allow_hyphen_values = true)]
+        u: Vec<String>,
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+    /// Insert a knot (Boehm): the same curve with more control points.
+    Insert {
+        /// The knot.
+        #[arg(long, allow_hyphen_values = true)]
+        knot: String,
+        /// How many times.
+        #[arg(long, default_value_t = 1)]
+        times: usize,
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+    /// Remove an interior knot exactly, only when the curve stays the same (exit 1 otherwise).
+    Remove {
+        /// The knot.
+        #[arg(long, allow_hyphen_values = true)]
+        knot: String,
+        /// How many times.
+        #[arg(long, default_value_t = 1)]
+        times: usize,
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+    /// Degree elevation: the same curve one degree higher (clamped at the domain ends).
+    Elevate {
+        /// The spline.
+        #[command(flatten)]
+        spline: SplineArgs,
+    },
+    /// A tensor-product NURBS surface → rational Bézier patches, proved equal to the surface
+    /// with each join's continuity.
+    Surface {
+        /// Degrees "p,q" (rows along u, columns along v).
+        #[arg(long)]
+        degree: String,
+        /// Knot vector in u (m + p + 2 knots for m + 1 rows).
+        #[arg(long, allow_hyphen_values = true)]
+        knots_u: String,
+        /// Knot vector in v (l + q + 2 knots for l + 1 columns).
+        #[arg(long, allow_hyphen_values = true)]
+        knots_v: String,
+        /// Weights, row-major (default all 1), or --homogeneous.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The control net, row-major, (m+1)(l+1) points (3D by default), and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
 }
 
-/// A rational spline.
+/// A rational spline: its degree, knots (or the seed's scale ratios) and weights.
 #[derive(Args, Debug)]
 pub struct SplineArgs {
     /// The degree n.
     #[arg(long, default_value_t = 3)]
     pub degree: usize,
-    /// Scale ratios (knot intervals), m + n of them for m + 1 control points.
+    /// The knot vector: m + n + 2 non-decreasing exact numbers for m + 1 control points.
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "ratios")]
+    pub knots: Option<String>,
+    /// Scale ratios (knot intervals, > 0): m + n of them for m + 1 control points; the knots
+    /// are their partial sums from 0 (the knot vector without its last knot).
     #[arg(long, allow_hyphen_values = true)]
-    pub ratios: String,
-    /// Weights k_i (default all 1).
-    #[arg(long, allow_hyphen_values = true)]
-    pub weights: Option<String>,
-    /// The control polygon, and output form.
+    pub ratios: Option<String>,
+    /// Weights (default all 1), or --homogeneous.
+    #[command(flatten)]
+    pub rational: RationalArgs,
+    /// The control polygon (or JSON Lines splines), and output form.
     #[command(flatten)]
     pub curve: CurveArgs,
 }

@@ -156,6 +156,14 @@ pub fn option_number(option: &str, s: &str) -> Result<BigRational> {
 
 /// Reads the curves (argument, file, or stdin) and answers each; exit 2 if any line was bad.
 pub fn batch(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer>) -> i32 {
+    batch_lines(args, out, |line, text| {
+        parse_points(text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c))
+    })
+}
+
+/// [`batch`] on the raw text of each input line (for inputs that are not a control polygon,
+/// such as JSON Lines splines): `f` gets the line number and the text.
+pub fn batch_lines(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(Option<usize>, &str) -> Result<Answer>) -> i32 {
     if args.dim == 0 || args.dim > MAX_DIM {
         eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
         return 2;
@@ -177,7 +185,7 @@ pub fn batch(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(&BezierCurve<BigR
     let mut code = 0;
     let mut failed = false;
     for (line, text) in inputs {
-        let answer = parse_points(&text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c));
+        let answer = f(line, &text);
         let written = match answer {
             Ok(Answer { text, json: mut value, failed: f }) => {
                 failed |= f;

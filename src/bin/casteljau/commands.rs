@@ -2,7 +2,7 @@
 //! `spline`, `gallery` (the curve commands share [`crate::batch`]'s reader).
 
 use crate::answers;
-use crate::args::{PatchArgs, PlotArgs, ProveArgs, SplineOp, SurfaceOp};
+use crate::args::{PatchArgs, PlotArgs, ProveArgs, SurfaceOp};
 use crate::batch::{Answer, Weights, batch, numbers, option_number, patch_of, rational_batch, rational_curve};
 use casteljau::error::{Error, Result};
 use serde_json::Value;
@@ -49,25 +49,6 @@ pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
             run_patch(patch, out, &|p| answers::surface_contour(p, &z.clone()?, polyline).map(Answer::from))
         }
     }
-}
-
-pub(crate) fn spline(op: SplineOp, out: &mut dyn Write) -> i32 {
-    let (args, method) = match op {
-        SplineOp::ToBezier { method, spline } => (spline, Some(method)),
-        SplineOp::Check { spline } => (spline, None),
-    };
-    let ratios = numbers("--ratios", &args.ratios);
-    let weights = args.weights.as_deref().map(|w| numbers("--weights", w)).transpose();
-    let degree = args.degree;
-    batch(&args.curve, out, |c| {
-        let ratios = ratios.clone()?;
-        let weights = weights.clone()?.unwrap_or_else(|| vec![casteljau::num::scalar::rat(1); c.points().len()]);
-        let sp = casteljau::spline::RationalSpline::new(degree, c.points(), &weights, &ratios)?;
-        match &method {
-            Some(m) => answers::spline_to_bezier(&sp, m).map(Answer::from),
-            None => answers::spline_check(&sp),
-        }
-    })
 }
 
 pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {

@@ -5,12 +5,13 @@
 //! * [`batch`]: reading curves (argument, file, stdin), limits, writing one answer per curve.
 //! * [`answers`]: each command's exact answer for one curve, as text and typed JSON.
 //! * [`commands`]: the commands with their own input and output (`prove`, `plot`, `surface`,
-//!   `spline`, `gallery`).
+//!   `gallery`); [`splines`]: the `spline` command (knot vectors, JSON Lines splines).
 
 mod answers;
 mod args;
 mod batch;
 mod commands;
+mod splines;
 
 use args::{Cli, Command};
 use batch::{Answer, MAX_TRIANGLE_DEGREE, Weights, batch, option_number, output_limit, rational_batch, rational_curve};
@@ -49,7 +50,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                 let t0 = t0.clone()?;
                 match w {
                     Weights::Polynomial => answers::subdivide(c, &t0, depth).map(Answer::from),
-                    _ if depth != 1 => Err(Error::InvalidArgument {
+                    _ if depth.is_some_and(|d| d != 1) => Err(Error::InvalidArgument {
                         message: "--depth is for polynomial curves; rational curves split once".into(),
                     }),
                     w => answers::subdivide_rational(&rational_curve(c, w)?, &t0).map(Answer::from),
@@ -80,7 +81,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Surface { op } => commands::surface(op, out),
         Command::Gallery { dir } => commands::gallery(&dir, out),
         Command::Plot(args) => commands::plot(args, out),
-        Command::Spline { op } => commands::spline(op, out),
+        Command::Spline { op } => splines::run(op, out),
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
         }
