@@ -1,23 +1,9 @@
 //! The `spline` command with knot vectors: clamped and multiple knots, JSON Lines batches,
 //! insertion, exact removal, elevation, evaluation, NURBS surfaces; and `subdivide --depth 1`.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
-fn run(args: &[&str], stdin: Option<&str>) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    if let Some(s) = stdin {
-        child.stdin.take().unwrap().write_all(s.as_bytes()).unwrap();
-    }
-    drop(child.stdin.take());
-    child.wait_with_output().unwrap()
-}
+mod common;
+use common::run;
+use std::process::Output;
 
 fn json_lines(o: &Output) -> Vec<serde_json::Value> {
     String::from_utf8(o.stdout.clone()).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect()

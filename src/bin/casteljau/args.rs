@@ -283,24 +283,18 @@ pub enum SplineOp {
     },
     /// Insert a knot (Boehm): the same curve with more control points.
     Insert {
-        /// The knot.
-        #[arg(long, allow_hyphen_values = true)]
-        knot: String,
-        /// How many times.
-        #[arg(long, default_value_t = 1)]
-        times: usize,
+        /// Which knot, how often.
+        #[command(flatten)]
+        knot: KnotArgs,
         /// The spline.
         #[command(flatten)]
         spline: SplineArgs,
     },
     /// Remove an interior knot exactly, only when the curve stays the same (exit 1 otherwise).
     Remove {
-        /// The knot.
-        #[arg(long, allow_hyphen_values = true)]
-        knot: String,
-        /// How many times.
-        #[arg(long, default_value_t = 1)]
-        times: usize,
+        /// Which knot, how often.
+        #[command(flatten)]
+        knot: KnotArgs,
         /// The spline.
         #[command(flatten)]
         spline: SplineArgs,
@@ -330,6 +324,17 @@ pub enum SplineOp {
         #[command(flatten)]
         curve: CurveArgs,
     },
+}
+
+/// A knot to insert or remove, and how many times.
+#[derive(Args, Debug)]
+pub struct KnotArgs {
+    /// The knot.
+    #[arg(long, allow_hyphen_values = true)]
+    pub knot: String,
+    /// How many times.
+    #[arg(long, default_value_t = 1)]
+    pub times: usize,
 }
 
 /// A rational spline: its degree, knots (or the seed's scale ratios) and weights.

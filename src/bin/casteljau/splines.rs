@@ -2,7 +2,7 @@
 //! JSON object per line) and each operation's text and JSON.
 
 use crate::answers::{weighted_json, weighted_text};
-use crate::args::{SplineArgs, SplineOp};
+use crate::args::{KnotArgs, SplineArgs, SplineOp};
 use crate::batch::{Answer, batch_lines, numbers, option_number, parse_weights};
 use casteljau::error::{Error, Position, Result};
 use casteljau::num::parse::{parse_number, parse_points};
@@ -319,11 +319,11 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
             let us: Result<Vec<BigRational>> = u.iter().map(|s| option_number("--u", s)).collect();
             batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&spline, line, text)?, &us.clone()?))
         }
-        SplineOp::Insert { knot, times, spline } => {
+        SplineOp::Insert { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
             batch_lines(&spline.curve, out, |line, text| insert(&spline_of(&spline, line, text)?, &u.clone()?, times))
         }
-        SplineOp::Remove { knot, times, spline } => {
+        SplineOp::Remove { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
             batch_lines(&spline.curve, out, |line, text| remove(&spline_of(&spline, line, text)?, &u.clone()?, times))
         }
