@@ -154,7 +154,7 @@ fn cli_help_documents_exit_codes() {
 #[test]
 fn cli_classify_json_schema_and_batch_order() {
     let input = "0 0 2 2 -1 2 1 0\n0 0 1 1 0 1 1 0\n0 0 1 1 x 1 1 0\n0 0 1 2 2 -1 3 1\n0 0 1 1 2 2 3 3\n0 0 1 2 2 0\n";
-    let o = run(&["classify", "--json"], Some(input));
+    let o = run(&["classify", "--json", "--detail", "full"], Some(input));
     assert_eq!(o.status.code(), Some(2));
     let v: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert_eq!(v.len(), 6);
@@ -348,4 +348,75 @@ fn cli_plot_and_gallery() {
     assert_eq!(o.status.code(), Some(0));
     assert!(dir.join("index.html").exists());
     std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// The fast default and `--detail full` agree on every field they share; only `full` carries
+/// the evidence (moving lines, canonical map, Loop–Blinn).
+#[test]
+fn cli_classify_default_and_full_detail_agree_on_shared_fields() {
+    let input = "0 0, 1 1, 0 1, 1 0\n0 0, 2 2, -1 2, 1 0\n0 0, 1 2, 2 -1, 3 1\n0 0, 3 3, 0 3, 3 0\n0 0, 1 1, 2 2, 3 3\n\
+                 0 0, 1 0, 1 0, 2 0\n0 0, 1 2, 2 0\n-1 -1, -1/3 1, 1/3 -1, 1 1\n0 0, 0 1, 1 1, 1 0\n5 7, -3 2, 8 -1, 0 4\n";
+    let basic = run(&["classify", "--json", "--float"], Some(input));
+    let full = run(&["classify", "--json", "--float", "--detail", "full"], Some(input));
+    let parse = |o: &std::process::Output| -> Vec<serde_json::Value> {
+        stdout(o).lines().map(|l| serde_json::from_str(l).unwrap()).collect()
+    };
+    let (b, f) = (parse(&basic), parse(&full));
+    assert_eq!(b.len(), 10);
+    for (b, f) in b.iter().zip(&f) {
+        let (b, f) = (b.as_object().unwrap(), f.as_object().unwrap());
+        for (k, v) in b {
+            assert_eq!(Some(v), f.get(k), "field {k}");
+        }
+        for k in ["moving_lines", "canonical", "loop_blinn"] {
+            assert!(!b.contains_key(k));
+        }
+        let extra: Vec<&String> = f.keys().filter(|k| !b.contains_key(*k)).collect();
+        assert!(extra.iter().all(|k| ["moving_lines", "canonical", "loop_blinn"].contains(&k.as_str())), "{extra:?}");
+    }
+    assert!(f[0].get("canonical").is_some());
+}
+
+/// Streamed batches: one bad byte spoils only its line; a byte-order mark and CRLF are fine;
+/// the answers keep input order on any number of threads; text-mode errors name the line.
+#[test]
+fn cli_batch_streaming_per_line_errors_and_thread_independent_order() {
+    let mut input: Vec<u8> = b"\xEF\xBB\xBF0 0, 1 1\r\n".to_vec();
+    input.extend_from_slice(b"0 0, \xFF 1\n");
+    for k in 0..5000 {
+        input.extend_from_slice(format!("0 {k}, 1 1, 2 {}\n", k % 7).as_bytes());
+    }
+    let run_bytes = |args: &[&str]| {
+        use std::io::Write;
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau"))
+            .args(args)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut stdin = child.stdin.take().unwrap();
+        let data = input.clone();
+        let writer = std::thread::spawn(move || stdin.write_all(&data).unwrap());
+        let out = child.wait_with_output().unwrap();
+        writer.join().unwrap();
+        out
+    };
+    let one = run_bytes(&["eval", "--json", "--t", "1/3", "--threads", "1"]);
+    let two = run_bytes(&["eval", "--json", "--t", "1/3", "--threads", "2"]);
+    assert_eq!(one.status.code(), Some(2));
+    assert_eq!(one.stdout, two.stdout);
+    let lines: Vec<serde_json::Value> =
+        String::from_utf8(one.stdout).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 5002);
+    assert_eq!(lines[0]["values"][0]["point"], serde_json::json!(["1/3", "1/3"]));
+    assert_eq!(lines[1]["line"], 2);
+    assert!(lines[1]["error"].as_str().unwrap().contains("not UTF-8"), "{}", lines[1]);
+    assert!(lines.iter().enumerate().skip(2).all(|(i, v)| v["line"] == i + 1));
+    let text = run_bytes(&["eval", "--t", "1/3"]);
+    assert!(
+        String::from_utf8_lossy(&text.stderr).contains("line 2: not UTF-8"),
+        "{}",
+        String::from_utf8_lossy(&text.stderr)
+    );
 }

@@ -301,26 +301,11 @@ impl Identity {
         let diff = Expr::Bin('-', Box::new(lhs), Box::new(rhs));
         let params: Vec<_> = c.params.iter().map(|p| parse_param(p)).collect::<Result<_>>()?;
         let envs = instances(&params)?;
-        let results: Vec<Result<Instance>> = std::thread::scope(|scope| {
-            let workers = std::thread::available_parallelism().map_or(1, |n| n.get()).min(envs.len().max(1));
-            // interleaved: instance i goes to worker i mod workers (instances grow along the list)
-            let handles: Vec<_> = (0..workers)
-                .map(|w| {
-                    let (diff, vars, envs) = (&diff, &c.vars, &envs);
-                    scope.spawn(move || {
-                        envs.iter()
-                            .enumerate()
-                            .skip(w)
-                            .step_by(workers)
-                            .map(|(i, env)| (i, identity_instance(diff, vars, env)))
-                            .collect::<Vec<_>>()
-                    })
-                })
-                .collect();
-            let mut all: Vec<_> = handles.into_iter().flat_map(|h| h.join().expect("worker finished")).collect();
-            all.sort_by_key(|(i, _)| *i);
-            all.into_iter().map(|(_, r)| r).collect()
-        });
+        // instances are independent: rayon shares the cores with the other claims being checked
+        let results: Vec<Result<Instance>> = {
+            use rayon::prelude::*;
+            envs.par_iter().map(|env| identity_instance(&diff, &c.vars, env)).collect()
+        };
         let mut points = 0;
         let mut largest: Vec<usize> = vec![];
         for (env, r) in envs.iter().zip(results) {

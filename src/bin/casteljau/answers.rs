@@ -167,9 +167,10 @@ struct FloatApproximations {
     double_point: Option<Vec<f64>>,
 }
 
-pub(crate) fn classify(c: &BezierCurve<BigRational>, float: bool) -> Result<(String, Value)> {
+/// `classify`: the exact classification; with `full`, the cubic's evidence too.
+pub(crate) fn classify(c: &BezierCurve<BigRational>, float: bool, full: bool) -> Result<(String, Value)> {
     let k = casteljau::classify::classify(c)?;
-    let evidence = casteljau::classify::evidence::cubic_evidence(c, &k)?;
+    let evidence = if full { casteljau::classify::evidence::cubic_evidence(c, &k)? } else { None };
     let floats = |ps: &[casteljau::classify::Parameter]| ps.iter().map(|p| p.to_f64()).collect();
     let float_json = float.then(|| FloatApproximations {
         double_point_parameters: floats(&k.double_point_parameters),

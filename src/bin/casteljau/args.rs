@@ -100,6 +100,11 @@ pub enum Command {
         /// Also print f64 approximations of the exact parameters.
         #[arg(long)]
         float: bool,
+        /// `basic` (default): class, node type, double point, exact parameters, segment
+        /// features. `full` adds the evidence of cubics: the seed's moving lines with their
+        /// proof `P·L ≡ 0`, the proved canonical map and the Loop–Blinn cross-check (slow).
+        #[arg(long, value_enum, default_value_t = Detail::Basic)]
+        detail: Detail,
         /// A rational cubic (classified projectively).
         #[command(flatten)]
         rational: RationalArgs,
@@ -236,6 +241,15 @@ pub struct PatchArgs {
     /// The control net, row-major, and output form (3D by default).
     #[command(flatten)]
     pub curve: CurveArgs,
+}
+
+/// How much `classify` computes.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Detail {
+    /// What users decide with: exact classification and parameters.
+    Basic,
+    /// Also the moving lines, the proved canonical map and the Loop–Blinn cross-check.
+    Full,
 }
 
 /// How `--knots` and `--ratios` describe a spline (shown by `spline --help`).
@@ -416,6 +430,12 @@ pub struct ProveArgs {
     /// Regenerate the catalogue's README (default proofs/README.md) from this run.
     #[arg(long, num_args = 0..=1, default_missing_value = "proofs/README.md")]
     pub write_readme: Option<std::path::PathBuf>,
+    /// Threads checking claims (0: all cores); the report keeps the catalogue's order.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No progress line on a terminal.
+    #[arg(long, short)]
+    pub quiet: bool,
 }
 
 /// Weights of a rational curve (for eval, subdivide, elevate, implicit, conic, classify).
@@ -444,4 +464,10 @@ pub struct CurveArgs {
     /// JSON Lines output with exact strings.
     #[arg(long)]
     pub json: bool,
+    /// Threads answering a batch (0: all cores). Output stays in input order.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No progress line on a terminal.
+    #[arg(long, short)]
+    pub quiet: bool,
 }

@@ -11,8 +11,9 @@ use casteljau::num::parse::{parse_number, parse_numbers, parse_points};
 use casteljau::num::point::Point;
 use casteljau::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
+use rayon::prelude::*;
 use serde_json::{Value, json};
-use std::io::{BufRead, Read, Write};
+use std::io::{BufRead, IsTerminal, Read, Write};
 
 /// The numbers of an option such as `--ratios`, errors prefixed with the option's name.
 pub fn numbers(option: &str, text: &str) -> Result<Vec<BigRational>> {
@@ -116,16 +117,13 @@ pub fn output_limit(what: &'static str, value: usize, limit: usize) -> Result<()
     if value > limit { Err(Error::TooLarge { what, value, limit }) } else { Ok(()) }
 }
 
-/// Largest batch input, in bytes.
-pub const MAX_INPUT_BYTES: u64 = 256 * 1024 * 1024;
-
 /// [`batch`] for commands that accept rational curves: parses `--weights` once and reads points
 /// with one more coordinate under `--homogeneous`.
 pub fn rational_batch(
     rational: &RationalArgs,
     mut curve: CurveArgs,
     out: &mut dyn Write,
-    f: impl Fn(&BezierCurve<BigRational>, Weights<'_>) -> Result<Answer>,
+    f: impl Fn(&BezierCurve<BigRational>, Weights<'_>) -> Result<Answer> + Sync,
 ) -> i32 {
     let weights = match parse_weights(rational) {
         Ok(w) => w,
@@ -155,7 +153,11 @@ pub fn option_number(option: &str, s: &str) -> Result<BigRational> {
 }
 
 /// Reads the curves (argument, file, or stdin) and answers each; exit 2 if any line was bad.
-pub fn batch(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer>) -> i32 {
+pub fn batch(
+    args: &CurveArgs,
+    out: &mut dyn Write,
+    f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer> + Sync,
+) -> i32 {
     batch_lines(args, out, |line, text| {
         parse_points(text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c))
     })
@@ -163,83 +165,177 @@ pub fn batch(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(&BezierCurve<BigR
 
 /// [`batch`] on the raw text of each input line (for inputs that are not a control polygon,
 /// such as JSON Lines splines): `f` gets the line number and the text.
-pub fn batch_lines(args: &CurveArgs, out: &mut dyn Write, f: impl Fn(Option<usize>, &str) -> Result<Answer>) -> i32 {
+///
+/// Input is streamed: lines are read in chunks of [`CHUNK_LINES`], each chunk is answered on
+/// `--threads` cores (rayon; one thread answers in order without it) and written in input
+/// order before the next chunk is read, so memory is bounded by the chunk, not the input.
+pub fn batch_lines(
+    args: &CurveArgs,
+    out: &mut dyn Write,
+    f: impl Fn(Option<usize>, &str) -> Result<Answer> + Sync,
+) -> i32 {
     if args.dim == 0 || args.dim > MAX_DIM {
         eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
         return 2;
     }
-    let inputs: Vec<(Option<usize>, String)> = match (&args.curve, &args.input) {
-        (Some(_), Some(_)) => {
-            eprintln!("casteljau: give a curve or --input, not both");
+    let pool = match rayon::ThreadPoolBuilder::new().num_threads(args.threads).build() {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("casteljau: cannot start {} threads: {e}", args.threads);
             return 2;
         }
-        (Some(c), None) => vec![(None, c.clone())],
-        (None, source) => match read_lines(source.as_deref()) {
-            Ok(lines) => lines,
-            Err(e) => {
-                eprintln!("casteljau: {e}");
+    };
+    let sequential = pool.current_num_threads() == 1;
+    let answer = |(line, text): &(Option<usize>, std::result::Result<String, String>)| -> Result<Answer> {
+        match text {
+            Ok(t) => f(*line, t),
+            Err(e) => Err(Error::InvalidArgument { message: e.clone() }),
+        }
+    };
+    let mut source: Box<dyn Iterator<Item = (Option<usize>, std::result::Result<String, String>)>> =
+        match (&args.curve, &args.input) {
+            (Some(_), Some(_)) => {
+                eprintln!("casteljau: give a curve or --input, not both");
                 return 2;
             }
-        },
-    };
+            (Some(c), None) => Box::new(std::iter::once((None, Ok(c.clone())))),
+            (None, source) => match Lines::open(source.as_deref()) {
+                Ok(lines) => Box::new(lines),
+                Err(e) => {
+                    eprintln!("casteljau: {e}");
+                    return 2;
+                }
+            },
+        };
+    let progress = args.input.is_some() && !args.quiet && std::io::stderr().is_terminal();
     let mut code = 0;
     let mut failed = false;
-    for (line, text) in inputs {
-        let answer = f(line, &text);
-        let written = match answer {
-            Ok(Answer { text, json: mut value, failed: f }) => {
-                failed |= f;
-                if args.json {
-                    if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
-                        obj.insert("line".into(), json!(l));
-                    }
-                    writeln!(out, "{value}")
-                } else {
-                    writeln!(out, "{text}")
-                }
-            }
-            Err(e) => {
-                code = 2;
-                let e = match (e, line) {
-                    (Error::EmptyCurve { .. }, l) => Error::EmptyCurve { line: l },
-                    (e, _) => e,
-                };
-                if args.json {
-                    writeln!(out, "{}", json!({"line": line, "error": e.to_string()}))
-                } else {
-                    eprintln!("casteljau: {e}");
-                    Ok(())
-                }
-            }
-        };
-        if written.is_err() {
-            return code.max(2); // stdout closed (e.g. a pipe): stop quietly
+    let mut done = 0usize;
+    loop {
+        let chunk: Vec<_> = source.by_ref().take(CHUNK_LINES).collect();
+        if chunk.is_empty() {
+            break;
         }
+        let answers: Vec<Result<Answer>> = if sequential {
+            chunk.iter().map(answer).collect()
+        } else {
+            pool.install(|| chunk.par_iter().map(answer).collect())
+        };
+        for ((line, _), result) in chunk.iter().zip(answers) {
+            let line = *line;
+            let written = match result {
+                Ok(Answer { text, json: mut value, failed: f }) => {
+                    failed |= f;
+                    if args.json {
+                        if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
+                            obj.insert("line".into(), json!(l));
+                        }
+                        writeln!(out, "{value}")
+                    } else {
+                        writeln!(out, "{text}")
+                    }
+                }
+                Err(e) => {
+                    code = 2;
+                    let e = match (e, line) {
+                        (Error::EmptyCurve { .. }, l) => Error::EmptyCurve { line: l },
+                        (e, _) => e,
+                    };
+                    if args.json {
+                        writeln!(out, "{}", json!({"line": line, "error": e.to_string()}))
+                    } else {
+                        match line {
+                            Some(l) if !e.to_string().contains("line ") => eprintln!("casteljau: line {l}: {e}"),
+                            _ => eprintln!("casteljau: {e}"),
+                        }
+                        Ok(())
+                    }
+                }
+            };
+            if written.is_err() {
+                return code.max(2); // stdout closed (e.g. a pipe): stop quietly
+            }
+        }
+        done += chunk.len();
+        if progress {
+            eprint!("\r\x1b[K{done} lines");
+        }
+    }
+    if progress {
+        eprint!("\r\x1b[K");
     }
     if code == 0 && failed { 1 } else { code }
 }
 
-fn read_lines(source: Option<&str>) -> std::result::Result<Vec<(Option<usize>, String)>, String> {
-    let mut text = String::new();
-    let read = match source {
-        None | Some("-") => std::io::stdin().lock().take(MAX_INPUT_BYTES + 1).read_to_string(&mut text),
-        Some(path) => std::fs::File::open(path)
-            .map_err(|e| format!("cannot open {path}: {e}"))?
-            .take(MAX_INPUT_BYTES + 1)
-            .read_to_string(&mut text),
-    };
-    read.map_err(|e| format!("cannot read input: {e}"))?;
-    if text.len() as u64 > MAX_INPUT_BYTES {
-        return Err(format!("input larger than {MAX_INPUT_BYTES} bytes"));
+/// Lines per chunk of a streamed batch.
+pub const CHUNK_LINES: usize = 4096;
+
+/// Longest accepted input line, in bytes.
+pub const MAX_LINE_BYTES: usize = 16 * 1024 * 1024;
+
+/// The batch lines of a file or stdin, streamed: `(line number, text)` for every line that is
+/// not blank or a `#` comment; a line that is not UTF-8 or longer than [`MAX_LINE_BYTES`] is an
+/// error for that line only. A UTF-8 byte-order mark and CRLF line endings are accepted.
+struct Lines {
+    reader: Box<dyn BufRead>,
+    number: usize,
+}
+
+impl Lines {
+    fn open(source: Option<&str>) -> std::result::Result<Self, String> {
+        let reader: Box<dyn BufRead> = match source {
+            None | Some("-") => Box::new(std::io::BufReader::new(std::io::stdin())),
+            Some(path) => Box::new(std::io::BufReader::new(
+                std::fs::File::open(path).map_err(|e| format!("cannot open {path}: {e}"))?,
+            )),
+        };
+        Ok(Lines { reader, number: 0 })
     }
-    Ok(text
-        .as_bytes()
-        .lines()
-        .enumerate()
-        .filter_map(|(i, l)| {
-            let l = l.ok()?;
-            let trimmed = l.trim();
-            (!trimmed.is_empty() && !trimmed.starts_with('#')).then(|| (Some(i + 1), l))
-        })
-        .collect())
+}
+
+impl Iterator for Lines {
+    type Item = (Option<usize>, std::result::Result<String, String>);
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            let mut buf = Vec::new();
+            let read = (&mut self.reader).take(MAX_LINE_BYTES as u64 + 1).read_until(b'\n', &mut buf);
+            match read {
+                Ok(0) => return None,
+                Ok(_) => {}
+                Err(e) => {
+                    self.number += 1;
+                    return Some((Some(self.number), Err(format!("cannot read input: {e}"))));
+                }
+            }
+            self.number += 1;
+            if buf.len() > MAX_LINE_BYTES && buf.last() != Some(&b'\n') {
+                // skip the rest of the over-long line
+                let mut rest = Vec::new();
+                while self.reader.read_until(b'\n', &mut rest).is_ok_and(|n| n > 0) {
+                    if rest.last() == Some(&b'\n') {
+                        break;
+                    }
+                    rest.clear();
+                }
+                return Some((Some(self.number), Err(format!("line longer than {MAX_LINE_BYTES} bytes"))));
+            }
+            if self.number == 1 && buf.starts_with(&[0xEF, 0xBB, 0xBF]) {
+                buf.drain(..3);
+            }
+            let text = match String::from_utf8(buf) {
+                Ok(t) => t,
+                Err(e) => {
+                    return Some((
+                        Some(self.number),
+                        Err(format!("not UTF-8 (byte {} of the line)", e.utf8_error().valid_up_to() + 1)),
+                    ));
+                }
+            };
+            let trimmed = text.trim();
+            if trimmed.is_empty() || trimmed.starts_with('#') {
+                continue;
+            }
+            return Some((Some(self.number), Ok(text.trim_end_matches(['\n', '\r']).to_string())));
+        }
+    }
 }

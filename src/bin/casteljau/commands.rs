@@ -11,7 +11,7 @@ use std::io::Write;
 pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
     let run_patch = |mut patch: PatchArgs,
                      out: &mut dyn Write,
-                     f: &dyn Fn(&casteljau::surface::RationalPatch) -> Result<Answer>| {
+                     f: &(dyn Fn(&casteljau::surface::RationalPatch) -> Result<Answer> + Sync)| {
         if patch.curve.dim == 2 {
             patch.curve.dim = 3; // patches are 3D unless --dim says otherwise
         }
@@ -79,12 +79,13 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
         })
     })();
     use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational};
-    use std::cell::RefCell;
-    let fig = RefCell::new(Figure::new().grid(grid));
+    use std::sync::Mutex;
+    let fig = Mutex::new(Figure::new().grid(grid));
     if let Some(t) = &title {
-        fig.replace_with(|f| std::mem::take(f).title(t));
+        let f = std::mem::take(&mut *fig.lock().expect("figure"));
+        *fig.lock().expect("figure") = f.title(t);
     }
-    let count = RefCell::new(0usize);
+    let count = Mutex::new(0usize);
     // parse "wI=a,b,c"
     let family = match family.as_deref().map(|f| {
         let (name, values) = f
@@ -105,28 +106,36 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
         None => None,
     };
     let mut sink: Vec<u8> = Vec::new();
+    // one thread: the curves are drawn in input order (colours and the SVG are deterministic)
+    let mut curve = curve;
+    curve.threads = 1;
     let code = rational_batch(&rational, curve, &mut sink, |c, w| {
         let opts = opts.clone()?;
-        let k = *count.borrow();
+        let k = *count.lock().expect("count");
         let color = PALETTE[k % PALETTE.len()];
         match (w, &family) {
-            (Weights::Polynomial, None) => draw_curve(&mut fig.borrow_mut(), c, &opts, color)?,
-            (w, None) => draw_rational(&mut fig.borrow_mut(), &rational_curve(c, w)?, color, opts.polygon),
+            (Weights::Polynomial, None) => draw_curve(&mut fig.lock().expect("figure"), c, &opts, color)?,
+            (w, None) => draw_rational(&mut fig.lock().expect("figure"), &rational_curve(c, w)?, color, opts.polygon),
             (w, Some((i, values))) => {
                 let base = rational_curve(c, w)?;
                 for (j, v) in values.iter().enumerate() {
                     let member = base.with_weight(*i, v.clone())?;
-                    draw_rational(&mut fig.borrow_mut(), &member, PALETTE[j % PALETTE.len()], j == 0 && opts.polygon);
+                    draw_rational(
+                        &mut fig.lock().expect("figure"),
+                        &member,
+                        PALETTE[j % PALETTE.len()],
+                        j == 0 && opts.polygon,
+                    );
                 }
             }
         }
-        *count.borrow_mut() += 1;
+        *count.lock().expect("count") += 1;
         Ok(Answer { text: String::new(), json: Value::Null, failed: false })
     });
     if code == 2 {
         return 2;
     }
-    let svg = fig.into_inner().to_svg(width);
+    let svg = fig.into_inner().expect("figure").to_svg(width);
     match output {
         Some(path) => {
             if let Err(e) = std::fs::write(&path, svg) {
@@ -168,20 +177,40 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
         }
     };
     let claims: Vec<_> = claims.into_iter().filter(|c| filter.is_none_or(|f| c.id.contains(f))).collect();
-    let progress = std::io::stderr().is_terminal() && !json_out;
+    let progress = std::io::stderr().is_terminal() && !json_out && !args.quiet;
     let (mut passed, mut failed, mut malformed) = (0, 0, 0);
-    let mut results = Vec::new();
-    for (k, c) in claims.iter().enumerate() {
-        if progress {
-            eprint!("\r\x1b[K[{}/{}] {}", k + 1, claims.len(), c.id);
+    // claims are independent: check them on all cores, report in catalogue order
+    let finished = std::sync::atomic::AtomicUsize::new(0);
+    let pool = match rayon::ThreadPoolBuilder::new().num_threads(args.threads).build() {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("casteljau: cannot start {} threads: {e}", args.threads);
+            return 2;
         }
-        let r = match catalogue::check(c) {
+    };
+    let checked: Vec<_> = pool.install(|| {
+        use rayon::prelude::*;
+        claims
+            .par_iter()
+            .map(|c| {
+                let r = catalogue::check(c);
+                let k = finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                if progress {
+                    eprint!("\r\x1b[K[{k}/{}] {}", claims.len(), c.id);
+                }
+                r
+            })
+            .collect()
+    });
+    if progress {
+        eprint!("\r\x1b[K");
+    }
+    let mut results = Vec::new();
+    for r in checked {
+        let r = match r {
             Ok(r) => r,
             Err(e) => {
                 malformed += 1;
-                if progress {
-                    eprint!("\r\x1b[K");
-                }
                 eprintln!("casteljau: {e}");
                 continue;
             }
@@ -204,9 +233,6 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
                 r.detail
             )
         };
-        if progress {
-            eprint!("\r\x1b[K");
-        }
         if writeln!(out, "{line}").is_err() {
             return 2;
         }

@@ -24,7 +24,7 @@ use std::io::Write;
 fn main() {
     let cli = Cli::parse();
     let stdout = std::io::stdout();
-    let mut out = stdout.lock();
+    let mut out = std::io::BufWriter::new(stdout.lock());
     let code = run(cli, &mut out);
     let _ = out.flush();
     std::process::exit(code);
@@ -95,9 +95,11 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         }
         Command::Derivative { order, curve } => batch(&curve, out, |c| Ok(answers::derivative(c, order).into())),
         Command::Reduce { curve } => batch(&curve, out, |c| Ok(answers::reduce(c).into())),
-        Command::Classify { float, rational, curve } => rational_batch(&rational, curve, out, move |c, w| match w {
-            Weights::Polynomial => answers::classify(c, float).map(Answer::from),
-            w => answers::classify_weighted(&rational_curve(c, w)?).map(Answer::from),
-        }),
+        Command::Classify { float, detail, rational, curve } => {
+            rational_batch(&rational, curve, out, move |c, w| match w {
+                Weights::Polynomial => answers::classify(c, float, detail == args::Detail::Full).map(Answer::from),
+                w => answers::classify_weighted(&rational_curve(c, w)?).map(Answer::from),
+            })
+        }
     }
 }
