@@ -132,7 +132,22 @@ impl fmt::Display for Error {
                 "the weights make the curve undefined: the denominator vanishes at a t in the interval ({a}, {b})"
             ),
             Error::Expression { text, column, message } => {
-                write!(f, "in expression {text:?}, column {column}: {message}")
+                // a long expression is shortened around the column
+                let chars: Vec<char> = text.chars().collect();
+                if chars.len() <= 80 {
+                    write!(f, "in expression {text:?}, column {column}: {message}")
+                } else {
+                    let at = column.saturating_sub(1).min(chars.len());
+                    let (a, b) = (at.saturating_sub(30), (at + 30).min(chars.len()));
+                    let part: String = chars[a..b].iter().collect();
+                    write!(
+                        f,
+                        "in expression of {} characters, near {}{part:?}{}, column {column}: {message}",
+                        chars.len(),
+                        if a > 0 { "…" } else { "" },
+                        if b < chars.len() { "…" } else { "" }
+                    )
+                }
             }
             Error::ClaimFile { file, line: Some(l), message } => write!(f, "{file}:{l}: {message}"),
             Error::ClaimFile { file, line: None, message } => write!(f, "{file}: {message}"),

@@ -90,8 +90,8 @@ fn surface_three_evaluations_subdivision_elevation_iso_curves() {
     let p = patch();
     assert_eq!(p.degree(), (2, 3));
     let grid: Vec<BigRational> = (0..=6).map(|k| ratio(k, 6)).collect();
-    let (lu, ru) = p.subdivide_u(&ratio(1, 3));
-    let (lv, rv) = p.subdivide_v(&ratio(2, 5));
+    let (lu, ru) = p.subdivide_u(&ratio(1, 3)).unwrap();
+    let (lv, rv) = p.subdivide_v(&ratio(2, 5)).unwrap();
     let e = p.elevate(1, 2).unwrap();
     assert_eq!(e.degree(), (3, 5));
     for u in &grid {
@@ -100,8 +100,8 @@ fn surface_three_evaluations_subdivision_elevation_iso_curves() {
             assert_eq!(p.eval_u_then_v(u, v).unwrap(), s);
             assert_eq!(p.eval_v_then_u(u, v).unwrap(), s);
             assert_eq!(e.eval(u, v).unwrap(), s);
-            assert_eq!(p.iso_u(u).eval(v).unwrap(), s);
-            assert_eq!(p.iso_v(v).eval(u).unwrap(), s);
+            assert_eq!(p.iso_u(u).unwrap().eval(v).unwrap(), s);
+            assert_eq!(p.iso_v(v).unwrap().eval(u).unwrap(), s);
             assert_eq!(lu.eval(u, v).unwrap(), p.eval(&(ratio(1, 3) * u), v).unwrap());
             assert_eq!(ru.eval(u, v).unwrap(), p.eval(&(ratio(1, 3) + ratio(2, 3) * u), v).unwrap());
             assert_eq!(lv.eval(u, v).unwrap(), p.eval(u, &(ratio(2, 5) * v)).unwrap());

@@ -156,7 +156,7 @@ impl RationalSubdivision {
         let c = self;
         let r = rational_curve(c.curve.as_deref(), c.weights.as_deref(), c.homogeneous.as_deref())?;
         let t0 = num(&c.t)?;
-        let (l, rt) = r.subdivide(&t0);
+        let (l, rt) = r.subdivide(&t0)?;
         let n = r.degree();
         // the halves are rational of type ≤ (n, n) in s: 2n + 1 parameters decide each
         let ts = parameters_where(2 * n + 1, |s| {

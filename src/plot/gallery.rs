@@ -55,7 +55,10 @@ fn draw_patch(f: &mut Figure, p: &RationalPatch, color: &str, contours: &[BigRat
     let steps = 4;
     for k in 0..=steps {
         let s = BigRational::new(k.into(), steps.into());
-        for iso in [p.iso_u(&s), p.iso_v(&s)] {
+        for iso in [
+            p.iso_u(&s).expect("the gallery patch has iso-curves"),
+            p.iso_v(&s).expect("the gallery patch has iso-curves"),
+        ] {
             let eval = |t: &BigRational| iso.eval(t).ok().map(|q| project(&q));
             let width = if k == 0 || k == steps { 1.6 } else { 0.6 };
             for run in sample(&eval, &crate::plot::breaks([]), 1.0) {

@@ -55,6 +55,15 @@ pub enum EvalError {
     Invalid(String),
 }
 
+impl std::fmt::Display for EvalError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            EvalError::DivisionByZero => f.write_str("division by zero"),
+            EvalError::Invalid(m) => f.write_str(m),
+        }
+    }
+}
+
 /// A name → value binding list (few names: a linear scan is fastest).
 pub type Env = Vec<(String, Rational)>;
 
@@ -66,6 +75,36 @@ struct Parser<'a> {
     text: &'a str,
     chars: Vec<(usize, char)>,
     pos: usize,
+    depth: usize,
+}
+
+/// Deepest accepted expression tree (parentheses, calls, unary minus, powers and chains of
+/// `+ − * /` all count): parsing, degree bounds and evaluation recurse on the tree, so a bound
+/// keeps them within any thread's stack. Deeper input is an error naming the column.
+pub const MAX_EXPR_DEPTH: usize = 400;
+
+/// The depth of an expression tree, without recursion.
+fn tree_depth(e: &Expr) -> usize {
+    let mut max = 0;
+    let mut stack = vec![(e, 1usize)];
+    while let Some((e, d)) = stack.pop() {
+        max = max.max(d);
+        match e {
+            Expr::Num(_) | Expr::Var(_) => {}
+            Expr::Neg(a) => stack.push((a, d + 1)),
+            Expr::Bin(_, a, b) | Expr::Pow(a, b) | Expr::Binom(a, b) => {
+                stack.push((a, d + 1));
+                stack.push((b, d + 1));
+            }
+            Expr::Bern(a, b, c) => {
+                stack.extend([(a.as_ref(), d + 1), (b.as_ref(), d + 1), (c.as_ref(), d + 1)]);
+            }
+            Expr::Fold(_, _, a, b, c) => {
+                stack.extend([(a.as_ref(), d + 1), (b.as_ref(), d + 1), (c.as_ref(), d + 1)]);
+            }
+        }
+    }
+    max
 }
 
 /// Parses an expression.
@@ -81,11 +120,21 @@ struct Parser<'a> {
 /// # let _ = e;
 /// ```
 pub fn parse_expr(text: &str) -> Result<Expr> {
-    let mut p = Parser { text, chars: text.char_indices().collect(), pos: 0 };
+    let mut p = Parser { text, chars: text.char_indices().collect(), pos: 0, depth: 0 };
     let e = p.expr()?;
     p.skip_ws();
     if p.pos < p.chars.len() {
         return Err(p.error(&format!("unexpected {:?}", p.chars[p.pos].1)));
+    }
+    let depth = tree_depth(&e);
+    if depth > MAX_EXPR_DEPTH {
+        return Err(Error::Expression {
+            text: text.to_string(),
+            column: 1,
+            message: format!(
+                "the expression is {depth} levels deep, more than {MAX_EXPR_DEPTH} (write long sums with sum(r, a, b, e))"
+            ),
+        });
     }
     Ok(e)
 }
@@ -115,6 +164,15 @@ impl Parser<'_> {
         if self.eat(c) { Ok(()) } else { Err(self.error(&format!("expected {c:?}"))) }
     }
     fn expr(&mut self) -> Result<Expr> {
+        self.depth += 1;
+        if self.depth > MAX_EXPR_DEPTH {
+            return Err(self.error(&format!("nested more than {MAX_EXPR_DEPTH} levels deep")));
+        }
+        let e = self.sum();
+        self.depth -= 1;
+        e
+    }
+    fn sum(&mut self) -> Result<Expr> {
         let mut e = self.term()?;
         while let Some(op @ ('+' | '-')) = self.peek() {
             self.pos += 1;
@@ -131,6 +189,15 @@ impl Parser<'_> {
         Ok(e)
     }
     fn unary(&mut self) -> Result<Expr> {
+        self.depth += 1;
+        if self.depth > MAX_EXPR_DEPTH {
+            return Err(self.error(&format!("nested more than {MAX_EXPR_DEPTH} levels deep")));
+        }
+        let e = self.unary_inner();
+        self.depth -= 1;
+        e
+    }
+    fn unary_inner(&mut self) -> Result<Expr> {
         if self.eat('-') {
             return Ok(Expr::Neg(Box::new(self.unary()?)));
         }

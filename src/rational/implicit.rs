@@ -62,7 +62,7 @@ pub fn total_degree(f: &Expr, vars: &[&str]) -> Result<usize> {
     }
     let (num, den) = scale(f, vars)
         .degree("__lambda", &mut Env::new())
-        .map_err(|e| Error::InvalidArgument { message: format!("{e:?}") })?;
+        .map_err(|e| Error::InvalidArgument { message: format!("the polynomial: {e}") })?;
     if den > 0 {
         return Err(Error::InvalidArgument {
             message: "the implicit equation must be a polynomial (no division by x, y, z)".into(),
@@ -112,7 +112,8 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
             let Ok(point) = eval(&t) else { continue };
             let mut env: Env =
                 vars.iter().zip(&point.coords).map(|(n, v)| (n.to_string(), Rational(v.clone()))).collect();
-            let value = f.eval(&mut env).map_err(|e| Error::InvalidArgument { message: format!("{e:?}") })?;
+            let value =
+                f.eval(&mut env).map_err(|e| Error::InvalidArgument { message: format!("the polynomial: {e}") })?;
             if !value.is_zero() {
                 return Ok(ImplicitOutcome::Counterexample { t, point, value: value.0 });
             }

@@ -198,9 +198,9 @@ impl<S: Scalar> RationalBezier<S> {
     /// Splits at `t0`: the rational halves for `[0, t0]` and `[t0, 1]` (seed 002 §2.3: control
     /// points `P0, Pa, Pd, P` and `P, Pe, Pc, P3` with their weights), from the homogeneous
     /// de Casteljau triangle.
-    pub fn subdivide(&self, t0: &S) -> (Self, Self) {
+    pub fn subdivide(&self, t0: &S) -> Result<(Self, Self)> {
         let (l, r) = crate::curve::casteljau::subdivide(&self.homogeneous, t0);
-        (RationalBezier { homogeneous: l }, RationalBezier { homogeneous: r })
+        Ok((Self::from_homogeneous(l.points().to_vec())?, Self::from_homogeneous(r.points().to_vec())?))
     }
 
     /// Degree elevation by `r` (homogeneous elevation).
@@ -208,7 +208,7 @@ impl<S: Scalar> RationalBezier<S> {
     /// # Errors
     /// As [`BezierCurve::elevate`].
     pub fn elevate(&self, r: usize) -> Result<Self> {
-        Ok(RationalBezier { homogeneous: self.homogeneous.elevate(r)? })
+        Self::from_homogeneous(self.homogeneous.elevate(r)?.points().to_vec())
     }
 
     /// One degree elevation by seed 002 (22): `P'_i = 𝒱[(n+1−i)·w_i : i·w_{i−1}](P_{i−1}, P_i)`,

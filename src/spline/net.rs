@@ -338,7 +338,8 @@ fn joins(p: &RationalPatch, q: &RationalPatch, l: &BigRational, l1: &BigRational
     let count = 2 * (order + 1) * n + 1;
     (0..count).all(|k| {
         let v = BigRational::new((k as i64).into(), ((count.max(2) - 1) as i64).into());
-        let (dp, dq) = (p.iso_v(&v).derivatives_at(&rat(1), order), q.iso_v(&v).derivatives_at(&rat(0), order));
+        let dp = p.iso_v(&v).and_then(|c| c.derivatives_at(&rat(1), order));
+        let dq = q.iso_v(&v).and_then(|c| c.derivatives_at(&rat(0), order));
         match (dp, dq) {
             (Ok(dp), Ok(dq)) => (0..=order).all(|r| {
                 dp[r].scale(&crate::poly::bernstein::pow(l1, r)) == dq[r].scale(&crate::poly::bernstein::pow(l, r))

@@ -209,8 +209,8 @@ impl NurbsSurface {
                 for b in 0..=q {
                     let v = frac(b, q);
                     joins_proved &= joins_with_order(
-                        &left.patch.iso_v(&v),
-                        &right.patch.iso_v(&v),
+                        &left.patch.iso_v(&v)?,
+                        &right.patch.iso_v(&v)?,
                         &len(&left.span_u),
                         &len(&right.span_u),
                         order as usize,
@@ -232,8 +232,8 @@ impl NurbsSurface {
                 for a in 0..=p {
                     let u = frac(a, p);
                     joins_proved &= joins_with_order(
-                        &left.patch.iso_u(&u),
-                        &right.patch.iso_u(&u),
+                        &left.patch.iso_u(&u)?,
+                        &right.patch.iso_u(&u)?,
                         &len(&left.span_v),
                         &len(&right.span_v),
                         order as usize,

@@ -347,11 +347,11 @@ impl RationalPatch {
     ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
     /// ).unwrap();
     /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// assert_eq!(s.iso_u(&u).eval(&v).unwrap(), s.eval(&u, &v).unwrap());
+    /// assert_eq!(s.iso_u(&u).unwrap().eval(&v).unwrap(), s.eval(&u, &v).unwrap());
     /// ```
-    pub fn iso_u(&self, u0: &BigRational) -> RationalBezier<BigRational> {
+    pub fn iso_u(&self, u0: &BigRational) -> Result<RationalBezier<BigRational>> {
         let n = self.degree().1;
-        Self::curve((0..=n).map(|j| Self::curve(self.column(j)).eval_homogeneous(u0)).collect())
+        RationalBezier::from_homogeneous((0..=n).map(|j| Self::curve(self.column(j)).eval_homogeneous(u0)).collect())
     }
 
     /// The iso-parameter curve `u ↦ S(u, v0)` as a rational Bézier curve of degree `m`.
@@ -366,10 +366,12 @@ impl RationalPatch {
     ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
     /// ).unwrap();
     /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// assert_eq!(s.iso_v(&v).eval(&u).unwrap(), s.eval(&u, &v).unwrap());
+    /// assert_eq!(s.iso_v(&v).unwrap().eval(&u).unwrap(), s.eval(&u, &v).unwrap());
     /// ```
-    pub fn iso_v(&self, v0: &BigRational) -> RationalBezier<BigRational> {
-        Self::curve(self.rows.iter().map(|r| Self::curve(r.clone()).eval_homogeneous(v0)).collect())
+    pub fn iso_v(&self, v0: &BigRational) -> Result<RationalBezier<BigRational>> {
+        RationalBezier::from_homogeneous(
+            self.rows.iter().map(|r| Self::curve(r.clone()).eval_homogeneous(v0)).collect(),
+        )
     }
 
     /// Splits at `u0`: the patches for `u ∈ [0, u0]` and `[u0, 1]` (every column subdivided).
@@ -384,13 +386,13 @@ impl RationalPatch {
     ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
     /// ).unwrap();
     /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// let (a, b) = s.subdivide_u(&ratio(1, 4));
+    /// let (a, b) = s.subdivide_u(&ratio(1, 4)).unwrap();
     /// assert_eq!(a.eval(&rat(1), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
     /// assert_eq!(b.eval(&rat(0), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
     /// ```
-    pub fn subdivide_u(&self, u0: &BigRational) -> (Self, Self) {
-        let (a, b) = self.transpose().subdivide_v(u0);
-        (a.transpose(), b.transpose())
+    pub fn subdivide_u(&self, u0: &BigRational) -> Result<(Self, Self)> {
+        let (a, b) = self.transpose().subdivide_v(u0)?;
+        Ok((a.transpose(), b.transpose()))
     }
 
     /// Splits at `v0` (every row subdivided).
@@ -405,16 +407,20 @@ impl RationalPatch {
     ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
     /// ).unwrap();
     /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// let (a, b) = s.subdivide_v(&ratio(1, 4));
+    /// let (a, b) = s.subdivide_v(&ratio(1, 4)).unwrap();
     /// assert_eq!(a.eval(&u, &rat(1)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
     /// assert_eq!(b.eval(&u, &rat(0)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
     /// ```
-    pub fn subdivide_v(&self, v0: &BigRational) -> (Self, Self) {
-        let halves: Vec<_> = self.rows.iter().map(|r| Self::curve(r.clone()).subdivide(v0)).collect();
-        (
-            RationalPatch { rows: halves.iter().map(|h| h.0.homogeneous().points().to_vec()).collect() },
-            RationalPatch { rows: halves.iter().map(|h| h.1.homogeneous().points().to_vec()).collect() },
-        )
+    pub fn subdivide_v(&self, v0: &BigRational) -> Result<(Self, Self)> {
+        let halves: Vec<_> = self
+            .rows
+            .iter()
+            .map(|r| crate::curve::casteljau::subdivide(Self::curve(r.clone()).homogeneous(), v0))
+            .collect();
+        Ok((
+            RationalPatch::from_homogeneous(halves.iter().map(|h| h.0.points().to_vec()).collect())?,
+            RationalPatch::from_homogeneous(halves.iter().map(|h| h.1.points().to_vec()).collect())?,
+        ))
     }
 
     /// The transposed patch (`u` and `v` exchanged).
@@ -460,18 +466,17 @@ impl RationalPatch {
         if m + ru > MAX_PATCH_DEGREE || n + rv > MAX_PATCH_DEGREE {
             return Err(Error::TooLarge { what: "patch degree", value: (m + ru).max(n + rv), limit: MAX_PATCH_DEGREE });
         }
-        let rows: Vec<Vec<Point<BigRational>>> = self
-            .rows
-            .iter()
-            .map(|r| Ok(Self::curve(r.clone()).elevate(rv)?.homogeneous().points().to_vec()))
+        // homogeneous elevation of every row, then every column; an intermediate point may be
+        // zero (weights of opposite signs cancelling), the result is validated once at the end
+        let elevate = |pts: Vec<Point<BigRational>>, r: usize| -> Result<Vec<Point<BigRational>>> {
+            Ok(crate::curve::bezier::BezierCurve::new(pts)?.elevate(r)?.points().to_vec())
+        };
+        let rows: Vec<Vec<Point<BigRational>>> =
+            self.rows.iter().map(|r| elevate(r.clone(), rv)).collect::<Result<_>>()?;
+        let cols: Vec<Vec<Point<BigRational>>> = (0..rows[0].len())
+            .map(|j| elevate(rows.iter().map(|r| r[j].clone()).collect(), ru))
             .collect::<Result<_>>()?;
-        let t = RationalPatch { rows }.transpose();
-        let cols: Vec<Vec<Point<BigRational>>> = t
-            .rows
-            .iter()
-            .map(|c| Ok(Self::curve(c.clone()).elevate(ru)?.homogeneous().points().to_vec()))
-            .collect::<Result<_>>()?;
-        Ok(RationalPatch { rows: cols }.transpose())
+        Ok(RationalPatch::from_homogeneous(cols)?.transpose())
     }
 
     /// Weight change (48)–(49): `S'(u, v) = 𝒲[γ_i(u) γ_j(v) Δw : W_00(u, v)](S(u, v), P_ij)` with

@@ -285,7 +285,7 @@ pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigR
 }
 
 pub(crate) fn subdivide_rational(c: &RationalBezier<BigRational>, t0: &BigRational) -> Result<(String, Value)> {
-    let (l, r) = c.subdivide(t0);
+    let (l, r) = c.subdivide(t0)?;
     let text = format!("left:  {}\nright: {}", weighted_text(&l), weighted_text(&r));
     Ok((text, json!({"t": t0.to_string(), "left": weighted_json(&l), "right": weighted_json(&r)})))
 }
@@ -382,7 +382,7 @@ pub(crate) fn surface_subdivide(
     in_u: bool,
     x: &BigRational,
 ) -> Result<(String, Value)> {
-    let (a, b) = if in_u { p.subdivide_u(x) } else { p.subdivide_v(x) };
+    let (a, b) = if in_u { p.subdivide_u(x)? } else { p.subdivide_v(x)? };
     let dir = if in_u { "u" } else { "v" };
     Ok((
         format!("{dir} in [0, {x}]: {}\n{dir} in [{x}, 1]: {}", patch_text(&a), patch_text(&b)),

@@ -1,0 +1,73 @@
+//! Inputs that once crashed the binary (panic, stack overflow) or printed nonsense: each is a
+//! regression test named after its case. Every one must end with exit 2 and a message.
+
+mod common;
+use common::{run, stderr};
+
+fn refused(args: &[&str], needle: &str) {
+    let o = run(args, None);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+    assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
+    assert!(!stderr(&o).contains("panicked"), "{args:?}");
+}
+
+#[test]
+fn robustness_surface_elevate_zero_points_opposite_weights_is_an_error_not_a_panic() {
+    refused(&["surface", "elevate", "--degree", "0,1", "--v-by", "1", "--weights", "1 -1", "0 0 0, 0 0 0"], "zero");
+}
+
+#[test]
+fn robustness_rational_elevate_never_prints_a_zero_direction() {
+    let o = run(&["elevate", "--weights", "1 -1", "0 0, 0 0"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("direction 0 0"));
+    assert!(stderr(&o).contains("zero"), "{}", stderr(&o));
+}
+
+#[test]
+fn robustness_spline_zero_points_opposite_weights_is_an_error_not_a_panic() {
+    for op in ["check", "to-bezier"] {
+        refused(
+            &["spline", op, "--degree", "2", "--weights", "1 -1 1", "--ratios", "1 1 1 1", "0 0, 0 0, 0 0"],
+            "zero",
+        );
+    }
+}
+
+#[test]
+fn robustness_expression_with_thousands_of_nested_parentheses_is_refused() {
+    let deep = format!("{}x{}", "(".repeat(5000), ")".repeat(5000));
+    refused(&["implicit", "--poly", &deep, "0 0, 1 1"], "nested more than");
+}
+
+#[test]
+fn robustness_flat_sum_of_twenty_thousand_terms_is_refused() {
+    let flat = vec!["x"; 20000].join("+");
+    refused(&["implicit", "--poly", &flat, "0 0, 1 1"], "levels deep");
+}
+
+#[test]
+fn robustness_division_by_zero_in_a_polynomial_is_named_in_words() {
+    let o = run(&["implicit", "--poly", "x/0", "0 0, 1 1"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("division by zero") && !stderr(&o).contains("DivisionByZero"), "{}", stderr(&o));
+}
+
+#[test]
+fn robustness_deep_expression_in_a_claim_file_is_a_claim_error() {
+    let dir = std::env::temp_dir().join(format!("casteljau-deep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("deep.toml");
+    let deep = format!("{}t{}", "(".repeat(10000), ")".repeat(10000));
+    std::fs::write(
+        &file,
+        format!(
+            "seed = \"x\"\n[[claim]]\nid = \"deep\"\nsource = \"-\"\nstatement = \"-\"\nexpect = \"holds\"\nkind = \"identity\"\nvars = [\"t\"]\nlhs = \"{deep}\"\nrhs = \"t\"\n"
+        ),
+    )
+    .unwrap();
+    let o = run(&["prove", file.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("deep.toml") && stderr(&o).contains("nested more than"), "{}", stderr(&o));
+    std::fs::remove_dir_all(&dir).ok();
+}
