@@ -37,12 +37,31 @@ use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// Largest number of control points of a spline read from a knot vector.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, rat, spline::{RationalSpline, knots::MAX_SPLINE_POINTS}};
+/// let n = MAX_SPLINE_POINTS + 1;
+/// let p = vec![Point::new(vec![rat(0), rat(0), rat(1)]); n];
+/// let knots: Vec<_> = (0..n + 2).map(|k| rat(k as i64)).collect();
+/// assert!(RationalSpline::from_knots(1, p, &knots).is_err());
+/// ```
 pub const MAX_SPLINE_POINTS: usize = 10_000;
 
 /// A join between two adjacent Bézier segments: the knot, its multiplicity `μ`, the continuity
 /// `n − μ` it implies (`-1`: a jump), and whether the homogeneous derivatives of orders
 /// `0 ..= n − μ` of the two segments were found equal exactly (with respect to the global
 /// parameter).
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+/// // a clamped quadratic with an interior knot 1: two Bézier pieces
+/// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+/// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+/// let joins = sp.joins(&sp.bezier_segments().unwrap());
+/// assert_eq!((joins[0].knot.clone(), joins[0].multiplicity, joins[0].continuity, joins[0].proved), (rat(1), 1, 1, true));
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Join {
     /// The knot value.
@@ -57,6 +76,17 @@ pub struct Join {
 }
 
 /// Homogeneous Bézier control points of one segment and its parameter interval.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+/// // a clamped quadratic with an interior knot 1: two Bézier pieces
+/// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+/// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+/// let pieces = sp.bezier_pieces().unwrap();
+/// assert_eq!(pieces[1].span, (rat(1), rat(2)));
+/// assert_eq!(pieces[1].homogeneous.len(), 3);
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BezierPiece {
     /// The interval `[a, b]` of the global parameter.
@@ -70,6 +100,16 @@ impl BezierPiece {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for a zero homogeneous point.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// let c = sp.bezier_pieces().unwrap()[0].curve().unwrap();
+    /// assert_eq!(c.eval(&rat(1)).unwrap(), sp.eval_at(&rat(1)).unwrap());
+    /// ```
     pub fn curve(&self) -> Result<RationalBezier<BigRational>> {
         RationalBezier::from_homogeneous(self.homogeneous.clone())
     }
@@ -172,11 +212,29 @@ impl RationalSpline {
     }
 
     /// The domain `[t_n, t_{m+1}]`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// assert_eq!(sp.domain(), (rat(0), rat(2)));
+    /// ```
     pub fn domain(&self) -> (BigRational, BigRational) {
         (self.knots[self.degree].clone(), self.knots[self.homogeneous.len()].clone())
     }
 
     /// The knot vector as given to [`Self::from_knots`] without its last knot: `t_0 … t_{m+n}`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// assert_eq!(sp.knot_vector(), &[0, 0, 0, 1, 2, 2].map(rat)); // the last knot 2 is not kept
+    /// ```
     pub fn knot_vector(&self) -> &[BigRational] {
         &self.knots
     }
@@ -186,6 +244,15 @@ impl RationalSpline {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for `u` outside the domain.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// assert_eq!(sp.eval_homogeneous_at(&rat(1)).unwrap().to_string(), "(2, 2, 1)");
+    /// ```
     pub fn eval_homogeneous_at(&self, u: &BigRational) -> Result<Point<BigRational>> {
         let (a, b) = self.domain();
         if *u < a || *u > b {
@@ -259,6 +326,19 @@ impl RationalSpline {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] when `u` is not a knot strictly inside the domain.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// // this spline is one parabola: its knot 1 comes out, and the curve is unchanged
+    /// let one = sp.remove_knot(&rat(1)).unwrap().unwrap();
+    /// assert_eq!(one.homogeneous.len(), 3);
+    /// assert_eq!(one.eval_at(&ratio(1, 2)).unwrap(), sp.eval_at(&ratio(1, 2)).unwrap());
+    /// assert!(sp.remove_knot(&ratio(1, 2)).is_err()); // not a knot
+    /// ```
     pub fn remove_knot(&self, u: &BigRational) -> Result<Option<Self>> {
         let (a, b) = self.domain();
         let n = self.degree;
@@ -306,6 +386,17 @@ impl RationalSpline {
     ///
     /// # Errors
     /// None for a valid spline; the `Result` guards the homogeneous points' validity.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// let pieces = sp.bezier_pieces().unwrap();
+    /// assert_eq!(pieces.len(), 2);
+    /// assert_eq!(pieces[0].homogeneous[2], pieces[1].homogeneous[0]); // C^0 at least: they share a point
+    /// ```
     pub fn bezier_pieces(&self) -> Result<Vec<BezierPiece>> {
         let n = self.degree;
         let (mut u, mut p) = (self.knots.clone(), self.homogeneous.clone());
@@ -329,6 +420,16 @@ impl RationalSpline {
     ///
     /// # Errors
     /// As [`Self::bezier_pieces`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// let segs = sp.bezier_segments().unwrap();
+    /// assert_eq!(segs[0].eval(&rat(1)).unwrap(), segs[1].eval(&rat(0)).unwrap());
+    /// ```
     pub fn bezier_segments(&self) -> Result<Vec<RationalBezier<BigRational>>> {
         self.bezier_pieces()?.iter().map(BezierPiece::curve).collect()
     }
@@ -339,6 +440,17 @@ impl RationalSpline {
     /// respect to the global parameter (`d^r/du^r = (b − a)^{−r} d^r/ds^r` on `[a, b]`).
     /// Where the homogeneous forms differ by a factor (another route's normalisation), the
     /// affine derivatives are compared instead.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
+    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
+    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// let j = sp.joins(&sp.bezier_segments().unwrap());
+    /// assert_eq!(j.len(), 1);
+    /// assert!(j[0].proved && j[0].continuity == 1); // a simple knot of a quadratic: C^1
+    /// ```
     pub fn joins(&self, segments: &[RationalBezier<BigRational>]) -> Vec<Join> {
         let n = self.degree;
         let spans: Vec<(BigRational, BigRational)> =

@@ -43,6 +43,17 @@ pub struct NurbsSurface {
 }
 
 /// One rational Bézier patch of the surface and its parameter rectangle.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+/// let rows: Vec<Vec<Point<_>>> = (0..4)
+///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+///     .collect();
+/// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+/// let patches = s.bezier_patches().unwrap();
+/// assert_eq!((patches[1][0].span_u.clone(), patches[1][0].span_v.clone()), ((rat(1), rat(2)), (rat(0), rat(1))));
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PatchPiece {
     /// `[a, b]` in `u`.
@@ -54,6 +65,17 @@ pub struct PatchPiece {
 }
 
 /// What [`NurbsSurface::check`] proves.
+///
+/// # Example
+/// ```
+/// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+/// let rows: Vec<Vec<Point<_>>> = (0..4)
+///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+///     .collect();
+/// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+/// let r = s.check().unwrap();
+/// assert_eq!(r.joins_u, vec![("1".to_string(), 1, 1)]); // knot 1 in u, simple: C^1
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct NurbsSurfaceReport {
     /// Number of patches.
@@ -87,6 +109,16 @@ impl NurbsSurface {
     /// # Errors
     /// As [`RationalSpline::from_knots`] for either direction (its message prefixed by the
     /// direction), and [`Error::InvalidArgument`] for a ragged net.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// let rows: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+    ///     .collect();
+    /// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+    /// assert_eq!(s.degree, (2, 2));
+    /// ```
     pub fn from_knots(
         degree: (usize, usize),
         rows: Vec<Vec<Point<BigRational>>>,
@@ -125,6 +157,18 @@ impl NurbsSurface {
     ///
     /// # Errors
     /// A parameter outside the domain.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// let rows: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+    ///     .collect();
+    /// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+    /// let patch = &s.bezier_patches().unwrap()[0][0];
+    /// let (u, v) = (ratio(1, 2), ratio(1, 3));
+    /// assert_eq!(patch.patch.eval_homogeneous(&u, &v), s.eval_homogeneous_at(&u, &v).unwrap());
+    /// ```
     pub fn eval_homogeneous_at(&self, u: &BigRational, v: &BigRational) -> Result<Point<BigRational>> {
         let row: Vec<Point<BigRational>> = transpose(&self.rows)
             .into_iter()
@@ -134,6 +178,16 @@ impl NurbsSurface {
     }
 
     /// The domain rectangle `([a, b], [c, d])`.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// let rows: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+    ///     .collect();
+    /// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+    /// assert_eq!(s.domain(), ((rat(0), rat(2)), (rat(0), rat(1))));
+    /// ```
     pub fn domain(&self) -> ((BigRational, BigRational), (BigRational, BigRational)) {
         let (p, q) = self.degree;
         let (m, l) = (self.rows.len(), self.rows[0].len());
@@ -144,6 +198,17 @@ impl NurbsSurface {
     ///
     /// # Errors
     /// A homogeneous point that becomes zero (weights of opposite signs cancelling).
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// let rows: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+    ///     .collect();
+    /// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+    /// let patches = s.bezier_patches().unwrap();
+    /// assert_eq!((patches.len(), patches[0].len()), (2, 1));
+    /// ```
     pub fn bezier_patches(&self) -> Result<Vec<Vec<PatchPiece>>> {
         // every column in u: pieces[j][s] = p + 1 points
         let by_column: Vec<Vec<crate::spline::knots::BezierPiece>> =
@@ -177,6 +242,17 @@ impl NurbsSurface {
     ///
     /// # Errors
     /// As [`Self::bezier_patches`].
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// let rows: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
+    ///     .collect();
+    /// let s = NurbsSurface::from_knots((2, 2), rows, &[0, 0, 0, 1, 2, 2, 2].map(rat), &[0, 0, 0, 1, 1, 1].map(rat)).unwrap();
+    /// let r = s.check().unwrap();
+    /// assert!(r.equals_surface && r.joins_proved);
+    /// ```
     pub fn check(&self) -> Result<NurbsSurfaceReport> {
         let (p, q) = self.degree;
         let patches = self.bezier_patches()?;
