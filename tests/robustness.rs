@@ -71,3 +71,37 @@ fn robustness_deep_expression_in_a_claim_file_is_a_claim_error() {
     assert!(stderr(&o).contains("deep.toml") && stderr(&o).contains("nested more than"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn robustness_plot_errors_like_every_other_command() {
+    let o = run(&["plot"], Some("0 0, 1 x\n"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("bad number \"x\""), "{}", stderr(&o));
+    assert!(o.stdout.is_empty(), "no half figure");
+    refused(&["plot", "--json", "0 0, 1 1"], "--json does not apply");
+}
+
+#[test]
+fn robustness_plot_never_writes_nan_or_inf() {
+    refused(&["plot", "1e308 1e308, -1e308 -1e308"], "exceed the f64 range");
+    refused(&["plot", "0 0, 1e400 1, 2 0"], "control point 2 is beyond the f64 range");
+}
+
+#[test]
+fn robustness_prove_junit_is_all_or_nothing_on_a_malformed_claim() {
+    let dir = std::env::temp_dir().join(format!("casteljau-junit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let claims = dir.join("bad.toml");
+    std::fs::write(
+        &claims,
+        "seed = \"x\"\n[[claim]]\nid = \"bad\"\nsource = \"-\"\nstatement = \"-\"\nexpect = \"holds\"\nkind = \"identity\"\nvars = [\"t\"]\nlhs = \"t +\"\nrhs = \"t\"\n",
+    )
+    .unwrap();
+    let junit = dir.join("report.xml");
+    let o = run(&["prove", claims.to_str().unwrap(), "--junit", junit.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!junit.exists(), "no partial report");
+    let leftovers: Vec<_> = std::fs::read_dir(&dir).unwrap().filter_map(|e| e.ok()).map(|e| e.file_name()).collect();
+    assert_eq!(leftovers.len(), 1, "{leftovers:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}

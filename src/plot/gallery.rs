@@ -274,25 +274,35 @@ pub fn entries() -> Vec<Entry> {
     out
 }
 
-/// Writes every figure as `DIR/<name>.svg` and `DIR/index.html`; returns the file names.
-///
-/// # Errors
-/// [`Error::InvalidArgument`] when the folder cannot be written.
-pub fn write(dir: &Path) -> Result<Vec<String>> {
-    let io = |e: std::io::Error| Error::InvalidArgument { message: format!("cannot write {}: {e}", dir.display()) };
-    std::fs::create_dir_all(dir).map_err(io)?;
-    let mut names = Vec::new();
+/// Every gallery file, `(name, content)`: one SVG per entry and `index.html`, all generated in
+/// memory (no file is touched).
+pub fn files() -> Vec<(String, String)> {
+    let mut out = Vec::new();
     let mut html = String::from(
         "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>casteljau gallery</title></head>\n<body>\n<h1>casteljau: the seeds' figures, computed exactly</h1>\n",
     );
     for e in entries() {
         let file = format!("{}.svg", e.name);
-        std::fs::write(dir.join(&file), e.figure.to_svg(WIDTH)).map_err(io)?;
         html += &format!("<figure><img src=\"{file}\" alt=\"{0}\"><figcaption>{0}</figcaption></figure>\n", e.caption);
-        names.push(file);
+        out.push((file, e.figure.to_svg(WIDTH)));
     }
     html += "</body></html>\n";
-    std::fs::write(dir.join("index.html"), html).map_err(io)?;
-    names.push("index.html".into());
-    Ok(names)
+    out.push(("index.html".into(), html));
+    out
+}
+
+/// Writes [`files`] into `dir` (created if missing): everything is generated first, then each
+/// file is written to a temporary name and renamed ([`crate::plot::write_atomically`]), so no
+/// file is ever half-written. Returns the file names.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming the folder when it cannot be created or written.
+pub fn write(dir: &Path) -> Result<Vec<String>> {
+    let io = |e: std::io::Error| Error::InvalidArgument { message: format!("cannot write {}: {e}", dir.display()) };
+    let files = files();
+    std::fs::create_dir_all(dir).map_err(io)?;
+    for (name, content) in &files {
+        crate::plot::write_atomically(&dir.join(name), content.as_bytes()).map_err(io)?;
+    }
+    Ok(files.into_iter().map(|(n, _)| n).collect())
 }

@@ -98,6 +98,30 @@ impl Figure {
         self.items.push(Item::Arrow { from, to, color: color.into() });
     }
 
+    /// Every coordinate of every item, and the view box fitted to them, is a finite `f64` (the
+    /// SVG then holds no `NaN` or `inf`); false for input beyond the `f64` range.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::plot::Figure;
+    /// let mut f = Figure::new();
+    /// f.dot((0.0, 0.0), 1.0, "black");
+    /// assert!(f.is_drawable());
+    /// f.dot((1e308, 1e308), 1.0, "black");
+    /// f.dot((-1e308, -1e308), 1.0, "black");
+    /// assert!(!f.is_drawable()); // the view box would be infinitely wide
+    /// ```
+    pub fn is_drawable(&self) -> bool {
+        let finite = |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite();
+        let items = self.items.iter().all(|it| match it {
+            Item::Polyline { pts, .. } => pts.iter().all(finite),
+            Item::Dot { at, .. } | Item::Label { at, .. } => finite(at),
+            Item::Arrow { from, to, .. } => finite(from) && finite(to),
+        });
+        let v = self.view();
+        items && [v.min_x, v.min_y, v.w, v.h].iter().all(|x| x.is_finite())
+    }
+
     /// The view box: the bounding box of every item, with a 6% margin (and a minimum size).
     pub fn view(&self) -> View {
         let points: Vec<(f64, f64)> = self
@@ -547,4 +571,27 @@ pub fn draw_rational(fig: &mut Figure, curve: &RationalBezier<BigRational>, colo
         }
         fig.polyline(line, "#888888", 1.0, true);
     }
+}
+
+/// Writes `bytes` to `path` all or nothing: into a temporary file beside it, then renamed over
+/// `path`; on any error the temporary file is removed and `path` is untouched.
+///
+/// # Errors
+/// The file system's.
+///
+/// # Example
+/// ```
+/// let path = std::env::temp_dir().join(format!("casteljau-doc-{}.txt", std::process::id()));
+/// casteljau::plot::write_atomically(&path, b"exact").unwrap();
+/// assert_eq!(std::fs::read(&path).unwrap(), b"exact");
+/// # std::fs::remove_file(path).unwrap();
+/// ```
+pub fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.tmp-{}", std::process::id()));
+    let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
 }

@@ -200,6 +200,10 @@ pub fn batch_lines(
             }
             (Some(c), None) => Box::new(std::iter::once((None, Ok(c.clone())))),
             (None, source) => match Lines::open(source.as_deref()) {
+                Ok(lines) if source.as_deref().is_none_or(|s| s == "-") && std::io::stdin().is_terminal() => {
+                    eprintln!("casteljau: reading curves from stdin, one per line (end with Ctrl-D)");
+                    Box::new(lines)
+                }
                 Ok(lines) => Box::new(lines),
                 Err(e) => {
                     eprintln!("casteljau: {e}");

@@ -52,6 +52,10 @@ pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
 }
 
 pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
+    if args.curve.json {
+        eprintln!("casteljau: plot writes SVG; --json does not apply");
+        return 2;
+    }
     let PlotArgs {
         polygon,
         construction,
@@ -111,6 +115,17 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
     curve.threads = 1;
     let code = rational_batch(&rational, curve, &mut sink, |c, w| {
         let opts = opts.clone()?;
+        // plot draws in f64: a control point beyond its range would be silently dropped
+        if let Some((i, _)) = c
+            .points()
+            .iter()
+            .enumerate()
+            .find(|(_, p)| p.coords.iter().any(|x| !casteljau::num::scalar::ratio_to_f64(x).is_finite()))
+        {
+            return Err(Error::InvalidArgument {
+                message: format!("control point {} is beyond the f64 range and cannot be drawn", i + 1),
+            });
+        }
         let k = *count.lock().expect("count");
         let color = PALETTE[k % PALETTE.len()];
         match (w, &family) {
@@ -135,10 +150,17 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
     if code == 2 {
         return 2;
     }
-    let svg = fig.into_inner().expect("figure").to_svg(width);
+    let fig = fig.into_inner().expect("figure");
+    if !fig.is_drawable() {
+        eprintln!(
+            "casteljau: the figure's coordinates exceed the f64 range (NaN or inf in the drawing); nothing written"
+        );
+        return 2;
+    }
+    let svg = fig.to_svg(width);
     match output {
         Some(path) => {
-            if let Err(e) = std::fs::write(&path, svg) {
+            if let Err(e) = casteljau::plot::write_atomically(&path, svg.as_bytes()) {
                 eprintln!("casteljau: cannot write {}: {e}", path.display());
                 return 2;
             }
@@ -241,8 +263,10 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
     if !json_out {
         let _ = writeln!(out, "{passed} passed, {failed} failed");
     }
-    if let Some(path) = junit
-        && let Err(e) = std::fs::write(path, catalogue::junit(&results))
+    if malformed > 0 && junit.is_some() {
+        eprintln!("casteljau: --junit not written: {malformed} claim(s) could not be checked (all or nothing)");
+    } else if let Some(path) = junit
+        && let Err(e) = casteljau::plot::write_atomically(path, catalogue::junit(&results).as_bytes())
     {
         eprintln!("casteljau: cannot write {}: {e}", path.display());
         return 2;
@@ -252,7 +276,7 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
             eprintln!("casteljau: --write-readme needs the whole catalogue, checked without errors");
             return 2;
         }
-        if let Err(e) = std::fs::write(path, catalogue::readme(&claims, &results)) {
+        if let Err(e) = casteljau::plot::write_atomically(path, catalogue::readme(&claims, &results).as_bytes()) {
             eprintln!("casteljau: cannot write {}: {e}", path.display());
             return 2;
         }
