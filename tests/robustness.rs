@@ -105,3 +105,42 @@ fn robustness_prove_junit_is_all_or_nothing_on_a_malformed_claim() {
     assert_eq!(leftovers.len(), 1, "{leftovers:?}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn robustness_implicit_degree_bound_beyond_the_limit_is_refused_before_work() {
+    let curve: Vec<String> = (0..=10_000).map(|i| format!("{i} {}", i % 7)).collect();
+    refused(&["implicit", "--poly", "y^100000 - x", &curve.join(", ")], "exceeds the limit 20000");
+}
+
+#[test]
+fn robustness_claim_sizes_beyond_the_limits_are_claim_errors_not_aborts() {
+    let dir = std::env::temp_dir().join(format!("casteljau-sizes-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let head = |id: &str| format!("[[claim]]\nid = \"{id}\"\nsource = \"-\"\nstatement = \"-\"\nexpect = \"holds\"\n");
+    let text = format!(
+        "seed = \"x\"\n{}kind = \"table\"\ncurve = \"0 0, 1 1\"\nsteps = 4000000000\nvalues = [[\"0\", \"0\"]]\n\
+         {}kind = \"matrix\"\ndegree = 1000000000\nrows = [[\"1\"]]\n\
+         {}kind = \"basis-table\"\ndegree = 1000000000\nsteps = 2\nrows = [[\"1\"]]\n\
+         {}kind = \"identity\"\nparams = [\"n in 0..=99999\", \"m in 0..=99999\"]\nlhs = \"n\"\nrhs = \"n\"\n\
+         {}kind = \"identity\"\nparams = [\"n in -5000000000000000000..=5000000000000000000\"]\nlhs = \"n\"\nrhs = \"n\"\n",
+        head("table"),
+        head("matrix"),
+        head("basis"),
+        head("params"),
+        head("overflow")
+    );
+    let file = dir.join("big.toml");
+    std::fs::write(&file, text).unwrap();
+    let o = run(&["prove", file.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    for needle in [
+        "claim table: steps = 4000000000 is more than the limit",
+        "claim matrix: degree = 1000000000 is more than the limit",
+        "claim basis: degree = 1000000000 is more than the limit",
+        "claim params: more than 100000 parameter instances",
+        "claim overflow: parameter n ranges over more than 100000 values",
+    ] {
+        assert!(stderr(&o).contains(needle), "{needle}: {}", stderr(&o));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

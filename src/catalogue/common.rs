@@ -46,10 +46,19 @@ pub(crate) fn points_of(rows: &[Vec<String>]) -> Result<Vec<Point<BigRational>>>
     rows.iter().map(|r| Ok(Point::new(r.iter().map(|v| num(v)).collect::<Result<_>>()?))).collect()
 }
 
+/// Largest `steps` of a table.
+pub const MAX_TABLE_STEPS: u32 = 100_000;
+
+/// Largest degree of a `matrix` or `basis-table` claim (the matrix has `(n+1)²` big entries).
+pub const MAX_TABLE_DEGREE: usize = 200;
+
 /// Parameters of a table: `ts`, or `k/steps` for `k = 0..=steps`.
 pub(crate) fn parameters_of(ts: &Option<Vec<String>>, steps: Option<u32>) -> Result<Vec<BigRational>> {
     match (ts, steps) {
         (Some(ts), _) => ts.iter().map(|t| num(t)).collect(),
+        (None, Some(n)) if n > MAX_TABLE_STEPS => {
+            Err(bad(format!("steps = {n} is more than the limit {MAX_TABLE_STEPS}")))
+        }
         (None, Some(n)) if n > 0 => Ok((0..=n).map(|k| BigRational::new(k.into(), n.into())).collect()),
         _ => Err(bad("a table needs `ts` or `steps`")),
     }

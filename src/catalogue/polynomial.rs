@@ -2,7 +2,7 @@
 //! formulas, power forms, subdivision, matrices and tables.
 
 use crate::catalogue::common::{
-    Outcome, bad, compare, curve_from, num, parameters_of, points_of, rational_curve, verdict,
+    MAX_TABLE_DEGREE, Outcome, bad, compare, curve_from, num, parameters_of, points_of, rational_curve, verdict,
 };
 use crate::curve::bezier::BezierCurve;
 use crate::curve::casteljau::subdivision_intervals;
@@ -126,6 +126,9 @@ impl Matrix {
     /// Malformed numbers.
     pub fn check(&self) -> Result<Outcome> {
         let (n, rows) = (self.degree, &self.rows);
+        if n > MAX_TABLE_DEGREE {
+            return Err(bad(format!("degree = {n} is more than the limit {MAX_TABLE_DEGREE}")));
+        }
         let computed = bernstein_to_power_matrix(n);
         for (k, row) in rows.iter().enumerate() {
             for (i, v) in row.iter().enumerate() {
@@ -192,6 +195,9 @@ impl BasisTable {
     /// Malformed numbers, or neither `ts` nor `steps`.
     pub fn check(&self) -> Result<Outcome> {
         let n = self.degree;
+        if n > MAX_TABLE_DEGREE {
+            return Err(bad(format!("degree = {n} is more than the limit {MAX_TABLE_DEGREE}")));
+        }
         let ts = parameters_of(&self.ts, self.steps)?;
         for (i, row) in self.rows.iter().enumerate() {
             for (t, v) in ts.iter().zip(row) {
@@ -256,6 +262,12 @@ fn parse_param(spec: &str) -> Result<(String, Expr, Expr, bool)> {
 }
 
 /// Every assignment of the integer parameters, in order.
+/// Most values one integer parameter may range over.
+pub const MAX_PARAMETER_RANGE: usize = 100_000;
+
+/// Most parameter instances of one identity claim.
+pub const MAX_INSTANCES: usize = 100_000;
+
 fn instances(params: &[(String, Expr, Expr, bool)]) -> Result<Vec<Env>> {
     let mut out = vec![Env::new()];
     for (name, lo, hi, inclusive) in params {
@@ -267,20 +279,22 @@ fn instances(params: &[(String, Expr, Expr, bool)]) -> Result<Vec<Env>> {
                 v.0.to_integer().try_into().map_err(|_| bad(format!("range of {name} is not a small integer")))
             };
             let (a, b) = (int(lo, &mut e)?, int(hi, &mut e)?);
-            let b = if *inclusive { b } else { b - 1 };
-            if b - a > 100_000 {
-                return Err(bad(format!("parameter {name} ranges over more than 100000 values")));
+            let b = if *inclusive { b } else { b.saturating_sub(1) };
+            // i128: no overflow for any i64 range
+            if (b as i128) - (a as i128) >= MAX_PARAMETER_RANGE as i128 {
+                return Err(bad(format!("parameter {name} ranges over more than {MAX_PARAMETER_RANGE} values")));
             }
             for k in a..=b {
+                // the cap is checked while the list grows, never after building it
+                if next.len() >= MAX_INSTANCES {
+                    return Err(bad(format!("more than {MAX_INSTANCES} parameter instances")));
+                }
                 let mut v = env.clone();
                 v.push((name.clone(), Rational::from_i64(k)));
                 next.push(v);
             }
         }
         out = next;
-        if out.len() > 1_000_000 {
-            return Err(bad("more than 1000000 parameter instances"));
-        }
     }
     Ok(out)
 }

@@ -71,6 +71,10 @@ pub fn total_degree(f: &Expr, vars: &[&str]) -> Result<usize> {
     Ok(num)
 }
 
+/// Largest degree bound `n·d` of an implicit proof (it evaluates the curve at `n·d + 1`
+/// parameters).
+pub const MAX_IMPLICIT_DEGREE: usize = 20_000;
+
 /// Proves or refutes `f(x(t)) ≡ 0` along `curve` (see the module docs).
 ///
 /// # Errors
@@ -91,7 +95,14 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
     let f = parse_expr(f)?;
     let vars = &NAMES[..dim];
     let d = total_degree(&f, vars)?;
-    let bound = curve.degree() * d;
+    let bound = curve.degree().saturating_mul(d);
+    if bound > MAX_IMPLICIT_DEGREE {
+        return Err(Error::TooLarge {
+            what: "degree of W^d·f(X/W) (curve degree × degree of f)",
+            value: bound,
+            limit: MAX_IMPLICIT_DEGREE,
+        });
+    }
     let eval = curve.exact_evaluator();
     let mut params = Vec::with_capacity(bound + 1);
     // parameters 0, 1, 1/2, 1/3, 2/3, … (denominators grow slowly), skipping poles of W
