@@ -37,7 +37,8 @@ impl Rng {
     }
 }
 
-const GOOD_NUMBERS: &[&str] = &["0", "1", "-1", "2", "1/2", "-1/3", "0.25", "1e-3", "7/5", "3", "-2", "12345/67891", "0x10p-4"];
+const GOOD_NUMBERS: &[&str] =
+    &["0", "1", "-1", "2", "1/2", "-1/3", "0.25", "1e-3", "7/5", "3", "-2", "12345/67891", "0x10p-4"];
 const BAD_NUMBERS: &[&str] = &["x", "1/0", "", "nan", "inf", "1//2", "--1", "1e", "0x", "½", "1e400000000"];
 
 fn number(r: &mut Rng) -> String {
@@ -87,13 +88,23 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
                 a.extend([s("--weights"), numbers(r, k + 1)]);
             }
         }
-        8 => a.extend([s("implicit"), s("--poly"), s(r.pick(&["x^2 + y^2 - 1", "x - y", "x/0", "(x", "x^-1", "y^3 - x*y + 2"])), c(r)]),
+        8 => a.extend([
+            s("implicit"),
+            s("--poly"),
+            s(r.pick(&["x^2 + y^2 - 1", "x - y", "x/0", "(x", "x^-1", "y^3 - x*y + 2"])),
+            c(r),
+        ]),
         9 => a.extend([s("defined"), s("--weights"), numbers(r, pts), c(r)]),
         10 => a.extend([s("conic"), s("--weights"), numbers(r, 3), curve(r, 3, 2)]),
         11 => a.extend([s("eval"), s("--weights"), numbers(r, pts), s("--t"), number(r), c(r)]),
         12 => {
             let (m, n) = (r.below(3), r.below(3));
-            a.extend([s("surface"), s(r.pick(&["eval", "elevate", "subdivide", "contour"])), s("--degree"), format!("{m},{n}")]);
+            a.extend([
+                s("surface"),
+                s(r.pick(&["eval", "elevate", "subdivide", "contour"])),
+                s("--degree"),
+                format!("{m},{n}"),
+            ]);
             a.extend([s("--u"), number(r)]);
             if r.chance(50) {
                 a.extend([s("--weights"), numbers(r, (m + 1) * (n + 1))]);
@@ -136,7 +147,20 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
         }
         _ => {
             // random tokens: options and values in any order
-            let words = ["eval", "classify", "--t", "--json", "--weights", "--homogeneous", "--dim", "3", "0", "-", "--depth", "1 2, 3 4"];
+            let words = [
+                "eval",
+                "classify",
+                "--t",
+                "--json",
+                "--weights",
+                "--homogeneous",
+                "--dim",
+                "3",
+                "0",
+                "-",
+                "--depth",
+                "1 2, 3 4",
+            ];
             a.extend((0..r.below(6) + 1).map(|_| s(r.pick(&words))));
         }
     }
@@ -157,10 +181,20 @@ fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> 
     let writer = std::thread::spawn(move || {
         let _ = pipe.write_all(input.as_bytes());
     });
+    // read both pipes while the child runs: a full pipe would otherwise stall it
+    let drain = |mut r: Box<dyn std::io::Read + Send>| {
+        std::thread::spawn(move || {
+            let mut v = Vec::new();
+            let _ = r.read_to_end(&mut v);
+            v
+        })
+    };
+    let out_reader = drain(Box::new(child.stdout.take().expect("stdout")));
+    let err_reader = drain(Box::new(child.stderr.take().expect("stderr")));
     let start = Instant::now();
-    loop {
-        if child.try_wait().ok().flatten().is_some() {
-            break;
+    let status = loop {
+        if let Some(status) = child.try_wait().ok().flatten() {
+            break status;
         }
         if start.elapsed() > cap {
             let _ = child.kill();
@@ -168,10 +202,11 @@ fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> 
             return Some(format!("no answer within {cap:?}"));
         }
         std::thread::sleep(Duration::from_millis(2));
-    }
+    };
     let _ = writer.join();
-    let out = child.wait_with_output().expect("output");
-    let (stdout, stderr) = (String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let (out_bytes, err_bytes) = (out_reader.join().expect("stdout"), err_reader.join().expect("stderr"));
+    let (stdout, stderr) = (String::from_utf8_lossy(&out_bytes), String::from_utf8_lossy(&err_bytes));
+    let out = std::process::Output { status, stdout: out_bytes.clone(), stderr: err_bytes.clone() };
     let code = match out.status.code() {
         Some(c) => c,
         None => return Some("killed by a signal".into()),
