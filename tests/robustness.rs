@@ -144,3 +144,11 @@ fn robustness_claim_sizes_beyond_the_limits_are_claim_errors_not_aborts() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn robustness_a_trailing_comma_is_accepted_a_double_comma_is_not() {
+    let o = run(&["eval", "--t", "1/2", "0 0, 2 2,"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "b(1/2) = (1, 1)");
+    refused(&["eval", "--t", "1/2", "0 0,, 2 2"], "empty number between commas");
+}

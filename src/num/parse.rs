@@ -147,10 +147,9 @@ fn tokens(text: &str) -> std::result::Result<Vec<Token<'_>>, (usize, usize)> {
             comma = true;
         }
     }
-    match start {
-        Some((s, col)) => out.push(Token { text: &text[s..], column: col, after_comma: comma }),
-        None if comma => return Err((column + 1, out.len() + 1)),
-        None => {}
+    // one trailing comma ("0 0, 1 1,") is accepted, as spreadsheets and generators write it
+    if let Some((s, col)) = start {
+        out.push(Token { text: &text[s..], column: col, after_comma: comma });
     }
     Ok(out)
 }

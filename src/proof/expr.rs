@@ -163,14 +163,18 @@ impl Parser<'_> {
     fn expect(&mut self, c: char) -> Result<()> {
         if self.eat(c) { Ok(()) } else { Err(self.error(&format!("expected {c:?}"))) }
     }
-    fn expr(&mut self) -> Result<Expr> {
+    /// Runs `f` one nesting level deeper, refusing past [`MAX_EXPR_DEPTH`].
+    fn nested(&mut self, f: fn(&mut Self) -> Result<Expr>) -> Result<Expr> {
         self.depth += 1;
         if self.depth > MAX_EXPR_DEPTH {
             return Err(self.error(&format!("nested more than {MAX_EXPR_DEPTH} levels deep")));
         }
-        let e = self.sum();
+        let e = f(self);
         self.depth -= 1;
         e
+    }
+    fn expr(&mut self) -> Result<Expr> {
+        self.nested(Self::sum)
     }
     fn sum(&mut self) -> Result<Expr> {
         let mut e = self.term()?;
@@ -189,13 +193,7 @@ impl Parser<'_> {
         Ok(e)
     }
     fn unary(&mut self) -> Result<Expr> {
-        self.depth += 1;
-        if self.depth > MAX_EXPR_DEPTH {
-            return Err(self.error(&format!("nested more than {MAX_EXPR_DEPTH} levels deep")));
-        }
-        let e = self.unary_inner();
-        self.depth -= 1;
-        e
+        self.nested(Self::unary_inner)
     }
     fn unary_inner(&mut self) -> Result<Expr> {
         if self.eat('-') {
