@@ -99,6 +99,17 @@ pub enum Error {
     },
 }
 
+impl Error {
+    /// The input line the error already names (batch input), if any.
+    pub fn line(&self) -> Option<usize> {
+        match self {
+            Error::ParseNumber { position, .. } => position.line,
+            Error::PointCount { line, .. } | Error::EmptyCurve { line } => *line,
+            _ => None,
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let at_line = |line: &Option<usize>| line.map(|l| format!("line {l}: ")).unwrap_or_default();

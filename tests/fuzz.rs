@@ -206,8 +206,7 @@ fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> 
     let _ = writer.join();
     let (out_bytes, err_bytes) = (out_reader.join().expect("stdout"), err_reader.join().expect("stderr"));
     let (stdout, stderr) = (String::from_utf8_lossy(&out_bytes), String::from_utf8_lossy(&err_bytes));
-    let out = std::process::Output { status, stdout: out_bytes.clone(), stderr: err_bytes.clone() };
-    let code = match out.status.code() {
+    let code = match status.code() {
         Some(c) => c,
         None => return Some("killed by a signal".into()),
     };

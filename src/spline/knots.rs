@@ -239,6 +239,36 @@ impl RationalSpline {
         &self.knots
     }
 
+    /// A full knot vector (`m + n + 2` knots) for output: [`Self::knot_vector`] with its last
+    /// knot repeated as the never-used final knot (the input's own last knot is not kept; for
+    /// a clamped end it is the same value).
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::RationalSpline};
+    /// let p: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(0), rat(1)])).collect();
+    /// let knots = [0, 0, 0, 1, 2, 2, 2].map(rat);
+    /// assert_eq!(RationalSpline::from_knots(2, p, &knots).unwrap().full_knot_vector(), knots);
+    /// ```
+    pub fn full_knot_vector(&self) -> Vec<BigRational> {
+        let mut k = self.knots.clone();
+        k.push(self.knots.last().expect("a spline has knots").clone());
+        k
+    }
+
+    /// Some knot after the first repeats (a zero scale ratio): the seed's formulas do not apply.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::RationalSpline};
+    /// let p: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(0), rat(1)])).collect();
+    /// assert!(RationalSpline::from_knots(2, p.clone(), &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap().has_repeated_knots());
+    /// assert!(!RationalSpline::from_knots(2, p, &[0, 1, 2, 3, 4, 5, 6].map(rat)).unwrap().has_repeated_knots());
+    /// ```
+    pub fn has_repeated_knots(&self) -> bool {
+        self.knots[1..].windows(2).any(|w| w[0] == w[1])
+    }
+
     /// The homogeneous point at any `u` of the domain by de Boor's recursion (at an interior
     /// knot, from the span on its right; at the right end, from the last span).
     ///
@@ -352,7 +382,6 @@ impl RationalSpline {
         let k = smaller.iter().rposition(|x| x <= u).expect("domain start is ≤ u");
         let q = &self.homogeneous;
         let m = q.len() - 2; // the smaller spline has m + 1 points
-        let dim = q[0].dim();
         let mut p: Vec<Point<BigRational>> = Vec::with_capacity(m + 1);
         p.extend_from_slice(&q[..=k - n]);
         // Q_i = (1 − α_i) P_{i−1} + α_i P_i for k − n < i ≤ k; α_i = (u − t_i)/(t_{i+n} − t_i)
@@ -370,7 +399,7 @@ impl RationalSpline {
         for i in have..=m {
             p.push(q[i + 1].clone());
         }
-        if p.len() != m + 1 || p.iter().any(|x| x.dim() != dim) {
+        if p.len() != m + 1 {
             return Ok(None);
         }
         let (_, back) = insert(&smaller, &p, n, u);

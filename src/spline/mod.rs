@@ -336,12 +336,10 @@ impl RationalSpline {
         let segments = 0..self.segments();
         match (how, self.degree) {
             (Conversion::Boehm, _) => self.to_bezier_boehm(),
-            (Conversion::Seed(_), _) if self.knots[1..].windows(2).any(|w| w[0] == w[1]) => {
-                Err(Error::InvalidArgument {
-                    message: "the seed's formulas need positive scale ratios (no repeated knots): use the boehm method"
-                        .into(),
-                })
-            }
+            (Conversion::Seed(_), _) if self.has_repeated_knots() => Err(Error::InvalidArgument {
+                message: "the seed's formulas need positive scale ratios (no repeated knots): use the boehm method"
+                    .into(),
+            }),
             (Conversion::Seed(_), 3) => segments.map(|s| seed_cubic_segment(self, s)).collect(),
             (Conversion::Seed(reading), 2) => segments.map(|s| seed_quadratic_segment(self, s, reading)).collect(),
             (Conversion::Seed(_), n) => Err(Error::InvalidArgument {

@@ -97,12 +97,6 @@ fn transpose<T: Clone>(m: &[Vec<T>]) -> Vec<Vec<T>> {
     (0..m[0].len()).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect()
 }
 
-fn full(knots: &[BigRational]) -> Vec<BigRational> {
-    let mut k = knots.to_vec();
-    k.push(knots.last().expect("knots").clone());
-    k
-}
-
 impl NurbsSurface {
     /// A surface from its homogeneous net and full knot vectors in `u` and `v`.
     ///
@@ -144,12 +138,13 @@ impl NurbsSurface {
         Ok(NurbsSurface { degree, rows, knots_u: u.knots, knots_v: v.knots })
     }
 
+    // the knot vectors were validated in `from_knots`; the points may be intermediate ones
     fn spline_u(&self, column: Vec<Point<BigRational>>) -> Result<RationalSpline> {
-        RationalSpline::from_knots(self.degree.0, column, &full(&self.knots_u))
+        Ok(RationalSpline { degree: self.degree.0, homogeneous: column, knots: self.knots_u.clone() })
     }
 
     fn spline_v(&self, row: Vec<Point<BigRational>>) -> Result<RationalSpline> {
-        RationalSpline::from_knots(self.degree.1, row, &full(&self.knots_v))
+        Ok(RationalSpline { degree: self.degree.1, homogeneous: row, knots: self.knots_v.clone() })
     }
 
     /// The homogeneous point at `(u, v)` of the domain: de Boor in `u` on every column, then in

@@ -249,7 +249,7 @@ pub fn batch_lines(
                         writeln!(out, "{}", json!({"line": line, "error": e.to_string()}))
                     } else {
                         match line {
-                            Some(l) if !e.to_string().contains("line ") => eprintln!("casteljau: line {l}: {e}"),
+                            Some(l) if e.line().is_none() => eprintln!("casteljau: line {l}: {e}"),
                             _ => eprintln!("casteljau: {e}"),
                         }
                         Ok(())
