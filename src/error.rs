@@ -24,7 +24,7 @@ impl fmt::Display for Position {
 }
 
 /// Everything that can go wrong in casteljau's library and CLI.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Error {
     /// A token is not an exact number (`1/3`, `-0.25`, `2E3` are; `nan`, `1/0`, `0x10` are not).
@@ -92,6 +92,17 @@ pub enum Error {
         /// What is wrong.
         message: String,
     },
+    /// The estimated work of an answer exceeds the budget (see [`crate::work`]).
+    WorkLimit {
+        /// What would be computed, with the sizes that drive the cost.
+        what: String,
+        /// The estimate, in work units (about 1 ns each on the reference machine).
+        estimate: f64,
+        /// The budget.
+        limit: f64,
+        /// The option that raises the budget.
+        option: &'static str,
+    },
     /// An argument outside the operation's domain (e.g. a derivative order above the degree).
     InvalidArgument {
         /// What is wrong, in words.
@@ -135,6 +146,16 @@ impl fmt::Display for Error {
             }
             Error::TooLarge { what, value, limit } => write!(f, "{what} {value} exceeds the limit {limit}"),
             Error::InvalidArgument { message } => write!(f, "{message}"),
+            Error::WorkLimit { what, estimate, limit, option } => {
+                write!(f, "{what}: estimated work {estimate:.1e} exceeds the limit {limit:.1e}")?;
+                if !option.is_empty() {
+                    // a budget that admits this input: the estimate rounded up to one digit
+                    let exp = estimate.log10().floor() as i32;
+                    let mantissa = (estimate / 10f64.powi(exp)).ceil();
+                    write!(f, " (about {:.0} s here; raise it with {option} {mantissa}e{exp})", estimate / 1e9)?;
+                }
+                Ok(())
+            }
             Error::WeightsVanish { interval: (a, b) } if a == b => {
                 write!(f, "the weights make the curve undefined: the denominator vanishes at t = {a}")
             }

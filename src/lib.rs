@@ -23,7 +23,7 @@
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
 //!
-//! [`error`] is shared by all. The command line lives in `src/bin/casteljau/` and is not part
+//! [`error`] and [`work`] (cost estimates checked before exact work starts) are shared by all. The command line lives in `src/bin/casteljau/` and is not part
 //! of the library.
 //!
 //! ```
@@ -47,6 +47,7 @@ pub mod spline;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 pub mod surface;
+pub mod work;
 
 pub use curve::BezierCurve;
 pub use error::{Error, Position, Result};

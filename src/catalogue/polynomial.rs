@@ -318,7 +318,11 @@ impl Identity {
         // instances are independent: rayon shares the cores with the other claims being checked
         let results: Vec<Result<Instance>> = {
             use rayon::prelude::*;
-            envs.par_iter().map(|env| identity_instance(&diff, &c.vars, env)).collect()
+            // the caller's fold-term limit applies on every worker thread
+            let steps = crate::proof::expr::current_steps();
+            envs.par_iter()
+                .map(|env| crate::proof::expr::with_steps(steps.clone(), || identity_instance(&diff, &c.vars, env)))
+                .collect()
         };
         let mut points = 0;
         let mut largest: Vec<usize> = vec![];

@@ -151,8 +151,49 @@ pub fn subdivide(
     curve: &BezierCurve<BigRational>,
     t0: &BigRational,
 ) -> (BezierCurve<BigRational>, BezierCurve<BigRational>) {
-    let tri = triangle(curve, t0);
-    (BezierCurve::new(tri.left_polygon()).unwrap(), BezierCurve::new(tri.right_polygon()).unwrap())
+    let ic = IntegerCurve::new(curve);
+    let (p, q) = (t0.numer(), t0.denom());
+    let (left, right) = integer_edges::<i128>(&ic, p, q)
+        .unwrap_or_else(|| integer_edges::<BigInt>(&ic, p, q).expect("BigInt does not overflow"));
+    // b_0^r = β_0^r / (D q^r) on the left, b_{n−r}^r on the right (stored from r = n down)
+    let dim = ic.dim;
+    let n = ic.degree();
+    let mut scales = Vec::with_capacity(n + 1);
+    let mut scale = ic.denominator.clone();
+    for _ in 0..=n {
+        scales.push(scale.clone());
+        scale *= q;
+    }
+    let point =
+        |c: &[BigInt], s: &BigInt| Point::new(c.iter().map(|v| BigRational::new(v.clone(), s.clone())).collect());
+    let l = left.chunks(dim).zip(&scales).map(|(c, s)| point(c, s)).collect();
+    let r = right.chunks(dim).zip(scales.iter().rev()).map(|(c, s)| point(c, s)).collect();
+    (BezierCurve::new(l).expect("n + 1 points"), BezierCurve::new(r).expect("n + 1 points"))
+}
+
+/// The two edges of the integer triangle: `β_0^r` for `r = 0..=n` (left polygon) and
+/// `β_{n−r}^r` for `r = n..=0` (right polygon), flat, with `O(n)` memory; `None` on overflow.
+fn integer_edges<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option<(Vec<BigInt>, Vec<BigInt>)> {
+    let dim = curve.dim;
+    let n = curve.degree();
+    let pi = I::from_big(p)?;
+    let r = I::from_big(&(q - p))?;
+    let mut row: Vec<I> = curve.numerators.iter().map(I::from_big).collect::<Option<_>>()?;
+    let mut left: Vec<BigInt> = Vec::with_capacity((n + 1) * dim);
+    let mut right_rev: Vec<Vec<BigInt>> = Vec::with_capacity(n + 1);
+    loop {
+        left.extend(row[..dim].iter().cloned().map(Into::into));
+        right_rev.push(row[row.len() - dim..].iter().cloned().map(Into::into).collect());
+        if row.len() == dim {
+            break;
+        }
+        for k in 0..row.len() - dim {
+            row[k] = row[k].checked_mul(&r)?.checked_add(&row[k + dim].checked_mul(&pi)?)?;
+        }
+        row.truncate(row.len() - dim);
+    }
+    let right = right_rev.into_iter().rev().flatten().collect();
+    Some((left, right))
 }
 
 /// [`casteljau::subdivide_repeatedly`](crate::curve::casteljau::subdivide_repeatedly) on the

@@ -8,4 +8,4 @@ pub mod bernstein;
 pub mod polynomial;
 pub mod roots;
 
-pub use roots::{Root, isolate_bernstein, isolate_in};
+pub use roots::{Root, isolate_bernstein, isolate_bernstein_within, isolate_in, isolate_in_within};

@@ -18,7 +18,10 @@
 
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, Scalar, rat};
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
+use num_traits::{One, Signed};
 use std::cmp::Ordering;
 
 /// A power-form polynomial, lowest degree first, no trailing zeros.
@@ -62,18 +65,204 @@ pub fn div_rem(a: Poly, b: &[BigRational]) -> (Poly, Poly) {
     (trim(q), a)
 }
 
-/// The monic greatest common divisor (`[]` for `gcd(0, 0)`), by Euclid's algorithm over `Q`.
+/// The monic greatest common divisor (`[]` for `gcd(0, 0)`).
+///
+/// Computed on integers by the primitive remainder sequence ([`gcd_integer`]): Euclid over `Q`
+/// reduces a fraction at every step and its coefficients swell, which made a degree-40 gcd
+/// take seconds; the primitive sequence keeps every remainder's content divided out.
 pub fn gcd(a: Poly, b: Poly) -> Poly {
-    let (mut a, mut b) = (trim(a), trim(b));
-    while !b.is_empty() {
-        let r = rem(a, &b);
+    let g = gcd_integer(&to_integer(&trim(a)), &to_integer(&trim(b)));
+    match g.last().cloned() {
+        Some(l) => g.into_iter().map(|c| BigRational::new(c, l.clone())).collect(),
+        None => vec![],
+    }
+}
+
+/// A positive multiple of `p` with integer coefficients (the denominators cleared).
+pub fn to_integer(p: &[BigRational]) -> Vec<BigInt> {
+    let d = p.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
+    p.iter().map(|x| x.numer() * (&d / x.denom())).collect()
+}
+
+/// `p` divided by the gcd of its coefficients, with a positive leading coefficient (`[]` for
+/// the zero polynomial).
+pub fn primitive_part(p: Vec<BigInt>) -> Vec<BigInt> {
+    let mut p = p;
+    while p.last().is_some_and(num_traits::Zero::is_zero) {
+        p.pop();
+    }
+    let Some(last) = p.last() else { return p };
+    let mut content = <BigInt as num_traits::Zero>::zero();
+    for x in &p {
+        content = content.gcd(x);
+        if content.is_one() {
+            break;
+        }
+    }
+    if last.is_negative() {
+        content = -content;
+    }
+    if content.is_one() { p } else { p.into_iter().map(|x| x / &content).collect() }
+}
+
+/// The pseudo-remainder `lc(b)^(deg a − deg b + 1)·a mod b`, on integers (`b` non-zero,
+/// trimmed).
+fn pseudo_rem(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
+    let lb = b.last().expect("non-zero divisor");
+    let mut a = a;
+    while a.len() >= b.len() && !a.is_empty() {
+        let la = a.last().expect("non-empty").clone();
+        let shift = a.len() - b.len();
+        for x in a.iter_mut() {
+            *x *= lb;
+        }
+        for (i, c) in b.iter().enumerate() {
+            a[shift + i] -= &la * c;
+        }
+        a.pop();
+        while a.last().is_some_and(num_traits::Zero::is_zero) {
+            a.pop();
+        }
+    }
+    a
+}
+
+/// The primitive greatest common divisor of two integer polynomials (positive leading
+/// coefficient; `[]` when both are zero), by the subresultant remainder sequence (Collins;
+/// Brown–Traub): each pseudo-remainder is divided exactly by `g·h^δ`, which keeps the
+/// coefficients at the size of the subresultants (bit length `O(n·τ)`) without computing a
+/// single integer gcd until the final primitive part — integer gcds are the slow operation
+/// of big-number arithmetic.
+pub fn gcd_integer(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
+    let (mut a, mut b) = (primitive_part(a.to_vec()), primitive_part(b.to_vec()));
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    if b.is_empty() {
+        return a;
+    }
+    let (mut g, mut h) = (BigInt::one(), BigInt::one());
+    loop {
+        let delta = (a.len() - b.len()) as u32;
+        let r = pseudo_rem(a, &b);
+        if r.is_empty() {
+            return primitive_part(b);
+        }
+        if r.len() == 1 {
+            return vec![BigInt::one()]; // a non-zero constant: coprime
+        }
+        let divisor = &g * num_traits::Pow::pow(&h, delta);
         a = b;
-        b = r;
+        b = r.into_iter().map(|x| x / &divisor).collect();
+        g = a.last().expect("non-zero").clone();
+        // h ← g^δ / h^(δ−1)
+        h = if delta == 0 { h } else { num_traits::Pow::pow(&g, delta) / num_traits::Pow::pow(&h, delta - 1) };
     }
-    match a.last().cloned() {
-        Some(l) => a.into_iter().map(|c| c / &l).collect(),
-        None => a,
+}
+
+/// The square-free part of an integer polynomial: `p / gcd(p, p')` as a primitive integer
+/// polynomial with positive leading coefficient (`[]` for zero).
+///
+/// Most polynomials are square-free already, and proving it is cheap: if `gcd(p, p') mod q`
+/// is a constant for a prime `q` that does not divide the leading coefficient, then `p` is
+/// square-free (a common factor `g` over `Z` would keep its degree mod `q`, since `lc(g)`
+/// divides `lc(p)`). Only when that test fails for a few primes does the exact
+/// [`gcd_integer`] run.
+pub fn square_free_integer(p: Vec<BigInt>) -> Vec<BigInt> {
+    let p = primitive_part(p);
+    if p.len() <= 2 {
+        return p;
     }
+    let dp: Vec<BigInt> = p.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
+    if MODULAR_PRIMES.iter().any(|&q| coprime_mod(&p, &dp, q)) {
+        return p;
+    }
+    let g = gcd_integer(&p, &dp);
+    if g.len() <= 1 { p } else { primitive_part(exact_quotient(p, &g)) }
+}
+
+/// Primes below 2⁶² for the modular square-free test.
+const MODULAR_PRIMES: [u64; 3] = [4_611_686_018_427_387_847, 4_611_686_018_427_387_817, 4_611_686_018_427_387_787];
+
+/// `true` when `gcd(a mod q, b mod q)` is a non-zero constant and `q ∤ lc(a)`: then `a` and
+/// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
+fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
+    let reduce = |p: &[BigInt]| -> Vec<u64> {
+        let mut v: Vec<u64> = p
+            .iter()
+            .map(|x| {
+                let r = x % BigInt::from(q);
+                let r = if r.is_negative() { r + BigInt::from(q) } else { r };
+                num_traits::ToPrimitive::to_u64(&r).expect("reduced mod q")
+            })
+            .collect();
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+        v
+    };
+    let (mut x, mut y) = (reduce(a), reduce(b));
+    if x.len() != a.len() || y.is_empty() {
+        return false; // q divides lc(a), or b vanishes mod q: no conclusion
+    }
+    let mul = |u: u64, v: u64| ((u as u128 * v as u128) % q as u128) as u64;
+    let inv = |u: u64| {
+        // u^(q−2) mod q
+        let (mut base, mut e, mut acc) = (u, q - 2, 1u64);
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = mul(acc, base);
+            }
+            base = mul(base, base);
+            e >>= 1;
+        }
+        acc
+    };
+    if x.len() < y.len() {
+        std::mem::swap(&mut x, &mut y);
+    }
+    while y.len() > 1 {
+        // x ← x mod y over Z_q
+        let li = inv(*y.last().expect("non-zero"));
+        while x.len() >= y.len() {
+            let f = mul(*x.last().expect("non-empty"), li);
+            let shift = x.len() - y.len();
+            for (i, c) in y.iter().enumerate() {
+                x[shift + i] = (x[shift + i] + q - mul(f, *c)) % q;
+            }
+            x.pop();
+            while x.last() == Some(&0) {
+                x.pop();
+            }
+        }
+        if x.is_empty() {
+            return false; // y divides x: a common factor of positive degree mod q
+        }
+        std::mem::swap(&mut x, &mut y);
+    }
+    true // y is a non-zero constant
+}
+
+/// Exact quotient `a / b` of integer polynomials when `b` divides `a` in `Z[x]` (as the
+/// primitive parts of `p` and of a divisor of `p` do, by Gauss's lemma).
+fn exact_quotient(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
+    let lb = b.last().expect("non-zero divisor");
+    let mut a = a;
+    let mut q = vec![<BigInt as num_traits::Zero>::zero(); a.len().saturating_sub(b.len()) + 1];
+    while a.len() >= b.len() && !a.is_empty() {
+        let f = a.last().expect("non-empty") / lb;
+        let shift = a.len() - b.len();
+        for (i, c) in b.iter().enumerate() {
+            a[shift + i] -= &f * c;
+        }
+        q[shift] = f;
+        a.pop();
+        while a.last().is_some_and(num_traits::Zero::is_zero) {
+            a.pop();
+        }
+    }
+    debug_assert!(a.is_empty(), "exact_quotient: b does not divide a");
+    q
 }
 
 /// `p'`.
@@ -81,11 +270,10 @@ pub fn derivative(p: &[BigRational]) -> Poly {
     trim(p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * rat(k as i64)).collect())
 }
 
-/// The square-free part `p / gcd(p, p')`: the same roots, each simple (`p` non-zero).
+/// The square-free part `p / gcd(p, p')`: the same roots, each simple (`p` non-zero), as the
+/// primitive integer polynomial with positive leading coefficient (written as rationals).
 pub fn square_free(p: Poly) -> Poly {
-    let p = trim(p);
-    let g = gcd(p.clone(), derivative(&p));
-    if g.len() <= 1 { p } else { div_rem(p, &g).0 }
+    square_free_integer(to_integer(&trim(p))).into_iter().map(BigRational::from_integer).collect()
 }
 
 /// `[c − √r, c + √r]` for `r ≥ 0`, exactly in `Q(√r)`.

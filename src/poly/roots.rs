@@ -16,10 +16,11 @@
 //! bits for degree `n` and `τ`-bit coefficients. The work list is explicit (no recursion), so
 //! deep subdivisions cannot overflow the stack.
 
-use crate::num::point::Point;
+use crate::error::Result;
 use crate::num::scalar::{Exact, Scalar, rat};
-use crate::poly::bernstein::{from_power, split as split_at, split_integer, to_power};
-use crate::poly::polynomial::square_free;
+use crate::poly::bernstein::{split as split_at, split_integer};
+use crate::poly::polynomial::{square_free_integer, to_integer};
+use crate::work::Budget;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -67,35 +68,120 @@ fn sign_changes(c: &[BigInt]) -> usize {
 /// assert_eq!(isolate_bernstein(&[rat(1), rat(0), rat(-1)]).unwrap(), vec![Root::Exact(ratio(1, 2))]);
 /// ```
 pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
+    isolate_bernstein_within(c, &Budget::unlimited()).expect("an unlimited budget is never exceeded")
+}
+
+/// [`isolate_bernstein`] within a work budget: the up-front work (power form, square-free
+/// part) is estimated by [`crate::work::root_isolation`] before it starts, and each
+/// subdivision step is counted ([`crate::work::root_split`]) as it runs.
+///
+/// Coefficients that are all non-zero and of one sign prove that there is no root at once
+/// (the Bernstein polynomials are positive on `(0, 1)`), whatever the degree.
+///
+/// # Errors
+/// [`crate::Error::WorkLimit`] when the work would exceed `budget`; nothing is guessed.
+///
+/// # Example
+/// ```
+/// use casteljau::{rat, poly::roots::isolate_bernstein_within, work::Budget};
+/// let tight = Budget::new(1.0, "--max-work");
+/// // all weights positive: no root, no work
+/// assert_eq!(isolate_bernstein_within(&vec![rat(1); 5000], &tight).unwrap(), Some(vec![]));
+/// assert!(isolate_bernstein_within(&[rat(1), rat(-2), rat(1)], &tight).is_err());
+/// ```
+pub fn isolate_bernstein_within(c: &[BigRational], budget: &Budget) -> Result<Option<Vec<Root>>> {
     if c.iter().all(Scalar::is_zero) {
-        return None;
+        return Ok(None);
     }
-    let pts: Vec<Point<BigRational>> = c.iter().map(|v| Point::new(vec![v.clone()])).collect();
-    let power: Vec<BigRational> = to_power(&pts).into_iter().map(|p| p.coords[0].clone()).collect();
-    let sf = square_free(power);
+    let first = c[0].sign();
+    if first != Ordering::Equal && c.iter().all(|x| x.sign() == first) {
+        return Ok(Some(vec![]));
+    }
+    let n = c.len() - 1;
+    let upfront = crate::work::root_isolation(n, crate::work::max_bits_of(c));
+    budget.check(format!("isolating the roots of a degree-{n} polynomial"), upfront)?;
+    let power = bernstein_to_power_integer(&to_integer(c));
+    let sf = square_free_integer(power);
     if sf.len() <= 1 {
-        return Some(vec![]); // a non-zero constant
+        return Ok(Some(vec![])); // a non-zero constant
     }
     if sf.len() == 2 {
         // linear: the root −c0/c1 exactly
-        let r = -sf[0].clone() / &sf[1];
+        let r = BigRational::new(-sf[0].clone(), sf[1].clone());
         let inside = r.sign() != Ordering::Less && (rat(1) - &r).sign() != Ordering::Less;
-        return Some(if inside { vec![Root::Exact(r)] } else { vec![] });
+        return Ok(Some(if inside { vec![Root::Exact(r)] } else { vec![] }));
     }
-    let sf_pts: Vec<Point<BigRational>> = sf.iter().map(|v| Point::new(vec![v.clone()])).collect();
-    let bern: Vec<BigRational> = from_power(&sf_pts).into_iter().map(|p| p.coords[0].clone()).collect();
-    // signs and roots do not change under a positive factor: clear the denominators once
-    let d = bern.iter().fold(BigInt::from(1), |acc, x| acc.lcm(x.denom()));
-    let ints: Vec<BigInt> = bern.iter().map(|x| x.numer() * (&d / x.denom())).collect();
+    // signs and roots do not change under a positive factor: integers throughout
+    let ints = power_to_bernstein_integer(&sf);
     let mut out = Vec::new();
     if ints[0].is_zero() {
         out.push(Root::Exact(rat(0)));
     }
-    split(ints.clone(), rat(0), rat(1), &mut out);
+    split(ints.clone(), rat(0), rat(1), &mut out, budget.limit - upfront).map_err(|steps| crate::Error::WorkLimit {
+        what: format!("isolating the roots of a degree-{n} polynomial ({steps} subdivisions so far)"),
+        estimate: budget.limit + 1.0,
+        limit: budget.limit,
+        option: budget.option,
+    })?;
     if ints.last().expect("coefficients").is_zero() {
         out.push(Root::Exact(rat(1)));
     }
-    Some(out)
+    Ok(Some(out))
+}
+
+/// Binomial rows `C(k, 0..=k)` for `k = 0..=n`, exact.
+fn binomial_rows(n: usize) -> Vec<Vec<BigInt>> {
+    let mut rows: Vec<Vec<BigInt>> = vec![vec![BigInt::from(1)]];
+    for k in 1..=n {
+        let prev = &rows[k - 1];
+        let mut row = Vec::with_capacity(k + 1);
+        row.push(BigInt::from(1));
+        for i in 1..k {
+            row.push(&prev[i - 1] + &prev[i]);
+        }
+        row.push(BigInt::from(1));
+        rows.push(row);
+    }
+    rows
+}
+
+/// Power-form coefficients of `Σ b_i B_i^n(t)` on integers:
+/// `c_k = C(n,k) Σ_{i≤k} (−1)^{k−i} C(k,i) b_i` (no fraction anywhere).
+fn bernstein_to_power_integer(b: &[BigInt]) -> Vec<BigInt> {
+    let n = b.len() - 1;
+    let rows = binomial_rows(n);
+    (0..=n)
+        .map(|k| {
+            let mut acc = BigInt::zero();
+            for i in 0..=k {
+                let term = &rows[k][i] * &b[i];
+                if (k - i) % 2 == 1 {
+                    acc -= term;
+                } else {
+                    acc += term;
+                }
+            }
+            acc * &rows[n][k]
+        })
+        .collect()
+}
+
+/// A positive multiple of the Bernstein coefficients of `Σ c_k t^k` (degree `n`), on
+/// integers: `b_i = Σ_{k≤i} C(i,k)/C(n,k) c_k = Σ_{k≤i} C(n−k, i−k) c_k / C(n,i)`, scaled by
+/// `L = lcm_i C(n,i)`.
+fn power_to_bernstein_integer(c: &[BigInt]) -> Vec<BigInt> {
+    let n = c.len() - 1;
+    let rows = binomial_rows(n);
+    let l = rows[n].iter().fold(BigInt::from(1), |acc, x| acc.lcm(x));
+    (0..=n)
+        .map(|i| {
+            let mut acc = BigInt::zero();
+            for k in 0..=i {
+                acc += &rows[n - k][i - k] * &c[k];
+            }
+            acc * (&l / &rows[n][i])
+        })
+        .collect()
 }
 
 /// Roots in the open interval `(a, b)` of a square-free polynomial whose Bernstein
@@ -103,8 +189,17 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
 /// the roots in `(a, b)` with the same parity (Descartes' rule; zero coefficients are skipped),
 /// so `V = 1` certifies exactly one. Terminates by Vincent's theorem (module docs); the pending
 /// pieces are kept on an explicit stack, right halves below left ones, so roots come out in
-/// order. The halves come from [`split_integer`] at `1/2`: integers only.
-fn split(c: Vec<BigInt>, a: BigRational, b: BigRational, out: &mut Vec<Root>) {
+/// order. The halves come from [`split_integer`] at `1/2`: integers only. Each split is
+/// charged [`crate::work::root_split`] against `allowance`; past it, `Err(splits so far)`.
+fn split(
+    c: Vec<BigInt>,
+    a: BigRational,
+    b: BigRational,
+    out: &mut Vec<Root>,
+    allowance: f64,
+) -> std::result::Result<(), usize> {
+    let mut spent = 0.0;
+    let mut splits = 0usize;
     enum Task {
         Piece(Vec<BigInt>, BigRational, BigRational),
         Exact(BigRational),
@@ -123,6 +218,12 @@ fn split(c: Vec<BigInt>, a: BigRational, b: BigRational, out: &mut Vec<Root>) {
             0 => {}
             1 => out.push(Root::Isolated(a, b)),
             _ => {
+                let bits = c.iter().map(BigInt::bits).max().unwrap_or(0);
+                spent += crate::work::root_split(c.len() - 1, bits);
+                if spent > allowance {
+                    return Err(splits);
+                }
+                splits += 1;
                 let (lc, rc) = split_integer(&c, &one, &two);
                 let m = (a.clone() + &b) / rat(2);
                 let exact_mid = rc[0].is_zero();
@@ -134,6 +235,7 @@ fn split(c: Vec<BigInt>, a: BigRational, b: BigRational, out: &mut Vec<Root>) {
             }
         }
     }
+    Ok(())
 }
 
 /// Bernstein coefficients of the same polynomial on `[a, b]` (`0 ≤ a < b ≤ 1`), by two
@@ -146,9 +248,29 @@ pub fn restrict(c: &[BigRational], a: &BigRational, b: &BigRational) -> Vec<BigR
 
 /// The roots of `p(t) = Σ c_i B_i^n(t)` in `[a, b]`, mapped back to `t`.
 pub fn isolate_in(c: &[BigRational], a: &BigRational, b: &BigRational) -> Option<Vec<Root>> {
-    let local = isolate_bernstein(&restrict(c, a, b))?;
+    isolate_in_within(c, a, b, &Budget::unlimited()).expect("an unlimited budget is never exceeded")
+}
+
+/// [`isolate_in`] within a work budget (see [`isolate_bernstein_within`]).
+///
+/// # Errors
+/// [`crate::Error::WorkLimit`] when the work would exceed `budget`.
+pub fn isolate_in_within(
+    c: &[BigRational],
+    a: &BigRational,
+    b: &BigRational,
+    budget: &Budget,
+) -> Result<Option<Vec<Root>>> {
+    let n = c.len().saturating_sub(1);
+    if !(Scalar::is_zero(a) && *b == rat(1)) {
+        budget.check(
+            format!("restricting a degree-{n} polynomial to [{a}, {b}]"),
+            crate::work::subdivision(n, 1, crate::work::max_bits_of(c), crate::work::bits(a).max(crate::work::bits(b))),
+        )?;
+    }
+    let Some(local) = isolate_bernstein_within(&restrict(c, a, b), budget)? else { return Ok(None) };
     let map = |s: BigRational| a.clone() + (b.clone() - a) * s;
-    Some(
+    Ok(Some(
         local
             .into_iter()
             .map(|r| match r {
@@ -156,5 +278,5 @@ pub fn isolate_in(c: &[BigRational], a: &BigRational, b: &BigRational) -> Option
                 Root::Isolated(s0, s1) => Root::Isolated(map(s0), map(s1)),
             })
             .collect(),
-    )
+    ))
 }

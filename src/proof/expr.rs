@@ -64,6 +64,89 @@ impl std::fmt::Display for EvalError {
     }
 }
 
+/// A shared count of the fold terms an evaluation may still take (see [`with_step_limit`]).
+#[derive(Debug)]
+pub struct StepBudget {
+    left: std::sync::atomic::AtomicU64,
+    limit: u64,
+}
+
+std::thread_local! {
+    /// The budget evaluations on this thread charge (none: unlimited).
+    static STEPS: std::cell::RefCell<Option<std::sync::Arc<StepBudget>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f` allowing at most `steps` evaluation steps (each `sum`/`prod` term one step, a
+/// power of exponent `k` `1 + k/64`, a Bernstein polynomial of degree `n` `1 + n²/30000`, about
+/// 0.1 µs each) in [`Expr::eval`] and
+/// [`Expr::degree`]; past it, evaluation fails with [`EvalError::Invalid`] naming the limit.
+/// A fold such as `sum(r, 0, 100000, sum(s, 0, 100000, x))` is small text but 10¹⁰ terms:
+/// this is how a caller bounds its work. Work handed to other threads shares the budget when
+/// it runs under [`with_steps`]([`current_steps`]). Outside any limit there is none.
+///
+/// ```
+/// use casteljau::proof::expr::{parse_expr, with_step_limit, Env};
+/// let e = parse_expr("sum(r, 0, 100000, sum(s, 0, 100000, r*s))").unwrap();
+/// let err = with_step_limit(100_000, || e.eval(&mut Env::new())).unwrap_err();
+/// assert!(err.to_string().contains("100000"));
+/// ```
+pub fn with_step_limit<T>(steps: u64, f: impl FnOnce() -> T) -> T {
+    let budget = StepBudget { left: std::sync::atomic::AtomicU64::new(steps), limit: steps };
+    with_steps(Some(std::sync::Arc::new(budget)), f)
+}
+
+/// The budget of the innermost [`with_step_limit`] on this thread, to share with workers.
+pub fn current_steps() -> Option<std::sync::Arc<StepBudget>> {
+    STEPS.with(|s| s.borrow().clone())
+}
+
+/// Runs `f` charging `budget` (from [`current_steps`] on another thread).
+pub fn with_steps<T>(budget: Option<std::sync::Arc<StepBudget>>, f: impl FnOnce() -> T) -> T {
+    let saved = STEPS.with(|s| s.replace(budget));
+    let out = f();
+    STEPS.with(|s| s.replace(saved));
+    out
+}
+
+/// Charges `n` steps against the current budget. Steps are gathered per thread and taken
+/// from the shared count 4096 at a time (a shared counter touched on every step would make
+/// the threads fight over one cache line); the limit may be overrun by that much per thread.
+fn step_n(n: u64) -> std::result::Result<(), EvalError> {
+    const BATCH: u64 = 4096;
+    std::thread_local! {
+        static PENDING: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+    }
+    let pending = PENDING.with(|p| {
+        let v = p.get().saturating_add(n);
+        p.set(if v >= BATCH { 0 } else { v });
+        v
+    });
+    STEPS.with(|s| match &*s.borrow() {
+        None => Ok(()),
+        Some(b) => {
+            use std::sync::atomic::Ordering::Relaxed;
+            // a read of a line nobody writes is cheap; once exhausted, every thread stops
+            let exhausted = b.left.load(Relaxed) == 0;
+            if !exhausted && pending < BATCH {
+                Ok(())
+            } else if !exhausted && b.left.fetch_update(Relaxed, Relaxed, |left| left.checked_sub(pending)).is_ok() {
+                Ok(())
+            } else {
+                b.left.store(0, Relaxed);
+                Err(EvalError::Invalid(format!(
+                    "more than {} evaluation steps (sum/prod terms, powers; the work limit, raise it with --max-work)",
+                    b.limit
+                )))
+            }
+        }
+    })
+}
+
+/// Charges one fold term.
+fn step() -> std::result::Result<(), EvalError> {
+    step_n(1)
+}
+
 /// A name → value binding list (few names: a linear scan is fastest).
 pub type Env = Vec<(String, Rational)>;
 
@@ -355,6 +438,7 @@ impl Expr {
             }
             Expr::Pow(a, k) => {
                 let k = small_int(&k.eval(env)?, "exponent")?;
+                step_n(1 + k.unsigned_abs() / 64)?;
                 pow(&a.eval(env)?, k)?
             }
             Expr::Binom(n, k) => {
@@ -370,6 +454,7 @@ impl Expr {
                 if n < 0 || i < 0 || i > n {
                     Rational::zero()
                 } else {
+                    step_n(1 + (n as u64).saturating_mul(n as u64) / 30_000)?;
                     crate::poly::bernstein::bernstein(i as usize, n as usize, &x.eval(env)?)
                 }
             }
@@ -377,6 +462,7 @@ impl Expr {
                 let (lo, hi) = (small_int(&lo.eval(env)?, "lower bound")?, small_int(&hi.eval(env)?, "upper bound")?);
                 let mut acc = if *is_sum { Rational::zero() } else { Rational::one() };
                 for k in lo..=hi {
+                    step()?;
                     env.push((r.clone(), Rational::from_i64(k)));
                     let v = body.eval(env);
                     env.pop();
@@ -432,6 +518,7 @@ impl Expr {
                 let (lo, hi) = (int(lo, params, "lower bound")?, int(hi, params, "upper bound")?);
                 let mut acc = (0, 0);
                 for k in lo..=hi {
+                    step()?;
                     params.push((r.clone(), Rational::from_i64(k)));
                     let d = body.degree(var, params);
                     params.pop();

@@ -44,7 +44,7 @@ pub enum Reading {
 }
 
 use crate::error::{Error, Result};
-use crate::num::scalar::Exact;
+use crate::num::scalar::{Exact, Scalar};
 use std::fmt;
 
 /// Largest number of grid points one check may visit.
@@ -110,6 +110,28 @@ pub struct GridProver<S> {
     nodes: Vec<Vec<S>>,
 }
 
+/// A value that occurs twice in `vals`, if any, decided by `==`. The values are sorted by
+/// their `to_f64` first and only neighbours whose approximations agree to a relative `1e-6`
+/// are compared exactly: `O(d log d)` instead of `O(d²)` comparisons, and exact because
+/// equal values cannot approximate apart (the law of [`Scalar::to_f64`]).
+fn repeated_value<S: Scalar>(vals: &[S]) -> Option<&S> {
+    let approx: Vec<f64> = vals.iter().map(|v| v.to_f64() + 0.0).collect();
+    let mut order: Vec<usize> = (0..vals.len()).collect();
+    order.sort_by(|&a, &b| approx[a].total_cmp(&approx[b]));
+    let close = |x: f64, y: f64| x == y || (x - y).abs() <= 1e-6 * x.abs().max(y.abs()) || x.is_nan() || y.is_nan();
+    for (k, &a) in order.iter().enumerate() {
+        for &b in &order[k + 1..] {
+            if !close(approx[a], approx[b]) {
+                break;
+            }
+            if vals[a] == vals[b] {
+                return Some(&vals[a]);
+            }
+        }
+    }
+    None
+}
+
 impl<S: Exact> GridProver<S> {
     /// The default grid: the integers `0, 1, …, d_j` for variable `j`.
     ///
@@ -141,12 +163,8 @@ impl<S: Exact> GridProver<S> {
                 });
             }
             vals.truncate(d + 1);
-            for a in 0..vals.len() {
-                if vals[a + 1..].contains(&vals[a]) {
-                    return Err(Error::InvalidArgument {
-                        message: format!("variable {j}: grid value {} repeats", vals[a]),
-                    });
-                }
+            if let Some(v) = repeated_value(&vals) {
+                return Err(Error::InvalidArgument { message: format!("variable {j}: grid value {v} repeats") });
             }
             total = total.saturating_mul(d + 1);
             kept.push(vals);

@@ -349,6 +349,19 @@ impl RationalBezier<BigRational> {
         isolate_in(&self.weights(), a, b)
     }
 
+    /// [`Self::denominator_roots`] within a work budget.
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the isolation would exceed `budget`.
+    pub fn denominator_roots_within(
+        &self,
+        a: &BigRational,
+        b: &BigRational,
+        budget: &crate::work::Budget,
+    ) -> Result<Option<Vec<Root>>> {
+        crate::poly::roots::isolate_in_within(&self.weights(), a, b, budget)
+    }
+
     /// Checks that the curve is defined on `[a, b]` (`0 ≤ a < b ≤ 1`).
     ///
     /// # Errors

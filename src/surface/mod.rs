@@ -605,24 +605,28 @@ impl RationalPatch {
     /// assert!(segs.iter().flatten().all(|&(a, b)| (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)));
     /// ```
     pub fn contour_polyline(&self, axis: usize, c: &BigRational, res: usize) -> Vec<[(f64, f64); 2]> {
-        let coeffs = self.contour_polynomial(axis, c);
+        let coeffs: Vec<Vec<f64>> =
+            self.contour_polynomial(axis, c).iter().map(|r| r.iter().map(|a| a.to_f64()).collect()).collect();
         let (m, n) = self.degree();
-        let f = |u: f64, v: f64| {
-            let (bu, bv) = (crate::poly::bernstein::bernstein_all(m, &u), crate::poly::bernstein::bernstein_all(n, &v));
-            coeffs
-                .iter()
-                .enumerate()
-                .map(|(i, r)| r.iter().enumerate().map(|(j, a)| a.to_f64() * bu[i] * bv[j]).sum::<f64>())
-                .sum::<f64>()
-        };
         let res = res.max(1);
         let h = 1.0 / res as f64;
+        // F on the (res+1)² grid nodes, each once: G[b][i] = Σ_j c_ij B_j(v_b), then
+        // F(u_a, v_b) = Σ_i B_i(u_a) G[b][i] — O((m+1)(n+1)·res + (m+1)·res²) products
+        let bu: Vec<Vec<f64>> = (0..=res).map(|a| crate::poly::bernstein::bernstein_all(m, &(a as f64 * h))).collect();
+        let g: Vec<Vec<f64>> = (0..=res)
+            .map(|b| {
+                let bv = crate::poly::bernstein::bernstein_all(n, &(b as f64 * h));
+                coeffs.iter().map(|r| r.iter().zip(&bv).map(|(x, y)| x * y).sum::<f64>()).collect()
+            })
+            .collect();
+        let node = |a: usize, b: usize| bu[a].iter().zip(&g[b]).map(|(x, y)| x * y).sum::<f64>();
+        let values: Vec<Vec<f64>> = (0..=res).map(|a| (0..=res).map(|b| node(a, b)).collect()).collect();
         let mut out = Vec::new();
         for a in 0..res {
             for b in 0..res {
                 let (u0, v0) = (a as f64 * h, b as f64 * h);
                 let corners = [(u0, v0), (u0 + h, v0), (u0 + h, v0 + h), (u0, v0 + h)];
-                let vals: Vec<f64> = corners.iter().map(|&(u, v)| f(u, v)).collect();
+                let vals = [values[a][b], values[a + 1][b], values[a + 1][b + 1], values[a][b + 1]];
                 let mut cuts = Vec::new();
                 for e in 0..4 {
                     let (p, q) = (corners[e], corners[(e + 1) % 4]);

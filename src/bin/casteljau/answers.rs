@@ -267,8 +267,13 @@ pub(crate) fn eval_rational(c: &RationalBezier<BigRational>, ts: &[BigRational])
     Ok((text, json!({"degree": c.degree(), "rational": true, "values": js, "defined_on_0_1": defined})))
 }
 
-pub(crate) fn defined(c: &RationalBezier<BigRational>, a: &BigRational, b: &BigRational) -> Result<Answer> {
-    let roots = c.denominator_roots(a, b);
+pub(crate) fn defined(
+    c: &RationalBezier<BigRational>,
+    a: &BigRational,
+    b: &BigRational,
+    budget: &casteljau::work::Budget,
+) -> Result<Answer> {
+    let roots = c.denominator_roots_within(a, b, budget)?;
     let (text, failed, list) = match &roots {
         None => ("undefined everywhere: the denominator is identically 0".to_string(), true, vec![]),
         Some(r) if r.is_empty() => (format!("defined on [{a}, {b}]: the denominator has no root there"), false, vec![]),
@@ -304,9 +309,16 @@ pub(crate) fn conic(c: &RationalBezier<BigRational>) -> Result<(String, Value)> 
     Ok((text, json!({"conic": kind.as_str(), "shape_factor": shape.map(|k| k.to_string())})))
 }
 
-pub(crate) fn implicit(c: &RationalBezier<BigRational>, poly: &str) -> Result<Answer> {
+pub(crate) fn implicit(
+    c: &RationalBezier<BigRational>,
+    poly: &str,
+    budget: &casteljau::work::Budget,
+) -> Result<Answer> {
     use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
-    Ok(match prove_implicit(c, poly)? {
+    // about 0.1 µs per evaluation step
+    let steps = (budget.limit / 1e2).min(u64::MAX as f64) as u64;
+    let outcome = casteljau::proof::expr::with_step_limit(steps, || prove_implicit(c, poly))?;
+    Ok(match outcome {
         ImplicitOutcome::Proved { degree_bound, parameters } => Answer {
             text: format!(
                 "proved: f(x(t)) ≡ 0 — W^d·f(X/W) has degree ≤ {degree_bound} and vanishes at {} parameters with W ≠ 0",

@@ -436,6 +436,25 @@ pub struct ProveArgs {
     /// No progress line on a terminal.
     #[arg(long, short)]
     pub quiet: bool,
+    /// Work budget per claim, in work units (about 1 ns each on a 2-core machine of 2026): a
+    /// claim whose expressions need more evaluation steps is reported as malformed (exit 2).
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
+}
+
+impl CurveArgs {
+    /// The `--max-work` budget.
+    pub fn budget(&self) -> casteljau::work::Budget {
+        casteljau::work::Budget::new(self.max_work, "--max-work")
+    }
+}
+
+/// A positive work budget (`1e12`, `5000000000`).
+pub fn parse_work(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 => Ok(x),
+        _ => Err(format!("{s:?} is not a positive number of work units (e.g. 1e12)")),
+    }
 }
 
 /// Weights of a rational curve (for eval, subdivide, elevate, implicit, conic, classify).
@@ -470,4 +489,8 @@ pub struct CurveArgs {
     /// No progress line on a terminal.
     #[arg(long, short)]
     pub quiet: bool,
+    /// Work budget per curve, in work units (about 1 ns each on a 2-core machine of 2026): an
+    /// answer whose estimated cost exceeds it is refused (exit 2) before any work starts.
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
 }

@@ -215,7 +215,9 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
         claims
             .par_iter()
             .map(|c| {
-                let r = catalogue::check(c);
+                // about 0.1 µs per evaluation step
+                let steps = (args.max_work / 1e2).min(u64::MAX as f64) as u64;
+                let r = casteljau::proof::expr::with_step_limit(steps, || catalogue::check(c));
                 let k = finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 if progress {
                     eprint!("\r\x1b[K[{k}/{}] {}", claims.len(), c.id);

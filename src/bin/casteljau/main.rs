@@ -16,7 +16,7 @@ mod splines;
 use args::{Cli, Command};
 use batch::{Answer, MAX_TRIANGLE_DEGREE, Weights, batch, option_number, output_limit, rational_batch, rational_curve};
 use casteljau::error::{Error, Result};
-use casteljau::rat;
+use casteljau::{rat, work};
 use clap::Parser;
 use num_rational::BigRational;
 use std::io::Write;
@@ -36,8 +36,12 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Prove(args) => commands::prove(&args, out),
         Command::Eval { t, rational, curve } => {
             let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
+            let budget = curve.budget();
             rational_batch(&rational, curve, out, move |c, w| {
                 let ts = ts.clone()?;
+                let (n, beta) = (c.degree(), work::max_bits(c.points()));
+                let estimate: f64 = ts.iter().map(|t| work::evaluation(n, c.dim(), beta, work::bits(t))).sum();
+                budget.check(format!("evaluating degree {n} at {} parameters", ts.len()), estimate)?;
                 match w {
                     Weights::Polynomial => answers::eval(c, &ts).map(Answer::from),
                     w => answers::eval_rational(&rational_curve(c, w)?, &ts).map(Answer::from),
@@ -46,8 +50,25 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         }
         Command::Subdivide { t, depth, rational, curve } => {
             let t0 = option_number("--t", &t);
+            let budget = curve.budget();
             rational_batch(&rational, curve, out, move |c, w| {
                 let t0 = t0.clone()?;
+                let (n, beta) = (c.degree(), work::max_bits(c.points()));
+                let estimate = match depth {
+                    None => work::subdivision(n, c.dim(), beta, work::bits(&t0)),
+                    Some(k) => (0..k.min(64))
+                        .map(|j| {
+                            2f64.powi(j as i32)
+                                * work::subdivision(
+                                    n,
+                                    c.dim(),
+                                    beta + j as u64 * n as u64 * work::bits(&t0),
+                                    work::bits(&t0),
+                                )
+                        })
+                        .sum(),
+                };
+                budget.check(format!("subdividing degree {n}"), estimate)?;
                 match w {
                     Weights::Polynomial => answers::subdivide(c, &t0, depth).map(Answer::from),
                     _ if depth.is_some_and(|d| d != 1) => Err(Error::InvalidArgument {
@@ -57,12 +78,23 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                 }
             })
         }
-        Command::Elevate { by, rational, curve } => rational_batch(&rational, curve, out, move |c, w| match w {
-            Weights::Polynomial => answers::elevate(c, by).map(Answer::from),
-            w => answers::elevate_rational(&rational_curve(c, w)?, by).map(Answer::from),
-        }),
+        Command::Elevate { by, rational, curve } => {
+            let budget = curve.budget();
+            rational_batch(&rational, curve, out, move |c, w| {
+                let n = c.degree();
+                budget.check(
+                    format!("elevating degree {n} by {by}"),
+                    work::elevation(n, by, c.dim(), work::max_bits(c.points())),
+                )?;
+                match w {
+                    Weights::Polynomial => answers::elevate(c, by).map(Answer::from),
+                    w => answers::elevate_rational(&rational_curve(c, w)?, by).map(Answer::from),
+                }
+            })
+        }
         Command::Implicit { poly, rational, curve } => {
-            rational_batch(&rational, curve, out, move |c, w| answers::implicit(&rational_curve(c, w)?, &poly))
+            let budget = curve.budget();
+            rational_batch(&rational, curve, out, move |c, w| answers::implicit(&rational_curve(c, w)?, &poly, &budget))
         }
         Command::Defined { from, to, rational, curve } => {
             let range =
@@ -73,9 +105,10 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                         Ok((a, b))
                     }
                 });
+            let budget = curve.budget();
             rational_batch(&rational, curve, out, move |c, w| {
                 let (a, b) = range.clone()?;
-                answers::defined(&rational_curve(c, w)?, &a, &b)
+                answers::defined(&rational_curve(c, w)?, &a, &b, &budget)
             })
         }
         Command::Surface { op } => commands::surface(op, out),
@@ -85,16 +118,42 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
         }
-        Command::Power { curve } => batch(&curve, out, |c| Ok(answers::power(c).into())),
+        Command::Power { curve } => batch(&curve, out, |c| {
+            let n = c.degree();
+            curve.budget().check(
+                format!("the power form of degree {n}"),
+                work::power_form(n, c.dim(), work::max_bits(c.points())),
+            )?;
+            Ok(answers::power(c).into())
+        }),
         Command::Triangle { t, curve } => {
             let t = option_number("--t", &t);
-            batch(&curve, out, move |c| {
+            batch(&curve, out, |c| {
                 output_limit("triangle of degree", c.degree(), MAX_TRIANGLE_DEGREE)?;
-                answers::triangle(c, &t.clone()?).map(Answer::from)
+                let t = t.clone()?;
+                let n = c.degree();
+                curve.budget().check(
+                    format!("the de Casteljau scheme of degree {n} at a {}-bit t", work::bits(&t)),
+                    work::de_casteljau_scheme(n, c.dim(), work::max_bits(c.points()), work::bits(&t)),
+                )?;
+                answers::triangle(c, &t).map(Answer::from)
             })
         }
-        Command::Derivative { order, curve } => batch(&curve, out, |c| Ok(answers::derivative(c, order).into())),
-        Command::Reduce { curve } => batch(&curve, out, |c| Ok(answers::reduce(c).into())),
+        Command::Derivative { order, curve } => batch(&curve, out, |c| {
+            let n = c.degree();
+            curve.budget().check(
+                format!("the derivative of order {order} of degree {n}"),
+                work::derivative(n, order.min(n), c.dim(), work::max_bits(c.points())),
+            )?;
+            Ok(answers::derivative(c, order).into())
+        }),
+        Command::Reduce { curve } => batch(&curve, out, |c| {
+            let n = c.degree();
+            curve
+                .budget()
+                .check(format!("reducing degree {n}"), work::power_form(n, c.dim(), work::max_bits(c.points())))?;
+            Ok(answers::reduce(c).into())
+        }),
         Command::Classify { float, detail, rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| match w {
                 Weights::Polynomial => answers::classify(c, float, detail == args::Detail::Full).map(Answer::from),

@@ -1,0 +1,157 @@
+//! Work estimates: what an exact operation will cost, computed from its input before it runs.
+//!
+//! Exact arithmetic has no rounding, so the size of the numbers grows with the work: de
+//! Casteljau at `t = p/q` multiplies bit lengths by the degree, a power form carries binomials
+//! of `n` bits. An accepted input must get its answer in bounded time, so every command of the
+//! CLI estimates the cost of its answer here first and refuses (exit 2, naming the limit and the
+//! option that raises it) when the estimate exceeds the budget.
+//!
+//! # Units
+//! A *work unit* is about one nanosecond of this project's reference machine (2 cores, 2026):
+//! each formula below counts big-integer limb operations (64-bit words) of the dominant loop
+//! and carries a constant fitted to measured run times, so `1e10` units is about ten seconds.
+//! The estimates are for the typical case (they are not worst-case bounds); where the work
+//! depends on the input beyond its sizes (root isolation, expression folds), the operation
+//! also counts its steps while running and stops with the same error.
+//!
+//! With `L(b) = b/64 + 1` limbs for a `b`-bit number, `n` the degree, `d` the dimension, `β`
+//! the largest bit length of an input number (numerator plus denominator) and `τ` that of
+//! the parameter, and `G = 18` the cost of a gcd per limb² (reducing an output fraction):
+//!
+//! | operation | estimate |
+//! | --- | --- |
+//! | evaluation at `t` (fraction-free Horner) | `d·(n·L(g)·L(τ) + G·L(g)²)`, `g = β + nτ` |
+//! | subdivision at `t` | `d·(n²/2·L(g)·L(τ) + 2(n+1)·G·L(g)²)` |
+//! | the whole scheme (`triangle`) | subdivision `+ d·(n+1)(n+2)/2·G·L(g)²` |
+//! | power form, degree reduction | `8·d·n²·L(β + n)` |
+//! | derivative of order `k` | `100·d·n·k·L(β + k·log₂ n)` |
+//! | degree elevation by `r` | `3·d·(n + r)·n·L(β + n + r)` |
+//! | denominator root isolation | `250·n²·L(β + n)` up front, then `n²·L(b)` per split (`b`: current bits) |
+//!
+//! ```
+//! use casteljau::work::{Budget, power_form};
+//! let budget = Budget::new(1e10, "--max-work");
+//! assert!(budget.check("power form", power_form(3, 2, 16)).is_ok());
+//! let e = budget.check("power form of degree 100000", power_form(100_000, 2, 16)).unwrap_err();
+//! assert!(e.to_string().contains("--max-work"));
+//! ```
+
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use num_rational::BigRational;
+
+/// The default budget of the command line: about ten seconds of work.
+pub const DEFAULT_MAX_WORK: f64 = 1e10;
+
+/// A work limit and the option that raises it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Budget {
+    /// The largest accepted estimate, in work units.
+    pub limit: f64,
+    /// How a user raises it (e.g. `--max-work`), named in the error.
+    pub option: &'static str,
+}
+
+impl Budget {
+    /// A budget of `limit` units, raised with `option`.
+    pub fn new(limit: f64, option: &'static str) -> Self {
+        Budget { limit, option }
+    }
+
+    /// No limit (library use).
+    pub fn unlimited() -> Self {
+        Budget { limit: f64::INFINITY, option: "" }
+    }
+
+    /// `Ok` when `estimate ≤ limit`, else [`Error::WorkLimit`] naming `what`.
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the estimate exceeds the limit.
+    pub fn check(&self, what: impl Into<String>, estimate: f64) -> Result<()> {
+        if estimate <= self.limit {
+            Ok(())
+        } else {
+            Err(Error::WorkLimit { what: what.into(), estimate, limit: self.limit, option: self.option })
+        }
+    }
+}
+
+/// Limbs of a `bits`-bit number: `bits/64 + 1`.
+pub fn limbs(bits: u64) -> f64 {
+    (bits / 64 + 1) as f64
+}
+
+/// Bit length of an exact number: numerator plus denominator.
+pub fn bits(x: &BigRational) -> u64 {
+    x.numer().bits() + x.denom().bits()
+}
+
+/// The largest [`bits`] over the coordinates of `points` (0 when there are none).
+pub fn max_bits(points: &[Point<BigRational>]) -> u64 {
+    points.iter().flat_map(|p| p.coords.iter()).map(bits).max().unwrap_or(0)
+}
+
+/// The largest [`bits`] of `values`.
+pub fn max_bits_of(values: &[BigRational]) -> u64 {
+    values.iter().map(bits).max().unwrap_or(0)
+}
+
+/// Cost of reducing one fraction (a gcd) of `limbs` words, relative to a limb product.
+const GCD: f64 = 18.0;
+
+/// Bits of the numbers after `n` de Casteljau steps at a `tau`-bit parameter.
+fn grown(beta: u64, n: usize, tau: u64) -> u64 {
+    beta.saturating_add((n as u64).saturating_mul(tau))
+}
+
+/// Evaluation at one parameter of `tau` bits (fraction-free Horner): degree `n`, dimension
+/// `dim`, input numbers of `beta` bits.
+pub fn evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+    let g = limbs(grown(beta, n, tau));
+    dim as f64 * (n as f64 * g * limbs(tau) + GCD * g * g)
+}
+
+/// One subdivision at a `tau`-bit parameter (fraction-free triangle, `2(n+1)` reduced points).
+pub fn subdivision(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+    let g = limbs(grown(beta, n, tau));
+    let nf = n as f64;
+    dim as f64 * (nf * nf / 2.0 * g * limbs(tau) + 2.0 * (nf + 1.0) * GCD * g * g)
+}
+
+/// The whole de Casteljau scheme (`(n+1)(n+2)/2` reduced points).
+pub fn de_casteljau_scheme(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+    let g = limbs(grown(beta, n, tau));
+    let nf = n as f64;
+    subdivision(n, dim, beta, tau) + dim as f64 * (nf + 1.0) * (nf + 2.0) / 2.0 * GCD * g * g
+}
+
+/// Conversion to (or from) the power form, and exact degree reduction.
+pub fn power_form(n: usize, dim: usize, beta: u64) -> f64 {
+    let nf = n as f64 + 1.0;
+    8.0 * dim as f64 * nf * nf * limbs(beta.saturating_add(n as u64))
+}
+
+/// The derivative of order `k` of a degree-`n` curve (numbers grow by `k·log₂ n` bits).
+pub fn derivative(n: usize, k: usize, dim: usize, beta: u64) -> f64 {
+    let growth = (k as u64).saturating_mul(u64::from(usize::BITS - n.leading_zeros()));
+    100.0 * dim as f64 * (n as f64 + 1.0) * (k as f64 + 1.0) * limbs(beta.saturating_add(growth))
+}
+
+/// Degree elevation of a degree-`n` curve by `r`.
+pub fn elevation(n: usize, r: usize, dim: usize, beta: u64) -> f64 {
+    let m = n.saturating_add(r);
+    3.0 * dim as f64 * (m as f64 + 1.0) * (n as f64 + 1.0) * limbs(beta.saturating_add(m as u64))
+}
+
+/// The up-front part of isolating the roots of a degree-`n` polynomial with `beta`-bit
+/// coefficients (power form, square-free part).
+pub fn root_isolation(n: usize, beta: u64) -> f64 {
+    let nf = n as f64 + 1.0;
+    250.0 * nf * nf * limbs(beta.saturating_add(n as u64))
+}
+
+/// One subdivision step of root isolation (degree `n`, `beta`-bit coefficients).
+pub fn root_split(n: usize, beta: u64) -> f64 {
+    let nf = n as f64;
+    nf * nf * limbs(beta.saturating_add(2 * n as u64))
+}
