@@ -186,3 +186,89 @@ fn quadratic_extension_sign_of_near_cancellation() {
         QuadraticExt::from_ratio(&BigRational::new(3.into(), 2.into()))
     );
 }
+
+mod polynomial_routes {
+    use casteljau::poly::polynomial::{gcd, square_free};
+    use casteljau::poly::roots::{Root, isolate_bernstein};
+    use casteljau::rat;
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+
+    fn mul(a: &[BigRational], b: &[BigRational]) -> Vec<BigRational> {
+        let mut out = vec![rat(0); a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] = out[i + j].clone() + x.clone() * y;
+            }
+        }
+        out
+    }
+
+    fn poly(max_degree: usize) -> impl Strategy<Value = Vec<BigRational>> {
+        prop::collection::vec(-20i64..=20, 2..=max_degree + 1)
+            .prop_filter("non-constant", |v| v.iter().skip(1).any(|&x| x != 0))
+            .prop_map(|v| casteljau::poly::polynomial::trim(v.into_iter().map(rat).collect()))
+            .prop_filter("non-constant", |p| p.len() >= 2)
+    }
+
+    /// Evaluates a power-form polynomial.
+    fn eval(p: &[BigRational], t: &BigRational) -> BigRational {
+        p.iter().rev().fold(rat(0), |acc, c| acc * t + c)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// The integer subresultant gcd of `a·c` and `b·c` is a multiple of `c` that divides both.
+        #[test]
+        fn gcd_contains_the_common_factor_and_divides_both(a in poly(4), b in poly(4), c in poly(3)) {
+            let (ac, bc) = (mul(&a, &c), mul(&b, &c));
+            let g = gcd(ac.clone(), bc.clone());
+            prop_assert!(g.len() >= c.len());
+            prop_assert!(casteljau::poly::polynomial::rem(ac, &g).is_empty());
+            prop_assert!(casteljau::poly::polynomial::rem(bc, &g).is_empty());
+            prop_assert!(casteljau::poly::polynomial::rem(g, &casteljau::poly::polynomial::trim(c)).is_empty());
+        }
+
+        /// `square_free(a²·b)` has the roots of `a·b`, each simple: it divides `a·b` and shares
+        /// no factor with its derivative.
+        #[test]
+        fn square_free_keeps_every_root_once(a in poly(3), b in poly(3)) {
+            let p = mul(&mul(&a, &a), &b);
+            let sf = square_free(p);
+            let ab = mul(&a, &b);
+            prop_assert!(casteljau::poly::polynomial::rem(ab, &sf).is_empty());
+            prop_assert_eq!(gcd(sf.clone(), casteljau::poly::polynomial::derivative(&sf)).len(), 1);
+            prop_assert!(casteljau::poly::polynomial::rem(square_free(a.clone()), &square_free(a.clone())).is_empty());
+        }
+
+        /// Roots placed at rational points of [0, 1] (with multiplicity) are found exactly or
+        /// isolated, each once; the isolating intervals hold a sign change.
+        #[test]
+        fn isolation_finds_planted_roots(roots in prop::collection::vec((0i64..=8, 1usize..=3), 1..=3)) {
+            let mut p = vec![rat(1)];
+            let mut distinct: Vec<BigRational> = vec![];
+            for (k, m) in &roots {
+                let r = BigRational::new((*k).into(), 8.into());
+                for _ in 0..*m {
+                    p = mul(&p, &[-r.clone(), rat(1)]);
+                }
+                if !distinct.contains(&r) {
+                    distinct.push(r);
+                }
+            }
+            distinct.sort();
+            // to Bernstein form of degree deg p
+            let pts: Vec<casteljau::Point<BigRational>> = p.iter().map(|c| casteljau::Point::new(vec![c.clone()])).collect();
+            let bern: Vec<BigRational> = casteljau::poly::bernstein::from_power(&pts).into_iter().map(|q| q.coords[0].clone()).collect();
+            let found = isolate_bernstein(&bern).unwrap();
+            prop_assert_eq!(found.len(), distinct.len());
+            for (f, r) in found.iter().zip(&distinct) {
+                match f {
+                    Root::Exact(x) => prop_assert_eq!(x, r),
+                    Root::Isolated(lo, hi) => prop_assert!(lo < r && r < hi && eval(&p, r) == rat(0)),
+                }
+            }
+        }
+    }
+}

@@ -152,3 +152,91 @@ fn robustness_a_trailing_comma_is_accepted_a_double_comma_is_not() {
     assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "b(1/2) = (1, 1)");
     refused(&["eval", "--t", "1/2", "0 0,, 2 2"], "empty number between commas");
 }
+
+/// A degree-`n` planar control polygon with small integer coordinates.
+fn polygon(n: usize) -> String {
+    (0..=n).map(|i| format!("{} {}", (i * 7919) % 2001, (i * 104_729) % 1999)).collect::<Vec<_>>().join(", ")
+}
+
+/// Refused before any work starts: exit 2, the estimate and the option that raises it, fast.
+fn refused_for_work(args: &[&str]) {
+    let start = std::time::Instant::now();
+    refused(args, "--max-work");
+    // a refusal is immediate; the bound only guards against a regression to hours of work
+    assert!(start.elapsed().as_secs() < 60, "{:?} took {:?}", &args[..1], start.elapsed());
+}
+
+#[test]
+fn robustness_documented_degree_commands_on_10001_points_refuse_by_estimate() {
+    let big = polygon(10_000);
+    for cmd in
+        [&["power"][..], &["reduce"], &["subdivide"], &["derivative", "--order", "5000"], &["elevate", "--by", "3"]]
+    {
+        let mut args = cmd.to_vec();
+        args.push(&big);
+        refused_for_work(&args);
+    }
+}
+
+#[test]
+fn robustness_eval_at_a_thousand_digit_parameter_refuses_by_estimate() {
+    let t = format!("1/{}", "7".repeat(997));
+    refused_for_work(&["eval", "--t", &t, &polygon(10_000)]);
+}
+
+#[test]
+fn robustness_triangle_of_degree_500_at_a_big_parameter_refuses_by_estimate() {
+    refused_for_work(&["triangle", "--t", "12345/67891", &polygon(500)]);
+}
+
+#[test]
+fn robustness_nested_sum_of_ten_to_the_ten_terms_stops_at_the_step_limit() {
+    refused_for_work(&["implicit", "--poly", "sum(r, 0, 100000, sum(s, 0, 100000, x))", "0 0, 1 1"]);
+}
+
+#[test]
+fn robustness_defined_with_positive_weights_at_degree_10000_is_immediate() {
+    let o = run(&["defined", &polygon(10_000)], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
+#[test]
+fn robustness_defined_with_mixed_weights_at_high_degree_refuses_by_estimate() {
+    let w: Vec<String> = (0..=3200).map(|i| if i % 3 == 0 { "-1".into() } else { format!("{}", 1 + i % 5) }).collect();
+    refused_for_work(&["defined", "--weights", &w.join(" "), &polygon(3200)]);
+}
+
+#[test]
+fn robustness_max_work_raises_and_lowers_the_budget() {
+    let c = polygon(300);
+    refused(&["power", "--max-work", "1000", &c], "raise it with --max-work");
+    assert_eq!(run(&["power", "--max-work", "1e12", &c], None).status.code(), Some(0));
+    refused(&["power", "--max-work", "-3", &c], "positive number of work units");
+}
+
+#[test]
+fn robustness_prove_with_a_hundred_thousand_instances_stops_at_the_step_limit() {
+    let dir = std::env::temp_dir().join(format!("casteljau-steps-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("c.toml"),
+        "seed = \"x\"\ntitle = \"x\"\n\n[[claim]]\nid = \"many\"\nsource = \"x\"\nstatement = \"x\"\nexpect = \"holds\"\n\
+         kind = \"identity\"\nvars = [\"t\"]\nparams = [\"n in 0..=99999\"]\nlhs = \"sum(k, 0, n, B(k, n, t))\"\nrhs = \"1\"\n",
+    )
+    .unwrap();
+    let start = std::time::Instant::now();
+    let o = run(&["prove", dir.to_str().unwrap()], None);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--max-work"), "{}", stderr(&o));
+    assert!(start.elapsed().as_secs() < 60);
+}
+
+#[test]
+fn robustness_surface_contour_of_a_64_by_64_patch_on_a_1000_grid_answers() {
+    let net: Vec<String> =
+        (0..65 * 65).map(|i| format!("{} {} {}", i % 7 - 3, (i * 3) % 11 - 5, (i * 5) % 13 - 6)).collect();
+    let o =
+        run(&["surface", "contour", "--degree", "64,64", "--z", "1/2", "--polyline", "1000", &net.join(", ")], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}

@@ -106,23 +106,30 @@ pub fn primitive_part(p: Vec<BigInt>) -> Vec<BigInt> {
 }
 
 /// The pseudo-remainder `lc(b)^(deg a − deg b + 1)·a mod b`, on integers (`b` non-zero,
-/// trimmed).
+/// trimmed, `deg a ≥ deg b`): exactly `deg a − deg b + 1` multiplications by `lc(b)`, even
+/// when a step finds a zero leading coefficient (the subresultant sequence divides by the
+/// factor this power predicts).
 fn pseudo_rem(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
     let lb = b.last().expect("non-zero divisor");
     let mut a = a;
-    while a.len() >= b.len() && !a.is_empty() {
-        let la = a.last().expect("non-empty").clone();
-        let shift = a.len() - b.len();
-        for x in a.iter_mut() {
+    if a.len() < b.len() {
+        return a;
+    }
+    let steps = a.len() - b.len() + 1;
+    for step in 0..steps {
+        let top = a.len() - 1 - step; // the coefficient eliminated in this step
+        let la = a[top].clone();
+        for x in a[..=top].iter_mut() {
             *x *= lb;
         }
+        let shift = top + 1 - b.len();
         for (i, c) in b.iter().enumerate() {
             a[shift + i] -= &la * c;
         }
+    }
+    a.truncate(b.len() - 1);
+    while a.last().is_some_and(num_traits::Zero::is_zero) {
         a.pop();
-        while a.last().is_some_and(num_traits::Zero::is_zero) {
-            a.pop();
-        }
     }
     a
 }

@@ -127,9 +127,9 @@ fn step_n(n: u64) -> std::result::Result<(), EvalError> {
             use std::sync::atomic::Ordering::Relaxed;
             // a read of a line nobody writes is cheap; once exhausted, every thread stops
             let exhausted = b.left.load(Relaxed) == 0;
-            if !exhausted && pending < BATCH {
-                Ok(())
-            } else if !exhausted && b.left.fetch_update(Relaxed, Relaxed, |left| left.checked_sub(pending)).is_ok() {
+            let within = !exhausted
+                && (pending < BATCH || b.left.fetch_update(Relaxed, Relaxed, |left| left.checked_sub(pending)).is_ok());
+            if within {
                 Ok(())
             } else {
                 b.left.store(0, Relaxed);
