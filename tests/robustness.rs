@@ -240,3 +240,34 @@ fn robustness_surface_contour_of_a_64_by_64_patch_on_a_1000_grid_answers() {
         run(&["surface", "contour", "--degree", "64,64", "--z", "1/2", "--polyline", "1000", &net.join(", ")], None);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
+
+#[test]
+fn robustness_cr_only_line_endings_are_lines() {
+    let o =
+        run(&["eval", "--t", "1/2", "--json"], Some("0 0, 1 1, 2 0\r1 1, 2 2, 3 1\r\r# note\r4 4, 5 5\r\n6 6, 7 7\n"));
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let lines: Vec<serde_json::Value> = common::stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let numbers: Vec<u64> = lines.iter().map(|v| v["line"].as_u64().unwrap()).collect();
+    assert_eq!(numbers, [1, 2, 5, 6]);
+}
+
+#[test]
+fn robustness_plot_title_with_a_control_character_is_valid_xml() {
+    let o = run(&["plot", "--title", "a\u{1}b<&\"", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(0));
+    let svg = common::stdout(&o);
+    assert!(!svg.contains('\u{1}'));
+    assert!(svg.contains("a\u{FFFD}b&lt;&amp;"));
+}
+
+#[test]
+fn robustness_plot_features_of_a_glyph_cubic_with_a_far_double_point_keeps_the_curve_large() {
+    // the double point lies near (−1.1e10, −2.6e10): drawn as a labelled arrow
+    let o = run(&["plot", "--features", "48 43, 22 23, 13 43, 1 56"], None);
+    assert_eq!(o.status.code(), Some(0));
+    let svg = common::stdout(&o);
+    let view = svg.split("viewBox=\"").nth(1).unwrap().split('"').next().unwrap();
+    let v: Vec<f64> = view.split(' ').map(|x| x.parse().unwrap()).collect();
+    assert!(v[2] < 200.0 && v[3] < 200.0, "view box {view}");
+    assert!(svg.contains("far away"));
+}

@@ -56,7 +56,16 @@ fn num(v: f64) -> String {
 }
 
 fn esc(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+    // characters XML 1.0 forbids (C0 controls but tab, LF, CR; U+FFFE, U+FFFF) become U+FFFD
+    let allowed: String = s
+        .chars()
+        .map(|c| match c {
+            '\t' | '\n' | '\r' => c,
+            c if (c as u32) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}' => '\u{FFFD}',
+            c => c,
+        })
+        .collect();
+    allowed.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
 impl Figure {
@@ -458,18 +467,32 @@ pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &Cur
     if opts.features
         && let Some(k) = &klass
     {
+        // features far from the control polygon would shrink the curve to a speck: they are
+        // drawn as an arrow from the polygon's edge towards them, labelled with the position
+        let (lo, hi) = bounds(&poly);
+        let near = |q: (f64, f64)| q.0 >= lo.0 - size && q.0 <= hi.0 + size && q.1 >= lo.1 - size && q.1 <= hi.1 + size;
+        let centre = ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0);
         if let Some(d) = &k.double_point {
             let p = f64_point(d);
-            fig.dot(p, 5.0, PALETTE[1]);
             let name = match k.node_type {
                 Some(NodeType::Cusp) => "cusp",
                 Some(NodeType::Acnode) => "acnode D",
                 _ => "double point D",
             };
-            fig.label(p, name, PALETTE[1]);
+            if near(p) {
+                fig.dot(p, 5.0, PALETTE[1]);
+                fig.label(p, name, PALETTE[1]);
+            } else if p.0.is_finite() && p.1.is_finite() {
+                let (dx, dy) = (p.0 - centre.0, p.1 - centre.1);
+                let len = (dx * dx + dy * dy).sqrt();
+                let from = (centre.0 + 0.6 * size * dx / len, centre.1 + 0.6 * size * dy / len);
+                let to = (centre.0 + 0.9 * size * dx / len, centre.1 + 0.9 * size * dy / len);
+                fig.arrow(from, to, PALETTE[1]);
+                fig.label(to, &format!("{name} far away at ({:.4e}, {:.4e})", p.0, p.1), PALETTE[1]);
+            }
         }
         for t in &k.inflection_parameters {
-            if let Some(p) = eval(&approx(t)) {
+            if let Some(p) = eval(&approx(t)).filter(|p| near(*p)) {
                 fig.dot(p, 4.0, PALETTE[2]);
                 fig.label(p, "inflection", PALETTE[2]);
             }
@@ -490,7 +513,6 @@ pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &Cur
             .and_then(|ml| crate::classify::canonical::canonical_map(curve, k, &ml, crate::proof::Reading::Corrected));
         if let Ok(map) = map {
             // reference points near the curve (far ones would only shrink the drawing)
-            let (lo, hi) = bounds(&poly);
             for (name, p) in &map.points {
                 let q = (p.coords[0].to_f64(), p.coords[1].to_f64());
                 let near = q.0 >= lo.0 - 0.25 * size
@@ -506,7 +528,8 @@ pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &Cur
             // quarter of the curve's size
             let m = |r: usize, c: usize| map.matrix[r][c].to_f64();
             let o = (m(0, 2), m(1, 2));
-            for (dx, dy) in [(m(0, 0), m(1, 0)), (m(0, 1), m(1, 1))] {
+            let axes = if near(o) { vec![(m(0, 0), m(1, 0)), (m(0, 1), m(1, 1))] } else { vec![] };
+            for (dx, dy) in axes {
                 let len = (dx * dx + dy * dy).sqrt();
                 if len > 0.0 {
                     fig.arrow(o, (o.0 + 0.25 * size * dx / len, o.1 + 0.25 * size * dy / len), PALETTE[4]);

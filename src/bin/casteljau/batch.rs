@@ -13,7 +13,7 @@ use casteljau::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
 use rayon::prelude::*;
 use serde_json::{Value, json};
-use std::io::{BufRead, IsTerminal, Read, Write};
+use std::io::{BufRead, IsTerminal, Write};
 
 /// The numbers of an option such as `--ratios`, errors prefixed with the option's name.
 pub fn numbers(option: &str, text: &str) -> Result<Vec<BigRational>> {
@@ -279,7 +279,8 @@ pub const MAX_LINE_BYTES: usize = 16 * 1024 * 1024;
 
 /// The batch lines of a file or stdin, streamed: `(line number, text)` for every line that is
 /// not blank or a `#` comment; a line that is not UTF-8 or longer than [`MAX_LINE_BYTES`] is an
-/// error for that line only. A UTF-8 byte-order mark and CRLF line endings are accepted.
+/// error for that line only. A UTF-8 byte-order mark and LF, CRLF and CR-only (classic Mac)
+/// line endings are accepted.
 struct Lines {
     reader: Box<dyn BufRead>,
     number: usize,
@@ -297,12 +298,62 @@ impl Lines {
     }
 }
 
+/// Reads one line into `buf` (at most `limit` bytes): up to and including the first `\n`, or
+/// the first `\r` (with a `\n` right after it, as in CRLF), which is stored as `\n`. Returns
+/// the bytes consumed (0 at the end of the input).
+fn read_line_any(reader: &mut dyn BufRead, buf: &mut Vec<u8>, limit: usize) -> std::io::Result<usize> {
+    let mut consumed = 0;
+    let mut after_cr = false;
+    loop {
+        let chunk = match reader.fill_buf() {
+            Ok(c) => c,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if after_cr {
+            // a CR ended the line; swallow the LF of a CRLF
+            if chunk.first() == Some(&b'\n') {
+                reader.consume(1);
+                consumed += 1;
+            }
+            return Ok(consumed);
+        }
+        if chunk.is_empty() {
+            return Ok(consumed);
+        }
+        let room = limit.saturating_sub(buf.len());
+        let end = chunk.iter().take(room).position(|&b| b == b'\n' || b == b'\r');
+        match end {
+            Some(i) => {
+                let cr = chunk[i] == b'\r';
+                buf.extend_from_slice(&chunk[..i]);
+                buf.push(b'\n');
+                reader.consume(i + 1);
+                consumed += i + 1;
+                if !cr {
+                    return Ok(consumed);
+                }
+                after_cr = true;
+            }
+            None => {
+                let n = chunk.len().min(room);
+                buf.extend_from_slice(&chunk[..n]);
+                reader.consume(n);
+                consumed += n;
+                if buf.len() >= limit {
+                    return Ok(consumed);
+                }
+            }
+        }
+    }
+}
+
 impl Iterator for Lines {
     type Item = (Option<usize>, std::result::Result<String, String>);
     fn next(&mut self) -> Option<Self::Item> {
         loop {
             let mut buf = Vec::new();
-            let read = (&mut self.reader).take(MAX_LINE_BYTES as u64 + 1).read_until(b'\n', &mut buf);
+            let read = read_line_any(&mut self.reader, &mut buf, MAX_LINE_BYTES + 1);
             match read {
                 Ok(0) => return None,
                 Ok(_) => {}
@@ -315,7 +366,7 @@ impl Iterator for Lines {
             if buf.len() > MAX_LINE_BYTES && buf.last() != Some(&b'\n') {
                 // skip the rest of the over-long line
                 let mut rest = Vec::new();
-                while self.reader.read_until(b'\n', &mut rest).is_ok_and(|n| n > 0) {
+                while read_line_any(&mut self.reader, &mut rest, MAX_LINE_BYTES).is_ok_and(|n| n > 0) {
                     if rest.last() == Some(&b'\n') {
                         break;
                     }
