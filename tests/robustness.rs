@@ -271,3 +271,19 @@ fn robustness_plot_features_of_a_glyph_cubic_with_a_far_double_point_keeps_the_c
     assert!(v[2] < 200.0 && v[3] < 200.0, "view box {view}");
     assert!(svg.contains("far away"));
 }
+
+#[test]
+fn robustness_ten_thousand_claims_parse_in_one_pass_with_their_lines() {
+    let mut text = String::from("seed = \"x\"\ntitle = \"x\"\n\n");
+    for i in 0..10_000 {
+        text += &format!(
+            "[[claim]]\nid = \"c{i}\"\nsource = \"x\"\nstatement = \"x\"\nexpect = \"holds\"\nkind = \"identity\"\n\
+             vars = [\"t\"]\nlhs = \"t + {i}\"\nrhs = \"{i} + t\"\n\n"
+        );
+    }
+    let claims = casteljau::catalogue::parse_claims("many.toml", &text).unwrap();
+    assert_eq!(claims.len(), 10_000);
+    // claim i starts at line 4 + 10 i; its id is on the next line
+    assert_eq!(claims[0].line, 5);
+    assert_eq!(claims[9_999].line, 5 + 10 * 9_999);
+}

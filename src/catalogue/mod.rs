@@ -162,11 +162,22 @@ pub fn parse_claims(file: &str, text: &str) -> Result<Vec<Claim>> {
         Some(v) => v.as_array().ok_or_else(|| err(None, "`claim` must be an array of tables ([[claim]])".into()))?,
     };
     let mut out = Vec::new();
+    // claims appear in file order: each id is searched from the previous one on, and lines are
+    // counted incrementally (linear in the file, not quadratic in the number of claims)
+    let (mut cursor, mut cursor_line) = (0usize, 1usize);
     for (k, c) in claims.iter().enumerate() {
         let t = c.as_table().ok_or_else(|| err(None, format!("claim {} is not a table", k + 1)))?;
         let s = |key: &str| t.get(key).and_then(|v| v.as_str()).map(str::to_string);
         let id = s("id").ok_or_else(|| err(None, format!("claim {} has no `id`", k + 1)))?;
-        let line = text.find(&format!("\"{id}\"")).map(|b| line_of(text, b));
+        let quoted = format!("\"{id}\"");
+        let line = match text[cursor..].find(&quoted) {
+            Some(b) => {
+                cursor_line += text[cursor..cursor + b].matches('\n').count();
+                cursor += b;
+                Some(cursor_line)
+            }
+            None => text.find(&quoted).map(|b| line_of(text, b)),
+        };
         let cerr = |m: String| err(line, format!("claim {id}: {m}"));
         let source = s("source").ok_or_else(|| cerr("missing `source`".into()))?;
         let statement = s("statement").ok_or_else(|| cerr("missing `statement`".into()))?;
