@@ -67,7 +67,7 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
     let c = |r: &mut Rng| curve(r, pts, 2);
     let mut a: Vec<String> = Vec::new();
     let s = |x: &str| x.to_string();
-    match r.below(17) {
+    match r.below(18) {
         0 => a.extend([s("eval"), s("--t"), number(r), c(r)]),
         1 => {
             a.extend([s("subdivide"), s("--t"), number(r)]);
@@ -145,6 +145,8 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
                 .collect();
             return (a, Some(lines.join("\n")));
         }
+        16 if r.chance(25) => return huge(r),
+        17 if r.chance(50) => return claim_file(r),
         _ => {
             // random tokens: options and values in any order
             let words = [
@@ -163,6 +165,71 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
             ];
             a.extend((0..r.below(6) + 1).map(|_| s(r.pick(&words))));
         }
+    }
+    (a, None)
+}
+
+/// Inputs at and past the documented sizes (degree 10,000, 1000-character parameters, nested
+/// folds, big grids): each must be refused by its work estimate or answered within the cap.
+fn huge(r: &mut Rng) -> (Vec<String>, Option<String>) {
+    let s = |x: &str| x.to_string();
+    let points = *[2000usize, 5000, 10_001, 10_002].get(r.below(4)).unwrap();
+    let poly: String =
+        (0..points).map(|i| format!("{} {}", (i * 7919) % 2001, (i * 104_729) % 1999)).collect::<Vec<_>>().join(", ");
+    let digits = format!("1/{}", "7".repeat(r.below(998) + 1));
+    let mut a: Vec<String> = match r.below(9) {
+        0 => vec![s("power")],
+        1 => vec![s("reduce")],
+        2 => vec![s("subdivide"), s("--t"), digits],
+        3 => vec![s("eval"), s("--t"), digits],
+        4 => vec![s("derivative"), s("--order"), r.below(points).to_string()],
+        5 => vec![s("elevate"), s("--by"), r.below(50).to_string()],
+        6 => {
+            let w: Vec<String> = (0..points).map(|i| if (i * 31) % 7 == 0 { s("-1") } else { s("2") }).collect();
+            vec![s("defined"), s("--weights"), w.join(" ")]
+        }
+        7 => vec![s("triangle"), s("--t"), s(r.pick(&["1/2", "12345/67891"]))],
+        _ => {
+            let inner = r.pick(&["x", "x*y", "x^100000", "B(3, 100000, x)", "C(100000, 50000)"]);
+            return (
+                vec![
+                    s("implicit"),
+                    s("--poly"),
+                    format!("sum(r, 0, 100000, sum(s, 0, 100000, {inner}))"),
+                    s("--max-work"),
+                    s("1e9"),
+                    s("0 0, 1 1"),
+                ],
+                None,
+            );
+        }
+    };
+    a.extend([s("--max-work"), s(r.pick(&["1e9", "1e8", "3e9"]))]);
+    // the polygon on stdin: argv strings are capped at 128 KiB
+    (a, Some(poly))
+}
+
+/// A claim file of random fragments (sizes at and past the limits, bad expressions), checked
+/// by `prove`.
+fn claim_file(r: &mut Rng) -> (Vec<String>, Option<String>) {
+    static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("casteljau-fuzz-claims-{}-{k}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let lhs = r.pick(&["B(j, n, t)", "sum(k, 0, n, B(k, n, t))", "t^n", "(t", "1/0", "prod(k, 1, n, t)", "C(n, j)"]);
+    let rhs = r.pick(&["1", "t", "sum(r, j, n, B(j, r, t) * B(r, n, t))", "x", "t^(n+1)/t"]);
+    let range = r.pick(&["0..=3", "0..=99999", "0..=100001", "-5000000000000000000..=5000000000000000000", "3..=1"]);
+    let extra = r.pick(&["", "steps = 4000000000\n", "degree = 1000000000\n", "unknown = 1\n"]);
+    let text = format!(
+        "seed = \"x\"\ntitle = \"x\"\n\n[[claim]]\nid = \"f\"\nsource = \"x\"\nstatement = \"x\"\nexpect = \"holds\"\n\
+         kind = \"{}\"\nvars = [\"t\"]\nparams = [\"n in {range}\", \"j in 0..=n\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n{extra}",
+        r.pick(&["identity", "table", "matrix", "nonsense"])
+    );
+    std::fs::write(dir.join("c.toml"), text).unwrap();
+    let s = |x: &str| x.to_string();
+    let mut a = vec![s("prove"), dir.to_string_lossy().into_owned(), s("--max-work"), s("1e8")];
+    if r.chance(30) {
+        a.push(s("--json"));
     }
     (a, None)
 }
@@ -236,8 +303,22 @@ fn run_cases(count: usize, seed: u64) {
     let mut failures = Vec::new();
     for k in 0..count {
         let (args, stdin) = case(&mut r);
-        if let Some(why) = check(&args, stdin.as_deref(), cap) {
-            failures.push(format!("case {k}: {why}\n  args: {args:?}\n  stdin: {stdin:?}"));
+        let why = check(&args, stdin.as_deref(), cap);
+        if args.first().is_some_and(|a| a == "prove")
+            && args.get(1).is_some_and(|p| p.contains("casteljau-fuzz-claims"))
+        {
+            let _ = std::fs::remove_dir_all(&args[1]);
+        }
+        if let Some(why) = why {
+            let shown = |x: &str| {
+                if x.len() > 300 {
+                    format!("{}… ({} bytes)", &x[..x.floor_char_boundary(300)], x.len())
+                } else {
+                    x.to_string()
+                }
+            };
+            let args: Vec<String> = args.iter().map(|a| shown(a)).collect();
+            failures.push(format!("case {k}: {why}\n  args: {args:?}\n  stdin: {:?}", stdin.as_deref().map(shown)));
         }
     }
     eprintln!("fuzz: {count} invocations (seed {seed}), {} failures", failures.len());

@@ -77,8 +77,8 @@ std::thread_local! {
 }
 
 /// Runs `f` allowing at most `steps` evaluation steps (each `sum`/`prod` term one step, a
-/// power of exponent `k` `1 + k/64`, a Bernstein polynomial of degree `n` `1 + n²/30000`, about
-/// 0.1 µs each) in [`Expr::eval`] and
+/// power of exponent `k` `1 + k/4`, a binomial `C(n, k)` or a Bernstein polynomial of degree
+/// `n` `1 + n²/2000`; a step is about 0.1–0.2 µs) in [`Expr::eval`] and
 /// [`Expr::degree`]; past it, evaluation fails with [`EvalError::Invalid`] naming the limit.
 /// A fold such as `sum(r, 0, 100000, sum(s, 0, 100000, x))` is small text but 10¹⁰ terms:
 /// this is how a caller bounds its work. Work handed to other threads shares the budget when
@@ -438,7 +438,10 @@ impl Expr {
             }
             Expr::Pow(a, k) => {
                 let k = small_int(&k.eval(env)?, "exponent")?;
-                step_n(1 + k.unsigned_abs() / 64)?;
+                if k.unsigned_abs() >= 64 {
+                    // small powers are paid for by the fold term or the text around them
+                    step_n(1 + k.unsigned_abs() / 4)?;
+                }
                 pow(&a.eval(env)?, k)?
             }
             Expr::Binom(n, k) => {
@@ -446,6 +449,9 @@ impl Expr {
                 if n < 0 || k < 0 || k > n {
                     Rational::zero()
                 } else {
+                    if n >= 64 {
+                        step_n(1 + (n as u64).saturating_mul(n as u64) / 2_000)?;
+                    }
                     Rational(BigRational::from_integer(binomial(n as usize, k as usize)))
                 }
             }
@@ -454,7 +460,9 @@ impl Expr {
                 if n < 0 || i < 0 || i > n {
                     Rational::zero()
                 } else {
-                    step_n(1 + (n as u64).saturating_mul(n as u64) / 30_000)?;
+                    if n >= 64 {
+                        step_n(1 + (n as u64).saturating_mul(n as u64) / 2_000)?;
+                    }
                     crate::poly::bernstein::bernstein(i as usize, n as usize, &x.eval(env)?)
                 }
             }
@@ -471,6 +479,20 @@ impl Expr {
                 acc
             }
         })
+    }
+
+    /// Whether the name `name` occurs in this expression (free or bound).
+    pub fn mentions(&self, name: &str) -> bool {
+        match self {
+            Expr::Num(_) => false,
+            Expr::Var(n) => n == name,
+            Expr::Neg(e) => e.mentions(name),
+            Expr::Bin(_, a, b) | Expr::Pow(a, b) | Expr::Binom(a, b) => a.mentions(name) || b.mentions(name),
+            Expr::Bern(i, n, x) => i.mentions(name) || n.mentions(name) || x.mentions(name),
+            Expr::Fold(_, r, lo, hi, body) => {
+                r == name || lo.mentions(name) || hi.mentions(name) || body.mentions(name)
+            }
+        }
     }
 
     /// Degree bound `(num, den)` in `var` of this expression as a rational function, with
@@ -513,6 +535,20 @@ impl Expr {
                 let n = int(n, params, "B's n")?.max(0) as usize;
                 let (nx, dx) = x.degree(var, params)?;
                 (n * nx.max(dx), n * dx)
+            }
+            Expr::Fold(is_sum, r, lo, hi, body) if !body.mentions(r) => {
+                // every term has the same degree: no need to visit them one by one
+                let (lo, hi) = (int(lo, params, "lower bound")?, int(hi, params, "upper bound")?);
+                step()?;
+                let count = (i128::from(hi) - i128::from(lo) + 1).max(0) as usize;
+                let (n, d) = if count == 0 { (0, 0) } else { body.degree(var, params)? };
+                match (is_sum, d) {
+                    (_, _) if count == 0 => (0, 0),
+                    // a sum of equal-degree polynomials, or of terms over one denominator
+                    (true, 0) => (n, 0),
+                    (true, d) => (n.max(d).saturating_add(d.saturating_mul(count - 1)), d.saturating_mul(count)),
+                    (false, d) => (n.saturating_mul(count), d.saturating_mul(count)),
+                }
             }
             Expr::Fold(is_sum, r, lo, hi, body) => {
                 let (lo, hi) = (int(lo, params, "lower bound")?, int(hi, params, "upper bound")?);

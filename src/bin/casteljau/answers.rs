@@ -315,8 +315,8 @@ pub(crate) fn implicit(
     budget: &casteljau::work::Budget,
 ) -> Result<Answer> {
     use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
-    // about 0.1 µs per evaluation step
-    let steps = (budget.limit / 1e2).min(u64::MAX as f64) as u64;
+    // about 0.2 µs per evaluation step
+    let steps = (budget.limit / 200.0).min(u64::MAX as f64) as u64;
     let outcome = casteljau::proof::expr::with_step_limit(steps, || prove_implicit(c, poly))?;
     Ok(match outcome {
         ImplicitOutcome::Proved { degree_bound, parameters } => Answer {

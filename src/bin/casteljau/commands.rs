@@ -215,8 +215,8 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
         claims
             .par_iter()
             .map(|c| {
-                // about 0.1 µs per evaluation step
-                let steps = (args.max_work / 1e2).min(u64::MAX as f64) as u64;
+                // about 0.2 µs per evaluation step
+                let steps = (args.max_work / 200.0).min(u64::MAX as f64) as u64;
                 let r = casteljau::proof::expr::with_step_limit(steps, || catalogue::check(c));
                 let k = finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 if progress {
