@@ -111,6 +111,7 @@ fn cli_batch_answers_every_line_in_order_and_exits_2_on_a_bad_one() {
     let o = run(&["eval", "--t", "1/2", "--input", "-"], Some(input));
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(stdout(&o).lines().count(), 3);
+    assert!(stdout(&o).lines().all(|l| l.starts_with("line ")), "{}", stdout(&o));
     assert!(stderr(&o).contains("line 5"));
 }
 

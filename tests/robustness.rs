@@ -287,3 +287,25 @@ fn robustness_ten_thousand_claims_parse_in_one_pass_with_their_lines() {
     assert_eq!(claims[0].line, 5);
     assert_eq!(claims[9_999].line, 5 + 10 * 9_999);
 }
+
+#[test]
+fn robustness_text_batch_answers_name_their_lines() {
+    let o = run(&["subdivide", "--input", "-"], Some("0 0, 1 1\n# skip\n1 1, 3 3\n"));
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        common::stdout(&o),
+        "line 1:\n  left:  0 0, 1/2 1/2\n  right: 1/2 1/2, 1 1\nline 3:\n  left:  1 1, 2 2\n  right: 2 2, 3 3\n"
+    );
+}
+
+#[test]
+fn robustness_an_over_long_line_is_an_error_for_that_line_only() {
+    // 17 MiB of digits on line 2: refused without reading it into a curve; lines 1 and 3 answered
+    let input = format!("0 0, 1 1\n{}\n2 2, 3 3\n", "1 ".repeat(17 * 512 * 1024));
+    let o = run(&["eval", "--t", "1/2", "--json", "--input", "-"], Some(&input));
+    assert_eq!(o.status.code(), Some(2));
+    let lines: Vec<serde_json::Value> = common::stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 3);
+    assert!(lines[1]["error"].as_str().unwrap().contains("longer than"));
+    assert_eq!(lines[2]["line"], 3);
+}

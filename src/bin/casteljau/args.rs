@@ -8,6 +8,12 @@ commas between points: \"x0 y0, x1 y1, x2 y2\". With --input FILE (or '-' / no c
 each line is one curve; numbers may be separated by whitespace or commas, read --dim at a time.
 Blank lines and lines starting with '#' are skipped.
 
+LIMITS: each answer's cost is estimated from the input (degree, bit lengths, output size) before
+work starts, in work units of about 1 ns on a 2-core machine; above --max-work (default 1e10,
+~10 s) the curve is refused with exit 2 and the estimate. Sums and products in expressions
+(implicit --poly, claim files) are counted as they run (one step per 200 units). Fixed limits:
+degree 10,000; number tokens 1,000 characters; input lines 16 MiB; see README, Limits.
+
 EXIT CODES: 0 ok; 1 a check failed; 2 bad input (the message names the token and position).";
 
 /// casteljau: Bézier curves in exact arithmetic.

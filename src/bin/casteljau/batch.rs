@@ -235,6 +235,13 @@ pub fn batch_lines(
                             obj.insert("line".into(), json!(l));
                         }
                         writeln!(out, "{value}")
+                    } else if let Some(l) = line {
+                        // batch input: every answer names its line, like every error
+                        if text.contains('\n') {
+                            writeln!(out, "line {l}:\n  {}", text.replace('\n', "\n  "))
+                        } else {
+                            writeln!(out, "line {l}: {text}")
+                        }
                     } else {
                         writeln!(out, "{text}")
                     }
