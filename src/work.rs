@@ -11,8 +11,11 @@
 //! each formula below counts big-integer limb operations (64-bit words) of the dominant loop
 //! and carries a constant fitted to measured run times, so `1e10` units is about ten seconds.
 //! The estimates are for the typical case (they are not worst-case bounds); where the work
-//! depends on the input beyond its sizes (root isolation, expression folds), the operation
-//! also counts its steps while running and stops with the same error.
+//! depends on the input beyond its sizes, the operation also counts its steps while running
+//! and stops with an error naming the limit: root isolation charges each subdivision against
+//! the budget ([`crate::poly::roots::isolate_bernstein_within`]), and the expression language
+//! charges each `sum`/`prod` term, large power, binomial and Bernstein polynomial
+//! ([`crate::proof::expr::with_step_limit`]; the command line allows one step per 200 units).
 //!
 //! With `L(b) = b/64 + 1` limbs for a `b`-bit number, `n` the degree, `d` the dimension, `β`
 //! the largest bit length of an input number (numerator plus denominator) and `τ` that of
