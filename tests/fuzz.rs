@@ -188,6 +188,7 @@ fn huge(r: &mut Rng) -> (Vec<String>, Option<String>) {
             let w: Vec<String> = (0..points).map(|i| if (i * 31) % 7 == 0 { s("-1") } else { s("2") }).collect();
             vec![s("defined"), s("--weights"), w.join(" ")]
         }
+        7 if r.chance(50) => vec![s("plot"), s(r.pick(&["--features", "--polygon", "--grid"]))],
         7 => vec![s("triangle"), s("--t"), s(r.pick(&["1/2", "12345/67891"]))],
         _ => {
             let inner = r.pick(&["x", "x*y", "x^100000", "B(3, 100000, x)", "C(100000, 50000)"]);

@@ -309,3 +309,8 @@ fn robustness_an_over_long_line_is_an_error_for_that_line_only() {
     assert!(lines[1]["error"].as_str().unwrap().contains("longer than"));
     assert_eq!(lines[2]["line"], 3);
 }
+
+#[test]
+fn robustness_plot_of_degree_10000_refuses_by_estimate() {
+    refused_for_work(&["plot", &polygon(10_000)]);
+}

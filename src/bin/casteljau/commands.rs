@@ -113,8 +113,25 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
     // one thread: the curves are drawn in input order (colours and the SVG are deterministic)
     let mut curve = curve;
     curve.threads = 1;
+    let budget = curve.budget();
     let code = rational_batch(&rational, curve, &mut sink, |c, w| {
         let opts = opts.clone()?;
+        // the sampler evaluates exactly at up to 2^12 + 1 parameters of ≤ 13 bits per piece
+        use casteljau::work;
+        let (n, dim, beta) = (c.degree(), c.dim(), work::max_bits(c.points()));
+        let mut estimate = 4097.0 * work::evaluation(n, dim, beta, 13);
+        if let Some(t) = &opts.construction {
+            estimate += work::de_casteljau_scheme(n, dim, beta, work::bits(t));
+        }
+        if let Some((t, depth)) = &opts.subdivide {
+            estimate += (0..(*depth).min(64))
+                .map(|j| {
+                    2f64.powi(j as i32)
+                        * work::subdivision(n, dim, beta + u64::from(j) * n as u64 * work::bits(t), work::bits(t))
+                })
+                .sum::<f64>();
+        }
+        budget.check(format!("plotting a curve of degree {n}"), estimate)?;
         // plot draws in f64: a control point beyond its range would be silently dropped
         if let Some((i, _)) = c
             .points()
