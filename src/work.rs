@@ -66,6 +66,12 @@ impl Budget {
         Budget { limit: f64::INFINITY, option: "" }
     }
 
+    /// The evaluation steps of the expression language this budget allows (one per 200
+    /// units: a step costs about 0.2 µs), for [`crate::proof::expr::with_step_limit`].
+    pub fn expression_steps(&self) -> u64 {
+        (self.limit / 200.0).min(u64::MAX as f64) as u64
+    }
+
     /// `Ok` when `estimate ≤ limit`, else [`Error::WorkLimit`] naming `what`.
     ///
     /// # Errors
@@ -119,6 +125,17 @@ pub fn subdivision(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let g = limbs(grown(beta, n, tau));
     let nf = n as f64;
     dim as f64 * (nf * nf / 2.0 * g * limbs(tau) + 2.0 * (nf + 1.0) * GCD * g * g)
+}
+
+/// `depth` rounds of subdivision at a `tau`-bit parameter (`2^j` pieces in round `j`, whose
+/// numbers have grown by `j·n·tau` bits).
+pub fn repeated_subdivision(n: usize, dim: usize, beta: u64, tau: u64, depth: u32) -> f64 {
+    (0..depth.min(64))
+        .map(|j| {
+            let grown = beta.saturating_add(u64::from(j).saturating_mul(n as u64).saturating_mul(tau));
+            2f64.powi(j as i32) * subdivision(n, dim, grown, tau)
+        })
+        .sum()
 }
 
 /// The whole de Casteljau scheme (`(n+1)(n+2)/2` reduced points).

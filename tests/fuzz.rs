@@ -13,7 +13,6 @@
 mod common;
 
 use std::io::Write;
-use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// xorshift64*: deterministic, seedable, no dependency.
@@ -237,13 +236,7 @@ fn claim_file(r: &mut Rng) -> (Vec<String>, Option<String>) {
 
 /// Runs one case with a time cap; returns a description of what broke the promise, if anything.
 fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
+    let mut child = common::spawn(args);
     let mut pipe = child.stdin.take().expect("stdin");
     let input = stdin.unwrap_or("").to_string();
     let writer = std::thread::spawn(move || {

@@ -61,10 +61,6 @@ pub trait Scalar:
     /// `self == 0` (exact for exact types).
     fn is_zero(&self) -> bool;
     /// An `f64` approximation, for plots and printing with `--float`.
-    ///
-    /// # Laws
-    /// Equal values give approximations within a relative `1e-6` of each other (exact types
-    /// convert correctly rounded or nearly so); the grid prover relies on it to sort nodes.
     fn to_f64(&self) -> f64;
 }
 

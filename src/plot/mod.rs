@@ -470,7 +470,10 @@ pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &Cur
         // features far from the control polygon would shrink the curve to a speck: they are
         // drawn as an arrow from the polygon's edge towards them, labelled with the position
         let (lo, hi) = bounds(&poly);
-        let near = |q: (f64, f64)| q.0 >= lo.0 - size && q.0 <= hi.0 + size && q.1 >= lo.1 - size && q.1 <= hi.1 + size;
+        let within = |q: (f64, f64), margin: f64| {
+            q.0 >= lo.0 - margin && q.0 <= hi.0 + margin && q.1 >= lo.1 - margin && q.1 <= hi.1 + margin
+        };
+        let near = |q: (f64, f64)| within(q, size);
         let centre = ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0);
         if let Some(d) = &k.double_point {
             let p = f64_point(d);
@@ -515,11 +518,7 @@ pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &Cur
             // reference points near the curve (far ones would only shrink the drawing)
             for (name, p) in &map.points {
                 let q = (p.coords[0].to_f64(), p.coords[1].to_f64());
-                let near = q.0 >= lo.0 - 0.25 * size
-                    && q.0 <= hi.0 + 0.25 * size
-                    && q.1 >= lo.1 - 0.25 * size
-                    && q.1 <= hi.1 + 0.25 * size;
-                if near {
+                if within(q, 0.25 * size) {
                     fig.dot(q, 3.0, PALETTE[4]);
                     fig.label(q, name, PALETTE[4]);
                 }

@@ -117,11 +117,13 @@ pub fn isolate_bernstein_within(c: &[BigRational], budget: &Budget) -> Result<Op
     if ints[0].is_zero() {
         out.push(Root::Exact(rat(0)));
     }
-    split(ints.clone(), rat(0), rat(1), &mut out, budget.limit - upfront).map_err(|steps| crate::Error::WorkLimit {
-        what: format!("isolating the roots of a degree-{n} polynomial ({steps} subdivisions so far)"),
-        estimate: budget.limit + 1.0,
-        limit: budget.limit,
-        option: budget.option,
+    split(ints.clone(), rat(0), rat(1), &mut out, budget.limit - upfront).map_err(|(splits, spent)| {
+        crate::Error::WorkLimit {
+            what: format!("isolating the roots of a degree-{n} polynomial (stopped after {splits} subdivisions)"),
+            estimate: upfront + spent,
+            limit: budget.limit,
+            option: budget.option,
+        }
     })?;
     if ints.last().expect("coefficients").is_zero() {
         out.push(Root::Exact(rat(1)));
@@ -190,14 +192,14 @@ fn power_to_bernstein_integer(c: &[BigInt]) -> Vec<BigInt> {
 /// so `V = 1` certifies exactly one. Terminates by Vincent's theorem (module docs); the pending
 /// pieces are kept on an explicit stack, right halves below left ones, so roots come out in
 /// order. The halves come from [`split_integer`] at `1/2`: integers only. Each split is
-/// charged [`crate::work::root_split`] against `allowance`; past it, `Err(splits so far)`.
+/// charged [`crate::work::root_split`] against `allowance`; past it, `Err((splits, work spent))`.
 fn split(
     c: Vec<BigInt>,
     a: BigRational,
     b: BigRational,
     out: &mut Vec<Root>,
     allowance: f64,
-) -> std::result::Result<(), usize> {
+) -> std::result::Result<(), (usize, f64)> {
     let mut spent = 0.0;
     let mut splits = 0usize;
     enum Task {
@@ -221,7 +223,7 @@ fn split(
                 let bits = c.iter().map(BigInt::bits).max().unwrap_or(0);
                 spent += crate::work::root_split(c.len() - 1, bits);
                 if spent > allowance {
-                    return Err(splits);
+                    return Err((splits, spent));
                 }
                 splits += 1;
                 let (lc, rc) = split_integer(&c, &one, &two);

@@ -541,13 +541,15 @@ impl Expr {
                 let (lo, hi) = (int(lo, params, "lower bound")?, int(hi, params, "upper bound")?);
                 step()?;
                 let count = (i128::from(hi) - i128::from(lo) + 1).max(0) as usize;
-                let (n, d) = if count == 0 { (0, 0) } else { body.degree(var, params)? };
-                match (is_sum, d) {
-                    (_, _) if count == 0 => (0, 0),
-                    // a sum of equal-degree polynomials, or of terms over one denominator
-                    (true, 0) => (n, 0),
-                    (true, d) => (n.max(d).saturating_add(d.saturating_mul(count - 1)), d.saturating_mul(count)),
-                    (false, d) => (n.saturating_mul(count), d.saturating_mul(count)),
+                if count == 0 {
+                    return Ok((0, 0));
+                }
+                let (n, d) = body.degree(var, params)?;
+                // what the term-by-term loop below accumulates for `count` equal terms
+                if *is_sum {
+                    (n.max(d).saturating_add(d.saturating_mul(count - 1)), d.saturating_mul(count))
+                } else {
+                    (n.saturating_mul(count), d.saturating_mul(count))
                 }
             }
             Expr::Fold(is_sum, r, lo, hi, body) => {

@@ -315,9 +315,7 @@ pub(crate) fn implicit(
     budget: &casteljau::work::Budget,
 ) -> Result<Answer> {
     use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
-    // about 0.2 µs per evaluation step
-    let steps = (budget.limit / 200.0).min(u64::MAX as f64) as u64;
-    let outcome = casteljau::proof::expr::with_step_limit(steps, || prove_implicit(c, poly))?;
+    let outcome = casteljau::proof::expr::with_step_limit(budget.expression_steps(), || prove_implicit(c, poly))?;
     Ok(match outcome {
         ImplicitOutcome::Proved { degree_bound, parameters } => Answer {
             text: format!(

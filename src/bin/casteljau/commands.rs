@@ -124,12 +124,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
             estimate += work::de_casteljau_scheme(n, dim, beta, work::bits(t));
         }
         if let Some((t, depth)) = &opts.subdivide {
-            estimate += (0..(*depth).min(64))
-                .map(|j| {
-                    2f64.powi(j as i32)
-                        * work::subdivision(n, dim, beta + u64::from(j) * n as u64 * work::bits(t), work::bits(t))
-                })
-                .sum::<f64>();
+            estimate += work::repeated_subdivision(n, dim, beta, work::bits(t), *depth);
         }
         budget.check(format!("plotting a curve of degree {n}"), estimate)?;
         // plot draws in f64: a control point beyond its range would be silently dropped
@@ -232,8 +227,7 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
         claims
             .par_iter()
             .map(|c| {
-                // about 0.2 µs per evaluation step
-                let steps = (args.max_work / 200.0).min(u64::MAX as f64) as u64;
+                let steps = casteljau::work::Budget::new(args.max_work, "--max-work").expression_steps();
                 let r = casteljau::proof::expr::with_step_limit(steps, || catalogue::check(c));
                 let k = finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 if progress {

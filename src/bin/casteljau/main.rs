@@ -56,17 +56,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                 let (n, beta) = (c.degree(), work::max_bits(c.points()));
                 let estimate = match depth {
                     None => work::subdivision(n, c.dim(), beta, work::bits(&t0)),
-                    Some(k) => (0..k.min(64))
-                        .map(|j| {
-                            2f64.powi(j as i32)
-                                * work::subdivision(
-                                    n,
-                                    c.dim(),
-                                    beta + j as u64 * n as u64 * work::bits(&t0),
-                                    work::bits(&t0),
-                                )
-                        })
-                        .sum(),
+                    Some(k) => work::repeated_subdivision(n, c.dim(), beta, work::bits(&t0), k),
                 };
                 budget.check(format!("subdividing degree {n}"), estimate)?;
                 match w {
