@@ -3,8 +3,11 @@
 //! classifier, in one run. `cargo bench --bench classify`.
 
 use casteljau::classify::certified::{decide, summarize_integers};
-use casteljau::classify::classify;
+use casteljau::classify::{classify, classify_in};
+use casteljau::num::Radical;
+use casteljau::num::small::{SmallRational, checked};
 use casteljau::{BezierCurve, Point, rat};
+use casteljau::{Exact, Scalar};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
@@ -65,6 +68,28 @@ fn classify_batch(c: &mut Criterion) {
                 .map(|p| casteljau::classify::certified::filter_f64(black_box(p)).map(|s| s.0))
                 .collect::<Vec<_>>()
         })
+    });
+    let small: Vec<BezierCurve<SmallRational>> = curves
+        .iter()
+        .map(|p| {
+            BezierCurve::new(
+                p.iter()
+                    .map(|q| Point::new(vec![SmallRational::from_i64(q[0]), SmallRational::from_i64(q[1])]))
+                    .collect(),
+            )
+            .unwrap()
+        })
+        .collect();
+    g.bench_function("exact_small_full_classification", |b| {
+        b.iter(|| small.iter().map(|c| checked(|| classify_in(black_box(c)).unwrap().class)).collect::<Vec<_>>())
+    });
+    g.bench_function("exact_small_radical_only", |b| {
+        let ds: Vec<SmallRational> = small
+            .iter()
+            .filter_map(|c| checked(|| classify_in(c).unwrap().t_e_and_d.map(|x| x.1)).flatten())
+            .map(|d| if d.sign() == std::cmp::Ordering::Less { -d } else { d })
+            .collect();
+        b.iter(|| ds.iter().map(|d| checked(|| SmallRational::radical(black_box(d)))).collect::<Vec<_>>())
     });
     g.bench_function("naive_bigrational_classify", |b| {
         b.iter(|| exact.iter().map(|c| classify(black_box(c)).unwrap().class).collect::<Vec<_>>())

@@ -396,3 +396,61 @@ proptest! {
         prop_assert_eq!(s, exact_summary(&c));
     }
 }
+
+/// The fixed-width route (`SmallRational` inside `checked`) and the big-number route give the
+/// same classification, spelled alike, whenever the fixed-width route answers.
+fn routes_agree(c: &BezierCurve<BigRational>) -> Result<bool, TestCaseError> {
+    use casteljau::classify::classify_in;
+    use casteljau::num::small::{SmallRational, checked};
+    let big = classify_in(c).unwrap();
+    prop_assert_eq!(&classify(c).unwrap(), &big);
+    let Some(small) = checked(|| classify_in(&c.map(SmallRational::from_ratio)).unwrap()) else { return Ok(false) };
+    prop_assert_eq!(&small.map(SmallRational::to_big), &big);
+    prop_assert_eq!(serde_json::to_string(&small).unwrap(), serde_json::to_string(&big).unwrap());
+    Ok(true)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn classify_fixed_width_route_equals_big_route(c in cubic()) {
+        routes_agree(&c)?;
+    }
+
+    #[test]
+    fn classify_fixed_width_route_equals_big_route_on_wide_integers(p in int_cubic(), tiny in prop::array::uniform4(prop::array::uniform2(-3i64..=3)), shift in 0u32..=44, pick in 0u8..3) {
+        // font-like, degenerate (tiny) and huge (2^60) coordinates: the last overflow and fall back
+        let p = match pick { 0 => tiny, 1 => p, _ => p.map(|q| q.map(|v| v << shift)) };
+        routes_agree(&to_curve(&p))?;
+    }
+
+    /// The segment features, decided from signs of A, B, C, against the positions of the exact
+    /// parameters in [0, 1] (signs in Q(√d)): an independent route.
+    #[test]
+    fn segment_features_equal_parameter_positions(c in cubic()) {
+        let k = classify(&c).unwrap();
+        let inside = |t: &Parameter| t.sign() != std::cmp::Ordering::Less && (Parameter::one() - t.clone()).sign() != std::cmp::Ordering::Less;
+        use casteljau::Exact;
+        prop_assert_eq!(k.segment.has_loop, k.node_type == Some(NodeType::Crunode) && k.double_point_parameters.iter().all(inside));
+        prop_assert_eq!(k.segment.has_cusp, k.cusp_parameters.iter().any(inside));
+        prop_assert_eq!(k.segment.inflections, k.inflection_parameters.iter().filter(|t| inside(t)).count());
+    }
+}
+
+#[test]
+fn classify_fixed_width_route_on_seed_kinds_and_boundaries() {
+    for s in [
+        "0 0, 1 1, 0 1, 1 0",
+        "0 0, 30 40, -20 40, 10 0",
+        "0 0, 1 1, 2 0, 0 1",
+        "0 0, 0 0, 1 1, 2 0",
+        "0 0, 1 2, 2 2, 3 0",
+        "0 0, 1 0, 2 0, 3 0",
+        "0 0, 2 0, 1 0, 3 0",
+        "1/3 1/7, 2.5 -0.125, 1e3 7, 0 0",
+        "170141183460469231731687303715884105727 0, 1 1, 0 1, 1 0",
+    ] {
+        assert!(routes_agree(&curve(s)).is_ok(), "{s}");
+    }
+}

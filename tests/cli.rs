@@ -356,14 +356,16 @@ fn cli_plot_and_gallery() {
 #[test]
 fn cli_classify_default_and_full_detail_agree_on_shared_fields() {
     let input = "0 0, 1 1, 0 1, 1 0\n0 0, 2 2, -1 2, 1 0\n0 0, 1 2, 2 -1, 3 1\n0 0, 3 3, 0 3, 3 0\n0 0, 1 1, 2 2, 3 3\n\
-                 0 0, 1 0, 1 0, 2 0\n0 0, 1 2, 2 0\n-1 -1, -1/3 1, 1/3 -1, 1 1\n0 0, 0 1, 1 1, 1 0\n5 7, -3 2, 8 -1, 0 4\n";
+                 0 0, 1 0, 1 0, 2 0\n0 0, 1 2, 2 0\n-1 -1, -1/3 1, 1/3 -1, 1 1\n0 0, 0 1, 1 1, 1 0\n5 7, -3 2, 8 -1, 0 4\n\
+                 1/3 1/7, 2.5 -0.125, 1e3 7, 0 0\n170141183460469231731687303715884105727 0, 1 1, 0 1, 1 0\n\
+                 1200 -700, 1800 2400, -300 1900, 2048 0\n";
     let basic = run(&["classify", "--json", "--float"], Some(input));
     let full = run(&["classify", "--json", "--float", "--detail", "full"], Some(input));
     let parse = |o: &std::process::Output| -> Vec<serde_json::Value> {
         stdout(o).lines().map(|l| serde_json::from_str(l).unwrap()).collect()
     };
     let (b, f) = (parse(&basic), parse(&full));
-    assert_eq!(b.len(), 10);
+    assert_eq!(b.len(), 13);
     for (b, f) in b.iter().zip(&f) {
         let (b, f) = (b.as_object().unwrap(), f.as_object().unwrap());
         for (k, v) in b {

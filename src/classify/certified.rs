@@ -203,7 +203,7 @@ fn nonneg(sign_c: i8, sign_c2_r: i8, plus: bool) -> bool {
 }
 
 /// `c + s√r ∈ [0, 1]` from the signs of `c`, `c² − r`, `1 − c`, `(1 − c)² − r`.
-fn in_unit(sc: i8, sc2: i8, s1c: i8, s1c2: i8, plus: bool) -> bool {
+pub(crate) fn in_unit(sc: i8, sc2: i8, s1c: i8, s1c2: i8, plus: bool) -> bool {
     nonneg(sc, sc2, plus) && nonneg(s1c, s1c2, !plus)
 }
 

@@ -25,18 +25,18 @@ pub mod moving_line;
 pub mod rational_cubic;
 
 use crate::curve::bezier::BezierCurve;
-use crate::curve::fraction_free;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
-use crate::num::quadratic_field::QuadraticExt;
+use crate::num::quadratic_field::{QuadraticExt, Radical};
 use crate::num::scalar::{Exact, Scalar, rat};
+use crate::num::small::{SmallRational, checked};
 use crate::poly::polynomial::{center_plus_minus_sqrt, quadratic_roots};
 use num_rational::BigRational;
 use std::cmp::Ordering;
 use std::fmt;
 
 /// An exact real parameter `a + b√m` (rational when `b = 0`).
-pub type Parameter = QuadraticExt<BigRational>;
+pub type Parameter<K = BigRational> = QuadraticExt<K>;
 
 /// The node type of a genuine cubic (seed 004, §3.3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -195,8 +195,13 @@ pub struct SegmentFeatures {
 /// `double_point_parameters`, `inflection_parameters`, `cusp_parameters` (exact strings such as
 /// `"1/2 + 1/6*sqrt(5)"`), `invariants` (`{"A", "B", "C"}`), `t_E` and `d` (only when `A ≠ 0`)
 /// and `segment` (`{"loop", "cusp", "inflections", "category"}`).
-#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
-pub struct Classification {
+///
+/// `K` is the exact field the answer is written in: [`BigRational`] from [`classify`], or the
+/// fixed-width [`SmallRational`] from [`classify_in`] on the fast route; [`Classification::map`]
+/// changes it, and both spell every number alike.
+#[derive(Clone, Debug, serde::Serialize)]
+#[serde(bound(serialize = "K: Radical"))]
+pub struct Classification<K = BigRational> {
     /// The written degree.
     pub degree: usize,
     /// The degree of the power form (0–3).
@@ -210,25 +215,25 @@ pub struct Classification {
     /// The node type of a genuine cubic.
     pub node_type: Option<NodeType>,
     /// The double point (crunode, acnode) or the cusp point (cusp): always rational.
-    pub double_point: Option<Point<BigRational>>,
+    pub double_point: Option<Point<K>>,
     /// `t_E ± √d` (crunode), `t_E` (cusp); empty otherwise.
-    pub double_point_parameters: Vec<Parameter>,
+    pub double_point_parameters: Vec<Parameter<K>>,
     /// Real inflection parameters, ascending (any `t`, not only `[0, 1]`).
-    pub inflection_parameters: Vec<Parameter>,
+    pub inflection_parameters: Vec<Parameter<K>>,
     /// Parameters where the tangent vanishes and the curve turns back (cusp, collinear turning
     /// points), ascending.
-    pub cusp_parameters: Vec<Parameter>,
+    pub cusp_parameters: Vec<Parameter<K>>,
     /// `(A, B, C) = (a2×a3, a1×a3, a1×a2)`.
     #[serde(serialize_with = "invariants_json")]
-    pub invariants: [BigRational; 3],
+    pub invariants: [K; 3],
     /// `t_E = −B/(2A)` and `d = (4AC − 3B²)/(4A²)` when `A ≠ 0`.
     #[serde(flatten, serialize_with = "t_e_and_d_json")]
-    pub t_e_and_d: Option<(BigRational, BigRational)>,
+    pub t_e_and_d: Option<(K, K)>,
     /// Features of the segment `[0, 1]`.
     pub segment: SegmentFeatures,
 }
 
-fn invariants_json<S: serde::Serializer>(v: &[BigRational; 3], s: S) -> std::result::Result<S::Ok, S::Error> {
+fn invariants_json<K: fmt::Display, S: serde::Serializer>(v: &[K; 3], s: S) -> std::result::Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
     let mut m = s.serialize_map(Some(3))?;
     for (name, x) in ["A", "B", "C"].iter().zip(v) {
@@ -237,8 +242,8 @@ fn invariants_json<S: serde::Serializer>(v: &[BigRational; 3], s: S) -> std::res
     m.end()
 }
 
-fn t_e_and_d_json<S: serde::Serializer>(
-    v: &Option<(BigRational, BigRational)>,
+fn t_e_and_d_json<K: fmt::Display, S: serde::Serializer>(
+    v: &Option<(K, K)>,
     s: S,
 ) -> std::result::Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
@@ -253,13 +258,57 @@ fn t_e_and_d_json<S: serde::Serializer>(
 /// Largest degree [`classify`] accepts.
 pub const MAX_CLASSIFY_DEGREE: usize = 3;
 
-fn cross(u: &Point<BigRational>, v: &Point<BigRational>) -> BigRational {
+fn cross<K: Scalar>(u: &Point<K>, v: &Point<K>) -> K {
     u.coords[0].clone() * &v.coords[1] - u.coords[1].clone() * &v.coords[0]
 }
 
 /// `0 ≤ t ≤ 1`, exactly.
-pub(crate) fn in_unit_interval(t: &Parameter) -> bool {
-    t.sign() != Ordering::Less && (Parameter::one() - t).sign() != Ordering::Less
+pub(crate) fn in_unit_interval<K: Exact>(t: &Parameter<K>) -> bool {
+    t.sign() != Ordering::Less && (Parameter::<K>::one() - t).sign() != Ordering::Less
+}
+
+impl<K: Radical> PartialEq for Classification<K> {
+    /// Field by field, numbers by numeric equality.
+    fn eq(&self, o: &Self) -> bool {
+        self.degree == o.degree
+            && self.real_degree == o.real_degree
+            && self.collinear == o.collinear
+            && self.class == o.class
+            && self.reason == o.reason
+            && self.node_type == o.node_type
+            && self.double_point == o.double_point
+            && self.double_point_parameters == o.double_point_parameters
+            && self.inflection_parameters == o.inflection_parameters
+            && self.cusp_parameters == o.cusp_parameters
+            && self.invariants == o.invariants
+            && self.t_e_and_d == o.t_e_and_d
+            && self.segment == o.segment
+    }
+}
+
+impl<K: Radical> Eq for Classification<K> {}
+
+impl<K: Radical> Classification<K> {
+    /// The same answer written in another exact field: `f` maps every number (an injective
+    /// field homomorphism such as [`SmallRational::to_big`]).
+    pub fn map<L: Radical>(&self, f: impl Fn(&K) -> L) -> Classification<L> {
+        let params = |ps: &[Parameter<K>]| ps.iter().map(|p| p.map(&f)).collect();
+        Classification {
+            degree: self.degree,
+            real_degree: self.real_degree,
+            collinear: self.collinear,
+            class: self.class,
+            reason: self.reason.clone(),
+            node_type: self.node_type,
+            double_point: self.double_point.as_ref().map(|p| Point::new(p.coords.iter().map(&f).collect())),
+            double_point_parameters: params(&self.double_point_parameters),
+            inflection_parameters: params(&self.inflection_parameters),
+            cusp_parameters: params(&self.cusp_parameters),
+            invariants: [f(&self.invariants[0]), f(&self.invariants[1]), f(&self.invariants[2])],
+            t_e_and_d: self.t_e_and_d.as_ref().map(|(t, d)| (f(t), f(d))),
+            segment: self.segment.clone(),
+        }
+    }
 }
 
 /// Classifies a planar curve of degree ≤ 3, exactly.
@@ -278,6 +327,36 @@ pub(crate) fn in_unit_interval(t: &Parameter) -> bool {
 /// assert!(k.segment.has_cusp);
 /// ```
 pub fn classify(curve: &BezierCurve<BigRational>) -> Result<Classification> {
+    // The fast route: every coordinate fits i128 and no step overflows (decided, not guessed).
+    let small: Option<Vec<Point<SmallRational>>> = curve
+        .points()
+        .iter()
+        .map(|p| p.coords.iter().map(SmallRational::from_big).collect::<Option<Vec<_>>>().map(Point::new))
+        .collect();
+    if let Some(Ok(k)) = small.and_then(|pts| checked(|| classify_in(&BezierCurve::new(pts)?))) {
+        return Ok(k.map(SmallRational::to_big));
+    }
+    classify_in(curve)
+}
+
+/// [`classify`] in any exact field with canonical radicals. Over [`SmallRational`] run it inside
+/// [`checked`]: `None` there means a number outgrew 128 bits
+/// (redo it with [`classify`]); otherwise the answer is exact and equal to [`classify`]'s.
+///
+/// # Errors
+/// As [`classify`].
+///
+/// # Example
+/// ```
+/// use casteljau::classify::classify_in;
+/// use casteljau::num::small::{SmallRational, checked};
+/// use casteljau::{BezierCurve, Point, Scalar};
+/// let p = |x: i64, y: i64| Point::new(vec![SmallRational::from_i64(x), SmallRational::from_i64(y)]);
+/// let c = BezierCurve::new(vec![p(0, 0), p(30, 40), p(-20, 40), p(10, 0)]).unwrap();
+/// let k = checked(|| classify_in(&c)).expect("fits 128 bits").unwrap();
+/// assert_eq!(k.double_point_parameters[0].to_string(), "1/2 - 1/4*sqrt(3)");
+/// ```
+pub fn classify_in<K: Radical>(curve: &BezierCurve<K>) -> Result<Classification<K>> {
     if curve.dim() != 2 {
         return Err(Error::DimensionMismatch { expected: 2, found: curve.dim() });
     }
@@ -285,7 +364,7 @@ pub fn classify(curve: &BezierCurve<BigRational>) -> Result<Classification> {
     if n > MAX_CLASSIFY_DEGREE {
         return Err(Error::TooLarge { what: "degree to classify", value: n, limit: MAX_CLASSIFY_DEGREE });
     }
-    let mut a = fraction_free::power_coefficients(curve);
+    let mut a = curve.power_coefficients();
     a.resize(4, Point::origin(2));
     let inv = [cross(&a[2], &a[3]), cross(&a[1], &a[3]), cross(&a[1], &a[2])];
     let [big_a, big_b, big_c] = inv.clone();
@@ -315,9 +394,23 @@ pub fn classify(curve: &BezierCurve<BigRational>) -> Result<Classification> {
         genuine_cubic(&mut out, &a, &big_a, &big_b, &big_c);
     }
     let seg = &mut out.segment;
-    seg.has_cusp = out.cusp_parameters.iter().any(in_unit_interval);
-    seg.inflections = out.inflection_parameters.iter().filter(|t| in_unit_interval(t)).count();
-    seg.has_loop = out.node_type == Some(NodeType::Crunode) && out.double_point_parameters.iter().all(in_unit_interval);
+    match out.node_type {
+        // t_E ± √r ∈ [0, 1] decided by signs of polynomials in A, B, C (see `unit_signs`): no
+        // products of radicals, so fixed-width numbers do not outgrow the answer
+        Some(node @ (NodeType::Crunode | NodeType::Cusp | NodeType::Acnode)) => {
+            let signs = unit_signs(node, &big_a, &big_b, &big_c);
+            let inside = |plus| certified::in_unit(signs[0], signs[1], signs[2], signs[3], plus);
+            match node {
+                NodeType::Crunode => seg.has_loop = inside(false) && inside(true),
+                NodeType::Cusp => seg.has_cusp = signs[0] >= 0 && signs[2] >= 0,
+                _ => seg.inflections = usize::from(inside(false)) + usize::from(inside(true)),
+            }
+        }
+        _ => {
+            seg.has_cusp = out.cusp_parameters.iter().any(in_unit_interval);
+            seg.inflections = out.inflection_parameters.iter().filter(|t| in_unit_interval(t)).count();
+        }
+    }
     seg.category = if real_degree == 0 {
         SegmentCategory::Point
     } else if collinear {
@@ -362,27 +455,25 @@ fn degenerate_class(n: usize, real: usize, collinear: bool) -> (CurveClass, Stri
     }
 }
 
-fn genuine_cubic(
-    out: &mut Classification,
-    a: &[Point<BigRational>],
-    big_a: &BigRational,
-    big_b: &BigRational,
-    big_c: &BigRational,
-) {
+fn genuine_cubic<K: Radical>(out: &mut Classification<K>, a: &[Point<K>], big_a: &K, big_b: &K, big_c: &K) {
+    let rat = K::from_i64;
     if Scalar::is_zero(big_a) {
         out.class = CurveClass::Cubic(NodeType::Explicit);
         out.node_type = Some(NodeType::Explicit);
         out.reason = "A = a2×a3 = 0: double point at infinity (affine image of y = x³)".into();
         let t = -big_c.clone() / (rat(3) * big_b);
-        out.inflection_parameters = vec![Parameter::from_ratio(&t)];
+        out.inflection_parameters = vec![Parameter::from_base(t)];
         return;
     }
     let te = -big_b.clone() / (rat(2) * big_a);
     let d = (rat(4) * big_a * big_c - rat(3) * big_b * big_b) / (rat(4) * big_a * big_a);
-    let dp = a[0]
-        .add(&a[1].scale(&te))
-        .add(&a[2].scale(&(te.clone() * &te + &d)))
-        .add(&a[3].scale(&(te.clone() * &te * &te + rat(3) * &te * &d)));
+    // D = a0 + a1 t_E + a2 (t_E² + d) + a3 (t_E³ + 3 t_E d), simplified with A a1 − B a2 + C a3 = 0
+    let dp = a[0].add(
+        &a[2]
+            .scale(big_a)
+            .sub(&a[3].scale(big_b))
+            .scale(&((big_a.clone() * big_c - big_b.clone() * big_b) / (big_a.clone() * big_a * big_a))),
+    );
     out.double_point = Some(dp);
     let node = match d.sign() {
         Ordering::Greater => NodeType::Crunode,
@@ -398,8 +489,8 @@ fn genuine_cubic(
         }
         NodeType::Cusp => {
             out.reason = format!("d = 0: cusp at t_E = {te}");
-            out.double_point_parameters = vec![Parameter::from_ratio(&te)];
-            out.cusp_parameters = vec![Parameter::from_ratio(&te)];
+            out.double_point_parameters = vec![Parameter::from_base(te.clone())];
+            out.cusp_parameters = vec![Parameter::from_base(te.clone())];
         }
         _ => {
             out.reason = format!("d = {d} < 0: isolated double point; inflections at t_E ± √(−d/3), t_E = {te}");
@@ -410,14 +501,36 @@ fn genuine_cubic(
     out.t_e_and_d = Some((te, d));
 }
 
+/// `[sign c, sign(c² − r), sign(1 − c), sign((1 − c)² − r)]` for the parameters `c ± √r` of a
+/// genuine cubic with `A ≠ 0`, `c = t_E = −B/(2A)`: `r = d` (double points; a cusp has `d = 0`)
+/// or `r = −d/3` (inflections of an acnode). With `d = (4AC − 3B²)/(4A²)`:
+/// `sign c = −sign(A)·sign(B)`, `sign(1 − c) = sign(A)·sign(2A + B)`; for `r = d`
+/// `sign(c² − d) = sign(B² − AC)`, `sign((1 − c)² − d) = sign(A² + AB + B² − AC)`; for `r = −d/3`
+/// `sign(c² − r) = sign(A)·sign(C)`, `sign((1 − c)² − r) = sign(A)·sign(3A + 3B + C)`.
+fn unit_signs<K: Exact>(node: NodeType, a: &K, b: &K, c: &K) -> [i8; 4] {
+    let s = |x: K| x.sign() as i8;
+    let sa = a.sign() as i8;
+    let two = K::from_i64(2);
+    let three = K::from_i64(3);
+    let sc = -sa * b.sign() as i8;
+    let s1c = sa * s(two * a + b);
+    let b2_ac = b.clone() * b - a.clone() * c;
+    if node == NodeType::Acnode {
+        [sc, sa * c.sign() as i8, s1c, sa * s(three.clone() * a + &(three * b) + c)]
+    } else {
+        [sc, s(b2_ac.clone()), s1c, s(a.clone() * a + &(a.clone() * b) + &b2_ac)]
+    }
+}
+
 /// Simple real roots of `p'(t)` for a collinear curve `P(t) = a0 + v·p(t)`: where it turns back.
-fn turning_points(a: &[Point<BigRational>]) -> Vec<Parameter> {
+fn turning_points<K: Radical>(a: &[Point<K>]) -> Vec<Parameter<K>> {
+    let rat = K::from_i64;
     let Some(v) = a[1..].iter().find(|p| p.coords.iter().any(|x| !Scalar::is_zero(x))) else {
         return vec![];
     };
     // α_k with a_k = α_k v (v has a non-zero coordinate c)
     let c = if Scalar::is_zero(&v.coords[0]) { 1 } else { 0 };
-    let alpha: Vec<BigRational> = a.iter().map(|p| p.coords[c].clone() / &v.coords[c]).collect();
+    let alpha: Vec<K> = a.iter().map(|p| p.coords[c].clone() / &v.coords[c]).collect();
     // p'(t) = α1 + 2α2 t + 3α3 t²
     // a double root of p' is no turning point: the speed vanishes but the curve goes on
     let (c0, c1, c2) = (alpha[1].clone(), rat(2) * &alpha[2], rat(3) * &alpha[3]);

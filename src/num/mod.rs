@@ -1,6 +1,7 @@
 //! Numbers: the [`Scalar`] field trait with its [`Exact`] marker, the integer-fast exact
 //! [`Rational`], exact quadratic extensions [`QuadraticExt`], points (vectors of scalars), and
-//! exact numbers and point lists read from text.
+//! fixed-width exact rationals ([`small::SmallRational`], checked), and exact numbers and point
+//! lists read from text.
 //!
 //! The lowest layer: it imports nothing else of the crate but [`crate::error`].
 
@@ -9,7 +10,8 @@ pub mod point;
 pub mod quadratic_field;
 pub mod scalar;
 pub mod serial;
+pub mod small;
 
 pub use point::Point;
-pub use quadratic_field::QuadraticExt;
+pub use quadratic_field::{QuadraticExt, Radical};
 pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};

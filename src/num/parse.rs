@@ -12,6 +12,8 @@
 
 use crate::error::{Error, Position, Result};
 use crate::num::point::Point;
+use crate::num::scalar::Scalar;
+use crate::num::small::SmallRational;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Pow, Zero};
@@ -184,9 +186,19 @@ pub fn parse_points(text: &str, dim: usize, line: Option<usize>) -> Result<Vec<P
         let position = Position { line, column: t.column, token: k + 1 };
         values.push(parse_number(t.text, position)?);
     }
-    // Comma-grouped form: commas separate points, and some group has more than one number.
+    group_points(&toks, values, dim, line)
+}
+
+/// The points of a parsed token list: comma groups of `dim` numbers when commas separate
+/// groups of several numbers (`"x0 y0, x1 y1"`), otherwise `dim` numbers at a time.
+fn group_points<T: Scalar>(
+    toks: &[Token<'_>],
+    values: Vec<T>,
+    dim: usize,
+    line: Option<usize>,
+) -> Result<Vec<Point<T>>> {
     let mut groups: Vec<usize> = Vec::new();
-    for t in &toks {
+    for t in toks {
         if t.after_comma || groups.is_empty() {
             groups.push(0);
         }
@@ -197,12 +209,72 @@ pub fn parse_points(text: &str, dim: usize, line: Option<usize>) -> Result<Vec<P
         if let Some((p, &found)) = groups.iter().enumerate().find(|(_, g)| **g != dim) {
             return Err(Error::PointCount { found, dim, point: Some(p + 1), line });
         }
-    } else if values.len() % dim != 0 {
+    } else if !values.len().is_multiple_of(dim) {
         return Err(Error::PointCount { found: values.len(), dim, point: None, line });
     }
     let mut it = values.into_iter();
     let n = toks.len() / dim;
     Ok((0..n).map(|_| Point::new(it.by_ref().take(dim).collect())).collect())
+}
+
+/// [`parse_points`] on the fast route: the same points as fixed-width [`SmallRational`]s when
+/// every token is an integer, a fraction `p/q` or a decimal without exponent of at most 36
+/// digits per part; `None` otherwise — for anything else, including every malformed input,
+/// which [`parse_points`] then reads or reports. No allocation per number.
+///
+/// # Example
+/// ```
+/// use casteljau::num::parse::{parse_points, parse_points_small};
+/// let small = parse_points_small("0 0, 1.25 -7/3", 2, None).unwrap();
+/// let big = parse_points("0 0, 1.25 -7/3", 2, None).unwrap();
+/// assert_eq!(small[1].coords[0].to_big(), big[1].coords[0]);
+/// assert!(parse_points_small("1e3 0", 2, None).is_none()); // exponent: the exact route reads it
+/// assert!(parse_points_small("0 0, 1", 2, None).is_none()); // malformed: the exact route reports it
+/// ```
+pub fn parse_points_small(text: &str, dim: usize, line: Option<usize>) -> Option<Vec<Point<SmallRational>>> {
+    let toks = tokens(text).ok()?;
+    if toks.is_empty() {
+        return None;
+    }
+    let values = toks.iter().map(|t| small_number(t.text)).collect::<Option<Vec<_>>>()?;
+    group_points(&toks, values, dim, line).ok()
+}
+
+/// Largest digit count per part that [`small_number`] takes (`10^36 < 2^120`).
+const SMALL_DIGITS: usize = 36;
+
+/// An integer, `p/q` or decimal without exponent that fits: the value [`parse_number`] gives.
+fn small_number(token: &str) -> Option<SmallRational> {
+    let b = token.as_bytes();
+    let (negative, body) = match b.first()? {
+        b'-' => (true, &b[1..]),
+        b'+' => (false, &b[1..]),
+        _ => (false, b),
+    };
+    let run = |s: &[u8]| -> Option<i128> {
+        if s.len() > SMALL_DIGITS || !s.iter().all(u8::is_ascii_digit) {
+            return None;
+        }
+        Some(s.iter().fold(0i128, |v, &d| v * 10 + (d - b'0') as i128))
+    };
+    let (num, den) = if let Some(i) = body.iter().position(|&c| c == b'/') {
+        let (p, q) = (&body[..i], &body[i + 1..]);
+        if p.is_empty() || q.is_empty() {
+            return None;
+        }
+        (run(p)?, run(q)?)
+    } else {
+        let (int, frac) = match body.iter().position(|&c| c == b'.') {
+            Some(i) => (&body[..i], &body[i + 1..]),
+            None => (body, &b""[..]),
+        };
+        if int.is_empty() && frac.is_empty() || int.len() + frac.len() > SMALL_DIGITS {
+            return None;
+        }
+        let n = run(int)?.checked_mul(10i128.checked_pow(frac.len() as u32)?)?.checked_add(run(frac)?)?;
+        (n, 10i128.pow(frac.len() as u32))
+    };
+    SmallRational::new(if negative { -num } else { num }, den)
 }
 
 /// A list of exact numbers separated by whitespace or commas (weights, scale ratios, knot

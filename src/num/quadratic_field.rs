@@ -311,7 +311,31 @@ impl<K: Exact> Div<&QuadraticExt<K>> for QuadraticExt<K> {
     }
 }
 
+/// Exact fields whose square roots have one spelling in `K(√m)`: the radicand of `√d` is
+/// chosen by a fixed rule, so every route that takes the root of one number prints it alike.
+pub trait Radical: Exact {
+    /// `√d` for `d ≥ 0`, spelled as [`QuadraticExt::sqrt`] spells it for `BigRational`:
+    /// rational when `d` is a square, else `b·√m` with `m` the integer `p·q` (`d = p/q`
+    /// reduced) freed of the squares of primes below 1000 and `b = k/q`.
+    ///
+    /// # Panics
+    /// **Panics if `d < 0`.**
+    fn radical(d: &Self) -> QuadraticExt<Self>;
+}
+
+impl Radical for BigRational {
+    fn radical(d: &Self) -> QuadraticExt<Self> {
+        QuadraticExt::sqrt(d.clone())
+    }
+}
+
 impl<K: Exact> QuadraticExt<K> {
+    /// The same number with `f` applied to `a`, `b` and `d` (a change of base field: `f` must be
+    /// an injective field homomorphism, such as [`SmallRational::to_big`](crate::num::small::SmallRational::to_big)).
+    pub fn map<L: Exact>(&self, f: impl Fn(&K) -> L) -> QuadraticExt<L> {
+        QuadraticExt::new_unchecked(f(&self.a), f(&self.b), f(&self.d))
+    }
+
     fn new_unchecked(a: K, b: K, d: K) -> Self {
         let mut q = QuadraticExt { a, b, d };
         q.normalise();

@@ -183,22 +183,20 @@ pub fn power_to_bernstein_matrix(n: usize) -> Vec<Vec<BigRational>> {
 }
 
 /// Power-form coefficients `c_0, …, c_n` (vectors) of the curve with control points `points`:
-/// `Σ bᵢ B_i^n(t) = Σ c_k t^k`, with `c_k = C(n,k) Σ_{i≤k} (−1)^{k−i} C(k,i) bᵢ`.
+/// `Σ bᵢ B_i^n(t) = Σ c_k t^k`, with `c_k = C(n,k) Σ_{i≤k} (−1)^{k−i} C(k,i) bᵢ = C(n,k) Δ^k b_0`
+/// (computed as the forward-difference table: `n(n+1)/2` subtractions and `n + 1` scalings).
 pub fn to_power<S: Scalar>(points: &[Point<S>]) -> Vec<Point<S>> {
     let n = points.len() - 1;
-    let dim = points[0].dim();
     let row_n = binomial_row::<S>(n);
-    (0..=n)
-        .map(|k| {
-            let row_k = binomial_row::<S>(k);
-            let mut acc = Point::origin(dim);
-            for i in 0..=k {
-                let term = points[i].scale(&row_k[i]);
-                acc = if (k - i) % 2 == 1 { acc.sub(&term) } else { acc.add(&term) };
-            }
-            acc.scale(&row_n[k])
-        })
-        .collect()
+    let mut diff = points.to_vec();
+    let mut out = Vec::with_capacity(n + 1);
+    for (k, c) in row_n.iter().enumerate() {
+        out.push(if k == 0 || k == n { diff[0].clone() } else { diff[0].scale(c) });
+        for i in 0..n - k {
+            diff[i] = diff[i + 1].sub(&diff[i]);
+        }
+    }
+    out
 }
 
 /// Control points of the degree-`n` curve `Σ c_k t^k` (`n = coeffs.len() − 1`):

@@ -16,8 +16,8 @@
 //!            vec![("2 - sqrt(2)".to_string(), 1), ("2 + sqrt(2)".to_string(), 1)]);
 //! ```
 
-use crate::num::quadratic_field::QuadraticExt;
-use crate::num::scalar::{Exact, Scalar, rat};
+use crate::num::quadratic_field::{QuadraticExt, Radical};
+use crate::num::scalar::{Scalar, rat};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -283,33 +283,29 @@ pub fn square_free(p: Poly) -> Poly {
     square_free_integer(to_integer(&trim(p))).into_iter().map(BigRational::from_integer).collect()
 }
 
-/// `[c − √r, c + √r]` for `r ≥ 0`, exactly in `Q(√r)`.
-pub fn center_plus_minus_sqrt(c: &BigRational, r: &BigRational) -> [QuadraticExt<BigRational>; 2] {
-    let s = QuadraticExt::sqrt(r.clone());
-    let c = QuadraticExt::from_ratio(c);
+/// `[c − √r, c + √r]` for `r ≥ 0`, exactly in `K(√r)` (the radical spelled by [`Radical`]).
+pub fn center_plus_minus_sqrt<K: Radical>(c: &K, r: &K) -> [QuadraticExt<K>; 2] {
+    let s = K::radical(r);
+    let c = QuadraticExt::from_base(c.clone());
     [c.clone() - s.clone(), c + s]
 }
 
 /// The distinct real roots of `c0 + c1 t + c2 t²`, ascending, each with its multiplicity (a
 /// linear polynomial when `c2 = 0`; none for a non-zero constant or the zero polynomial).
-pub fn quadratic_roots(
-    c0: &BigRational,
-    c1: &BigRational,
-    c2: &BigRational,
-) -> Vec<(QuadraticExt<BigRational>, usize)> {
+pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<K>, usize)> {
     if c2.is_zero() {
         if c1.is_zero() {
             return vec![];
         }
-        return vec![(QuadraticExt::from_ratio(&(-c0.clone() / c1)), 1)];
+        return vec![(QuadraticExt::from_base(-c0.clone() / c1), 1)];
     }
-    let disc = c1.clone() * c1 - rat(4) * c2 * c0;
-    let center = -c1.clone() / (rat(2) * c2);
+    let disc = c1.clone() * c1 - K::from_i64(4) * c2 * c0;
+    let center = -c1.clone() / &(K::from_i64(2) * c2);
     match disc.sign() {
         Ordering::Less => vec![],
-        Ordering::Equal => vec![(QuadraticExt::from_ratio(&center), 2)],
+        Ordering::Equal => vec![(QuadraticExt::from_base(center), 2)],
         Ordering::Greater => {
-            let r = disc / (rat(4) * c2 * c2);
+            let r = disc / &(K::from_i64(4) * c2 * c2);
             center_plus_minus_sqrt(&center, &r).into_iter().map(|x| (x, 1)).collect()
         }
     }

@@ -2,12 +2,14 @@
 //! and the JSON object for one curve. Where the library has a result type, the JSON is that
 //! type's `Serialize` (the types are the schema); this module adds only the text rendering.
 
-use crate::batch::Answer;
+use crate::batch::{Answer, Json};
+use casteljau::classify::{Classification, Parameter};
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::curve::casteljau::subdivision_intervals;
 use casteljau::curve::fraction_free;
 use casteljau::error::{Error, Result};
 use casteljau::num::point::Point;
+use casteljau::num::quadratic_field::Radical;
 use casteljau::num::scalar::Scalar;
 use casteljau::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
@@ -149,9 +151,10 @@ pub fn format_polynomial(coeffs: &[BigRational], var: &str) -> String {
 /// cubic's [`CubicEvidence`](casteljau::classify::evidence::CubicEvidence) and, with `--float`,
 /// `f64` approximations.
 #[derive(serde::Serialize)]
-struct ClassifyJson<'a> {
+#[serde(bound(serialize = "K: Radical"))]
+struct ClassifyJson<'a, K> {
     #[serde(flatten)]
-    classification: &'a casteljau::classify::Classification,
+    classification: &'a Classification<K>,
     #[serde(flatten)]
     evidence: Option<casteljau::classify::evidence::CubicEvidence>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -167,20 +170,53 @@ struct FloatApproximations {
     double_point: Option<Vec<f64>>,
 }
 
-/// `classify`: the exact classification; with `full`, the cubic's evidence too.
-pub(crate) fn classify(c: &BezierCurve<BigRational>, float: bool, full: bool) -> Result<(String, Value)> {
-    let k = casteljau::classify::classify(c)?;
-    let evidence = if full { casteljau::classify::evidence::cubic_evidence(c, &k)? } else { None };
-    let floats = |ps: &[casteljau::classify::Parameter]| ps.iter().map(|p| p.to_f64()).collect();
-    let float_json = float.then(|| FloatApproximations {
-        double_point_parameters: floats(&k.double_point_parameters),
-        cusp_parameters: floats(&k.cusp_parameters),
-        inflection_parameters: floats(&k.inflection_parameters),
-        double_point: k.double_point.as_ref().map(|p| p.to_f64().coords),
-    });
-    let v = serde_json::to_value(ClassifyJson { classification: &k, evidence, float: float_json })
-        .expect("exact strings and finite floats serialize");
-    let show = |ps: &[casteljau::classify::Parameter]| -> String {
+/// `classify` of a polynomial curve: the fast route (fixed-width exact arithmetic, when every
+/// number fits) and otherwise the big-number route; with `full` (always big numbers) the cubic's
+/// evidence too. Only the output asked for (`json` or text) is rendered.
+pub(crate) fn classify(
+    text: &str,
+    dim: usize,
+    line: Option<usize>,
+    float: bool,
+    full: bool,
+    json: bool,
+) -> Result<Answer> {
+    use casteljau::num::small::checked;
+    let fast = (!full)
+        .then(|| casteljau::num::parse::parse_points_small(text, dim, line))
+        .flatten()
+        .and_then(|pts| checked(|| BezierCurve::new(pts).and_then(|c| casteljau::classify::classify_in(&c))));
+    if let Some(k) = fast {
+        return Ok(classification_answer(&k?, None, float, json));
+    }
+    let c = casteljau::num::parse::parse_points(text, dim, line).and_then(BezierCurve::new)?;
+    let k = casteljau::classify::classify_in(&c)?;
+    let evidence = if full { casteljau::classify::evidence::cubic_evidence(&c, &k)? } else { None };
+    Ok(classification_answer(&k, evidence, float, json))
+}
+
+/// The text or JSON of a classification (in any exact field: both spell numbers alike).
+fn classification_answer<K: Radical>(
+    k: &Classification<K>,
+    evidence: Option<casteljau::classify::evidence::CubicEvidence>,
+    float: bool,
+    json: bool,
+) -> Answer {
+    if json {
+        let floats = |ps: &[Parameter<K>]| ps.iter().map(|p| p.to_f64()).collect();
+        let float_json = float.then(|| FloatApproximations {
+            double_point_parameters: floats(&k.double_point_parameters),
+            cusp_parameters: floats(&k.cusp_parameters),
+            inflection_parameters: floats(&k.inflection_parameters),
+            double_point: k.double_point.as_ref().map(|p| p.to_f64().coords),
+        });
+        let mut buf = Vec::with_capacity(640);
+        serde_json::to_writer(&mut buf, &ClassifyJson { classification: k, evidence, float: float_json })
+            .expect("exact strings and finite floats serialize");
+        let s = String::from_utf8(buf).expect("serde_json writes UTF-8");
+        return Answer { text: String::new(), json: Json::Object(s), failed: false };
+    }
+    let show = |ps: &[Parameter<K>]| -> String {
         ps.iter()
             .map(|p| if float { format!("{p} (≈{:.6})", p.to_f64()) } else { p.to_string() })
             .collect::<Vec<_>>()
@@ -207,7 +243,7 @@ pub(crate) fn classify(c: &BezierCurve<BigRational>, float: bool, full: bool) ->
         if k.segment.inflections == 1 { "" } else { "s" },
         k.segment.category.as_str()
     );
-    Ok((text, v))
+    Answer { text, json: Json::Value(Value::Null), failed: false }
 }
 
 pub(crate) fn classify_weighted(c: &RationalBezier<BigRational>) -> Result<(String, Value)> {
@@ -284,7 +320,7 @@ pub(crate) fn defined(
     };
     Ok(Answer {
         text,
-        json: json!({"interval": [a.to_string(), b.to_string()], "defined": !failed, "roots": list}),
+        json: Json::Value(json!({"interval": [a.to_string(), b.to_string()], "defined": !failed, "roots": list})),
         failed,
     })
 }
@@ -322,12 +358,16 @@ pub(crate) fn implicit(
                 "proved: f(x(t)) ≡ 0 — W^d·f(X/W) has degree ≤ {degree_bound} and vanishes at {} parameters with W ≠ 0",
                 parameters.len()
             ),
-            json: json!({"proved": true, "degree_bound": degree_bound, "parameters": parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>()}),
+            json: Json::Value(
+                json!({"proved": true, "degree_bound": degree_bound, "parameters": parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>()}),
+            ),
             failed: false,
         },
         ImplicitOutcome::Counterexample { t, point, value } => Answer {
             text: format!("counterexample: at t = {t} the curve is at {point} where f = {value}"),
-            json: json!({"proved": false, "t": t.to_string(), "point": point_json(&point), "value": value.to_string()}),
+            json: Json::Value(
+                json!({"proved": false, "t": t.to_string(), "point": point_json(&point), "value": value.to_string()}),
+            ),
             failed: true,
         },
     })

@@ -92,14 +92,23 @@ pub struct Answer {
     /// Text output.
     pub text: String,
     /// JSON output.
-    pub json: Value,
+    pub json: Json,
     /// A check failed (exit code 1).
     pub failed: bool,
 }
 
+/// An answer's JSON object: a value, or already written out (from a result type's `Serialize`,
+/// without the detour through a map); batch input adds `"line"` to either.
+pub enum Json {
+    /// A value (its keys print in sorted order).
+    Value(Value),
+    /// A serialized object (`{…}`); `"line"` is written first.
+    Object(String),
+}
+
 impl From<(String, Value)> for Answer {
     fn from((text, json): (String, Value)) -> Self {
-        Answer { text, json, failed: false }
+        Answer { text, json: Json::Value(json), failed: false }
     }
 }
 
@@ -228,13 +237,20 @@ pub fn batch_lines(
         for ((line, _), result) in chunk.iter().zip(answers) {
             let line = *line;
             let written = match result {
-                Ok(Answer { text, json: mut value, failed: f }) => {
+                Ok(Answer { text, json, failed: f }) => {
                     failed |= f;
                     if args.json {
-                        if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
-                            obj.insert("line".into(), json!(l));
+                        match (json, line) {
+                            (Json::Value(mut value), line) => {
+                                if let (Some(l), Some(obj)) = (line, value.as_object_mut()) {
+                                    obj.insert("line".into(), json!(l));
+                                }
+                                writeln!(out, "{value}")
+                            }
+                            (Json::Object(s), Some(l)) if s.len() > 2 => writeln!(out, "{{\"line\":{l},{}", &s[1..]),
+                            (Json::Object(_), Some(l)) => writeln!(out, "{{\"line\":{l}}}"),
+                            (Json::Object(s), None) => writeln!(out, "{s}"),
                         }
-                        writeln!(out, "{value}")
                     } else if let Some(l) = line {
                         // batch input: every answer names its line, like every error
                         if text.contains('\n') {

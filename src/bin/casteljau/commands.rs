@@ -157,7 +157,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
             }
         }
         *count.lock().expect("count") += 1;
-        Ok(Answer { text: String::new(), json: Value::Null, failed: false })
+        Ok(Answer { text: String::new(), json: crate::batch::Json::Value(Value::Null), failed: false })
     });
     if code == 2 {
         return 2;

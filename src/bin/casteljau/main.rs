@@ -145,9 +145,14 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             Ok(answers::reduce(c).into())
         }),
         Command::Classify { float, detail, rational, curve } => {
-            rational_batch(&rational, curve, out, move |c, w| match w {
-                Weights::Polynomial => answers::classify(c, float, detail == args::Detail::Full).map(Answer::from),
-                w => answers::classify_weighted(&rational_curve(c, w)?).map(Answer::from),
+            if rational.weights.is_none() && !rational.homogeneous {
+                let (dim, json, full) = (curve.dim, curve.json, detail == args::Detail::Full);
+                return batch::batch_lines(&curve, out, |line, text| {
+                    answers::classify(text, dim, line, float, full, json)
+                });
+            }
+            rational_batch(&rational, curve, out, move |c, w| {
+                answers::classify_weighted(&rational_curve(c, w)?).map(Answer::from)
             })
         }
     }

@@ -204,7 +204,7 @@ fn to_bezier(sp: &RationalSpline, method: &str) -> Result<Answer> {
     let failed = joins.iter().any(|j| !j.proved);
     Ok(Answer {
         text: lines.join("\n"),
-        json: json!({"degree": sp.degree, "method": method, "segments": js, "joins": joins}),
+        json: crate::batch::Json::Value(json!({"degree": sp.degree, "method": method, "segments": js, "joins": joins})),
         failed,
     })
 }
@@ -244,7 +244,9 @@ fn check(sp: &RationalSpline) -> Result<Answer> {
     failed |= joins.iter().any(|j| !j.proved);
     Ok(Answer {
         text: lines.join("\n"),
-        json: json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines, "joins": joins}),
+        json: crate::batch::Json::Value(
+            json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines, "joins": joins}),
+        ),
         failed,
     })
 }
@@ -257,7 +259,7 @@ fn eval(sp: &RationalSpline, us: &[BigRational]) -> Result<Answer> {
         .zip(&values)
         .map(|(u, p)| json!({"u": u.to_string(), "point": p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()}))
         .collect();
-    Ok(Answer { text, json: json!({"degree": sp.degree, "values": js}), failed: false })
+    Ok(Answer { text, json: crate::batch::Json::Value(json!({"degree": sp.degree, "values": js})), failed: false })
 }
 
 fn insert(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> {
@@ -265,7 +267,7 @@ fn insert(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> 
     for _ in 0..times {
         out = out.insert_knot(u)?;
     }
-    Ok(Answer { text: spline_text(&out), json: spline_json(&out), failed: false })
+    Ok(Answer { text: spline_text(&out), json: crate::batch::Json::Value(spline_json(&out)), failed: false })
 }
 
 fn remove(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> {
@@ -283,7 +285,7 @@ fn remove(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> 
                         if k == 0 { "once" } else { "again" },
                         spline_text(&out)
                     ),
-                    json: v,
+                    json: crate::batch::Json::Value(v),
                     failed: true,
                 });
             }
@@ -294,14 +296,14 @@ fn remove(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> 
     v["removable"] = json!(true);
     Ok(Answer {
         text: format!("removed {times}: the curve is unchanged; {}", spline_text(&out)),
-        json: v,
+        json: crate::batch::Json::Value(v),
         failed: false,
     })
 }
 
 fn elevate(sp: &RationalSpline) -> Result<Answer> {
     let up = sp.elevate_degree()?;
-    Ok(Answer { text: spline_text(&up), json: spline_json(&up), failed: false })
+    Ok(Answer { text: spline_text(&up), json: crate::batch::Json::Value(spline_json(&up)), failed: false })
 }
 
 /// Runs `spline OP`.
@@ -394,7 +396,7 @@ fn surface(s: &NurbsSurface) -> Result<Answer> {
     let failed = !(report.equals_surface && report.joins_proved);
     Ok(Answer {
         text: lines.join("\n"),
-        json: json!({"degree": [s.degree.0, s.degree.1], "patches": js, "check": report}),
+        json: crate::batch::Json::Value(json!({"degree": [s.degree.0, s.degree.1], "patches": js, "check": report})),
         failed,
     })
 }
