@@ -5,7 +5,8 @@
 use casteljau::Position;
 use casteljau::num::parse::{parse_number, parse_points};
 use casteljau::proof::expr::{Env, parse_expr, with_step_limit};
-use casteljau::{Rational, rat};
+use casteljau::num::fraction::Fraction;
+use casteljau::rat;
 use proptest::prelude::*;
 
 /// Strings built from the characters numbers and curves are made of, plus noise.
@@ -64,7 +65,7 @@ proptest! {
     fn expressions_parse_and_evaluate_without_panic(s in expression_soup(), x in -5i64..=5, y in 1i64..=5) {
         if let Ok(e) = parse_expr(&s) {
             let env = |x: i64, y: i64| -> Env {
-                ["x", "t", "n", "r", "k", "s"].iter().map(|n| (n.to_string(), Rational(rat(x)))).chain(std::iter::once(("y".to_string(), Rational(rat(y))))).collect()
+                ["x", "t", "n", "r", "k", "s"].iter().map(|n| (n.to_string(), Fraction::from(rat(x)))).chain(std::iter::once(("y".to_string(), Fraction::from(rat(y))))).collect()
             };
             let v = with_step_limit(100_000, || e.eval(&mut env(x, y)));
             // the printed form is the same expression: it evaluates to the same exact value

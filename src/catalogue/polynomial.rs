@@ -8,9 +8,10 @@ use crate::curve::bezier::BezierCurve;
 use crate::curve::casteljau::subdivision_intervals;
 use crate::curve::fraction_free;
 use crate::error::Result;
+use crate::num::fraction::Fraction;
 use crate::num::parse::parse_points;
 use crate::num::point::Point;
-use crate::num::scalar::{Rational, Scalar, rat};
+use crate::num::scalar::{Scalar, rat};
 use crate::poly::bernstein::{bernstein, bernstein_to_power_matrix};
 use crate::proof::expr::{Env, EvalError, Expr, parse_expr};
 use crate::proof::{self, GridProver};
@@ -215,13 +216,13 @@ impl BasisTable {
 /// integer that differs per variable (integers keep the arithmetic on the fast path); family
 /// `f > 1` by a fraction that differs per variable and family — so that a denominator vanishing
 /// on one family (typically where variables are 0 or equal) misses the next grid.
-fn nodes(degree: usize, var: usize, family: usize) -> Vec<Rational> {
+fn nodes(degree: usize, var: usize, family: usize) -> Vec<Fraction> {
     let shift = match family {
-        0 => Rational::zero(),
-        1 => Rational::from_i64(7 * var as i64 + 3),
-        _ => Rational(BigRational::new((((family * 37 + var * 61 + 11) % 97) as i64 + 1).into(), 101.into())),
+        0 => Fraction::zero(),
+        1 => Fraction::from_i64(7 * var as i64 + 3),
+        _ => Fraction::from(BigRational::new((((family * 37 + var * 61 + 11) % 97) as i64 + 1).into(), 101.into())),
     };
-    (0..=degree as i64).map(|i| Rational::from_i64(if i % 2 == 1 { (i + 1) / 2 } else { -(i / 2) }) + &shift).collect()
+    (0..=degree as i64).map(|i| Fraction::from_i64(if i % 2 == 1 { (i + 1) / 2 } else { -(i / 2) }) + &shift).collect()
 }
 
 /// Families of grid values tried before a claim is declared undecidable on grids.
@@ -232,8 +233,8 @@ pub const NODE_FAMILIES: usize = 12;
 /// family avoids the poles.
 fn grid_prove(
     degrees: &[usize],
-    mut f: impl FnMut(&[Rational]) -> std::result::Result<Vec<Rational>, EvalError>,
-) -> Result<std::result::Result<usize, proof::Counterexample<Rational>>> {
+    mut f: impl FnMut(&[Fraction]) -> std::result::Result<Vec<Fraction>, EvalError>,
+) -> Result<std::result::Result<usize, proof::Counterexample<Fraction>>> {
     for family in 0..NODE_FAMILIES {
         let grid =
             GridProver::with_nodes(degrees, degrees.iter().enumerate().map(|(v, &d)| nodes(d, v, family)).collect())?;
@@ -276,7 +277,7 @@ fn instances(params: &[(String, Expr, Expr, bool)]) -> Result<Vec<Env>> {
             let mut e = env.clone();
             let int = |x: &Expr, e: &mut Env| -> Result<i64> {
                 let v = x.eval(e).map_err(|m| bad(format!("range of {name}: {m:?}")))?;
-                v.0.to_integer().try_into().map_err(|_| bad(format!("range of {name} is not a small integer")))
+                v.to_big().to_integer().try_into().map_err(|_| bad(format!("range of {name} is not a small integer")))
             };
             let (a, b) = (int(lo, &mut e)?, int(hi, &mut e)?);
             let b = if *inclusive { b } else { b.saturating_sub(1) };
@@ -290,7 +291,7 @@ fn instances(params: &[(String, Expr, Expr, bool)]) -> Result<Vec<Env>> {
                     return Err(bad(format!("more than {MAX_INSTANCES} parameter instances")));
                 }
                 let mut v = env.clone();
-                v.push((name.clone(), Rational::from_i64(k)));
+                v.push((name.clone(), Fraction::from_i64(k)));
                 next.push(v);
             }
         }
@@ -402,13 +403,13 @@ impl CurveFormula {
         }
         let ic = fraction_free::IntegerCurve::new(&hom);
         let res = grid_prove(&[degree], |x| {
-            let p = fraction_free::eval_integer(&ic, &x[0].0);
+            let p = fraction_free::eval_integer(&ic, &x[0].to_big());
             let (w, xy) = p.coords.split_last().expect("homogeneous");
             if w.is_zero() {
                 return Err(EvalError::DivisionByZero);
             }
             let mut env: Env = vec![("t".into(), x[0].clone())];
-            formulas.iter().zip(xy).map(|(f, v)| Ok(Rational(v.clone() / w) - f.eval(&mut env)?)).collect()
+            formulas.iter().zip(xy).map(|(f, v)| Ok(Fraction::from(v.clone() / w) - f.eval(&mut env)?)).collect()
         })?;
         Ok(match res {
             Ok(points) => verdict(
@@ -505,14 +506,14 @@ impl Lemma2 {
         for n in 1..=max {
             let mut degrees = vec![1; n + 1];
             degrees.extend([n, n]);
-            let res = proof::identities::<Rational>(&degrees, |v| {
+            let res = proof::identities::<Fraction>(&degrees, |v| {
                 let (b, rest) = v.split_at(n + 1);
                 let (t0, s) = (&rest[0], &rest[1]);
                 let curve = BezierCurve::new(b.iter().map(|x| Point::new(vec![x.clone()])).collect()).expect("points");
                 let tri = crate::curve::casteljau::triangle(&curve, t0);
                 let left = BezierCurve::new(tri.left_polygon()).expect("n+1 points");
                 let right = BezierCurve::new(tri.right_polygon()).expect("n+1 points");
-                let one = Rational::one();
+                let one = Fraction::one();
                 let dl = left.eval_bernstein(s).sub(&curve.eval(&(t0.clone() * s)));
                 let dr = right.eval_bernstein(s).sub(&curve.eval(&(t0.clone() + (one - t0) * s)));
                 vec![dl.coords[0].clone(), dr.coords[0].clone()]

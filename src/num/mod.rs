@@ -5,6 +5,7 @@
 //!
 //! The lowest layer: it imports nothing else of the crate but [`crate::error`].
 
+pub mod fraction;
 pub mod parse;
 pub mod point;
 pub mod quadratic_field;

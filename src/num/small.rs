@@ -366,10 +366,20 @@ macro_rules! by_value {
 }
 by_value!(Add add, Sub sub, Mul mul, Div div);
 
-/// Odd primes below 1000 with their inverses mod 2^128 and `u128::MAX / p`: `p | m` iff
-/// `m · p⁻¹ mod 2^128 ≤ u128::MAX / p` (one multiplication per prime, no division).
-const ODD_PRIMES: [(u128, u128, u128); 167] = {
-    let mut out = [(0u128, 0u128, 0u128); 167];
+/// Odd primes `p` below 1000 with `p²`, their inverses mod 2^128 and mod 2^64, and
+/// `u128::MAX / p`, `u64::MAX / p`: `p | m` iff `m · p⁻¹ mod 2^w ≤ (2^w − 1) / p` (one
+/// multiplication per prime, no division).
+struct OddPrime {
+    p: u128,
+    square: u128,
+    inv: u128,
+    limit: u128,
+    inv64: u64,
+    limit64: u64,
+}
+
+const ODD_PRIMES: [OddPrime; 167] = {
+    let mut out = [const { OddPrime { p: 0, square: 0, inv: 0, limit: 0, inv64: 0, limit64: 0 } }; 167];
     let mut n = 3u128;
     let mut k = 0;
     while k < 167 {
@@ -390,7 +400,14 @@ const ODD_PRIMES: [(u128, u128, u128); 167] = {
                 inv = inv.wrapping_mul(2u128.wrapping_sub(n.wrapping_mul(inv)));
                 i += 1;
             }
-            out[k] = (n, inv, u128::MAX / n);
+            out[k] = OddPrime {
+                p: n,
+                square: n * n,
+                inv,
+                limit: u128::MAX / n,
+                inv64: inv as u64,
+                limit64: u64::MAX / n as u64,
+            };
             k += 1;
         }
         n += 2;
@@ -399,7 +416,8 @@ const ODD_PRIMES: [(u128, u128, u128); 167] = {
 };
 
 /// `(k, m)` with `n = k²·m` and `m` free of the squares of primes below 1000 — the
-/// square extraction of [`QuadraticExt::sqrt`](crate::QuadraticExt) for `BigRational`, on words.
+/// square extraction of [`QuadraticExt::sqrt`](crate::QuadraticExt) for `BigRational`, on words
+/// (64-bit words once `n` fits one).
 fn extract_small_squares(mut n: u128) -> (u128, u128) {
     let mut k = 1u128;
     if n == 0 {
@@ -408,22 +426,39 @@ fn extract_small_squares(mut n: u128) -> (u128, u128) {
     let twos = n.trailing_zeros();
     k <<= twos / 2;
     n >>= twos - twos % 2;
-    for &(p, inv, limit) in &ODD_PRIMES {
-        if n < p * p {
+    for op in &ODD_PRIMES {
+        if n < op.square {
             break;
         }
+        if n >> 64 == 0 {
+            let mut m = n as u64;
+            loop {
+                let q = m.wrapping_mul(op.inv64);
+                if q > op.limit64 {
+                    break;
+                }
+                let q2 = q.wrapping_mul(op.inv64);
+                if q2 > op.limit64 {
+                    break;
+                }
+                m = q2;
+                k *= op.p;
+            }
+            n = m as u128;
+            continue;
+        }
         loop {
-            let q = n.wrapping_mul(inv);
-            if q > limit {
+            let q = n.wrapping_mul(op.inv);
+            if q > op.limit {
                 break;
             }
             // p | n; p² | n?
-            let q2 = q.wrapping_mul(inv);
-            if q2 > limit {
+            let q2 = q.wrapping_mul(op.inv);
+            if q2 > op.limit {
                 break;
             }
             n = q2;
-            k *= p;
+            k *= op.p;
         }
     }
     (k, n)

@@ -18,8 +18,9 @@
 //! one denominator, has a numerator of degree ≤ `num`: the grid size that proves the identity.
 
 use crate::error::{Error, Result};
+use crate::num::fraction::Fraction;
 use crate::num::parse::parse_number;
-use crate::num::scalar::{Rational, Scalar};
+use crate::num::scalar::Scalar;
 use crate::poly::bernstein::binomial;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
@@ -148,9 +149,9 @@ fn step() -> std::result::Result<(), EvalError> {
 }
 
 /// A name → value binding list (few names: a linear scan is fastest).
-pub type Env = Vec<(String, Rational)>;
+pub type Env = Vec<(String, Fraction)>;
 
-fn lookup<'a>(env: &'a Env, name: &str) -> Option<&'a Rational> {
+fn lookup<'a>(env: &'a Env, name: &str) -> Option<&'a Fraction> {
     env.iter().rev().find(|(n, _)| n == name).map(|(_, v)| v)
 }
 
@@ -386,17 +387,20 @@ impl Parser<'_> {
     }
 }
 
-fn int_of(v: &Rational, what: &str) -> std::result::Result<i64, EvalError> {
-    if !v.0.is_integer() {
+fn int_of(v: &Fraction, what: &str) -> std::result::Result<i64, EvalError> {
+    if let Some(k) = v.to_i64() {
+        return Ok(k);
+    }
+    if !v.is_integer() {
         return Err(EvalError::Invalid(format!("{what} must be an integer, got {v}")));
     }
-    v.0.to_integer().to_i64().ok_or_else(|| EvalError::Invalid(format!("{what} {v} is too large")))
+    v.to_big().to_integer().to_i64().ok_or_else(|| EvalError::Invalid(format!("{what} {v} is too large")))
 }
 
 /// Largest `|exponent|`, binomial `n` and summation length accepted.
 pub const MAX_INTEGER_ARGUMENT: i64 = 100_000;
 
-fn small_int(v: &Rational, what: &str) -> std::result::Result<i64, EvalError> {
+fn small_int(v: &Fraction, what: &str) -> std::result::Result<i64, EvalError> {
     let k = int_of(v, what)?;
     if k.abs() > MAX_INTEGER_ARGUMENT {
         return Err(EvalError::Invalid(format!("{what} {k} exceeds {MAX_INTEGER_ARGUMENT}")));
@@ -404,14 +408,100 @@ fn small_int(v: &Rational, what: &str) -> std::result::Result<i64, EvalError> {
     Ok(k)
 }
 
-fn pow(x: &Rational, k: i64) -> std::result::Result<Rational, EvalError> {
+/// Largest number of memoised values per thread (the memo is emptied when it is full).
+const MEMO_ENTRIES: usize = 1 << 18;
+
+thread_local! {
+    /// `B_i^n(x)` at integer `x` and `C(n, k)`, per thread: grid proofs evaluate the same
+    /// Bernstein polynomials at the same integer nodes for every point and every instance
+    /// (identity (8): `Σ_r B_j^r(s) B_r^n(t)` over a 41 × 41 grid for 861 instances).
+    static MEMO: std::cell::RefCell<std::collections::HashMap<(i64, i64, i64), Fraction, MemoHash>> =
+        std::cell::RefCell::new(std::collections::HashMap::default());
+}
+
+/// A multiplicative hash for the memo's small integer keys (SipHash's DoS resistance is not
+/// needed for keys the evaluator makes itself, and it cost a tenth of identity (8)'s time).
+type MemoHash = std::hash::BuildHasherDefault<MemoHasher>;
+
+#[derive(Default)]
+struct MemoHasher(u64);
+
+impl std::hash::Hasher for MemoHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(b as u64);
+        }
+    }
+    fn write_i64(&mut self, n: i64) {
+        self.write_u64(n as u64);
+    }
+    fn write_u64(&mut self, n: u64) {
+        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+}
+
+fn memo(key: (i64, i64, i64), f: impl FnOnce() -> Fraction) -> Fraction {
+    if let Some(v) = MEMO.with(|m| m.borrow().get(&key).cloned()) {
+        return v;
+    }
+    let v = f();
+    MEMO.with(|m| {
+        let mut m = m.borrow_mut();
+        if m.len() >= MEMO_ENTRIES {
+            m.clear();
+        }
+        m.insert(key, v.clone());
+    });
+    v
+}
+
+/// `B_i^n(x)` (`0 ≤ i ≤ n`), memoised at integer `x`.
+fn bernstein_memo(i: i64, n: i64, x: &Fraction) -> Fraction {
+    match x.to_i64() {
+        Some(x) => {
+            memo((i, n, x), || crate::poly::bernstein::bernstein(i as usize, n as usize, &Fraction::from_i64(x)))
+        }
+        None => crate::poly::bernstein::bernstein(i as usize, n as usize, x),
+    }
+}
+
+/// `C(n, k)` (`0 ≤ k ≤ n`), memoised (`x = i64::MIN` marks the binomial entries).
+fn binomial_memo(n: i64, k: i64) -> Fraction {
+    memo((k, n, i64::MIN), || Fraction::from(BigRational::from_integer(binomial(n as usize, k as usize))))
+}
+
+/// An integer argument (exponent, `C`'s and `B`'s indices, fold bounds), as [`small_int`] of its
+/// value; integer variables, literals and their sums, differences and products are read
+/// without building a [`Fraction`].
+fn int_arg(e: &Expr, env: &mut Env, what: &str) -> std::result::Result<i64, EvalError> {
+    fn fast(e: &Expr, env: &Env) -> Option<i64> {
+        match e {
+            Expr::Var(n) => lookup(env, n)?.to_i64(),
+            Expr::Num(v) if v.is_integer() => v.numer().to_i64(),
+            Expr::Neg(a) => fast(a, env)?.checked_neg(),
+            Expr::Bin('+', a, b) => fast(a, env)?.checked_add(fast(b, env)?),
+            Expr::Bin('-', a, b) => fast(a, env)?.checked_sub(fast(b, env)?),
+            Expr::Bin('*', a, b) => fast(a, env)?.checked_mul(fast(b, env)?),
+            _ => None,
+        }
+    }
+    match fast(e, env) {
+        Some(k) if k.abs() <= MAX_INTEGER_ARGUMENT => Ok(k),
+        _ => small_int(&e.eval(env)?, what),
+    }
+}
+
+fn pow(x: &Fraction, k: i64) -> std::result::Result<Fraction, EvalError> {
     let p = crate::poly::bernstein::pow(x, k.unsigned_abs() as usize);
     if k >= 0 {
         Ok(p)
     } else if p.is_zero() {
         Err(EvalError::DivisionByZero)
     } else {
-        Ok(Rational::one() / p)
+        Ok(Fraction::one() / p)
     }
 }
 
@@ -421,9 +511,9 @@ impl Expr {
     /// # Errors
     /// [`EvalError::DivisionByZero`] where a denominator vanishes; [`EvalError::Invalid`] for
     /// unknown names or non-integer integer arguments.
-    pub fn eval(&self, env: &mut Env) -> std::result::Result<Rational, EvalError> {
+    pub fn eval(&self, env: &mut Env) -> std::result::Result<Fraction, EvalError> {
         Ok(match self {
-            Expr::Num(v) => Rational(v.clone()),
+            Expr::Num(v) => Fraction::from(v.clone()),
             Expr::Var(n) => lookup(env, n).cloned().ok_or_else(|| EvalError::Invalid(format!("unknown name {n}")))?,
             Expr::Neg(e) => -e.eval(env)?,
             Expr::Bin(op, a, b) => {
@@ -437,7 +527,7 @@ impl Expr {
                 }
             }
             Expr::Pow(a, k) => {
-                let k = small_int(&k.eval(env)?, "exponent")?;
+                let k = int_arg(k, env, "exponent")?;
                 if k.unsigned_abs() >= 64 {
                     // small powers are paid for by the fold term or the text around them
                     step_n(1 + k.unsigned_abs() / 4)?;
@@ -445,37 +535,54 @@ impl Expr {
                 pow(&a.eval(env)?, k)?
             }
             Expr::Binom(n, k) => {
-                let (n, k) = (small_int(&n.eval(env)?, "C's n")?, small_int(&k.eval(env)?, "C's k")?);
+                let (n, k) = (int_arg(n, env, "C's n")?, int_arg(k, env, "C's k")?);
                 if n < 0 || k < 0 || k > n {
-                    Rational::zero()
+                    Fraction::zero()
                 } else {
                     if n >= 64 {
                         step_n(1 + (n as u64).saturating_mul(n as u64) / 2_000)?;
                     }
-                    Rational(BigRational::from_integer(binomial(n as usize, k as usize)))
+                    binomial_memo(n, k)
                 }
             }
             Expr::Bern(i, n, x) => {
-                let (i, n) = (small_int(&i.eval(env)?, "B's i")?, small_int(&n.eval(env)?, "B's n")?);
+                let (i, n) = (int_arg(i, env, "B's i")?, int_arg(n, env, "B's n")?);
                 if n < 0 || i < 0 || i > n {
-                    Rational::zero()
+                    Fraction::zero()
                 } else {
                     if n >= 64 {
                         step_n(1 + (n as u64).saturating_mul(n as u64) / 2_000)?;
                     }
-                    crate::poly::bernstein::bernstein(i as usize, n as usize, &x.eval(env)?)
+                    match &**x {
+                        // a bound variable: no copy of its value
+                        Expr::Var(name) if lookup(env, name).is_some() => {
+                            bernstein_memo(i, n, lookup(env, name).expect("just found"))
+                        }
+                        x => bernstein_memo(i, n, &x.eval(env)?),
+                    }
                 }
             }
             Expr::Fold(is_sum, r, lo, hi, body) => {
-                let (lo, hi) = (small_int(&lo.eval(env)?, "lower bound")?, small_int(&hi.eval(env)?, "upper bound")?);
-                let mut acc = if *is_sum { Rational::zero() } else { Rational::one() };
-                for k in lo..=hi {
-                    step()?;
-                    env.push((r.clone(), Rational::from_i64(k)));
-                    let v = body.eval(env);
-                    env.pop();
-                    acc = if *is_sum { acc + v? } else { acc * v? };
+                let (lo, hi) = (int_arg(lo, env, "lower bound")?, int_arg(hi, env, "upper bound")?);
+                let mut acc = if *is_sum { Fraction::zero() } else { Fraction::one() };
+                if lo > hi {
+                    return Ok(acc);
                 }
+                // every term is charged before the first is evaluated
+                step_n((hi - lo + 1) as u64)?;
+                env.push((r.clone(), Fraction::zero()));
+                let slot = env.len() - 1;
+                for k in lo..=hi {
+                    env[slot].1 = Fraction::from_i64(k);
+                    match body.eval(env) {
+                        Ok(v) => acc = if *is_sum { acc + v } else { acc * v },
+                        Err(e) => {
+                            env.pop();
+                            return Err(e);
+                        }
+                    }
+                }
+                env.pop();
                 acc
             }
         })
@@ -557,7 +664,7 @@ impl Expr {
                 let mut acc = (0, 0);
                 for k in lo..=hi {
                     step()?;
-                    params.push((r.clone(), Rational::from_i64(k)));
+                    params.push((r.clone(), Fraction::from_i64(k)));
                     let d = body.degree(var, params);
                     params.pop();
                     let (n, dd) = d?;

@@ -10,8 +10,9 @@
 //! (`x^3 - 3*x*y + y^3`).
 
 use crate::error::{Error, Result};
+use crate::num::fraction::Fraction;
 use crate::num::point::Point;
-use crate::num::scalar::{Rational, Scalar};
+use crate::num::scalar::Scalar;
 use crate::proof::expr::{Env, Expr, parse_expr};
 use crate::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
@@ -122,11 +123,11 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
             let t = BigRational::new(p.into(), q.into());
             let Ok(point) = eval(&t) else { continue };
             let mut env: Env =
-                vars.iter().zip(&point.coords).map(|(n, v)| (n.to_string(), Rational(v.clone()))).collect();
+                vars.iter().zip(&point.coords).map(|(n, v)| (n.to_string(), Fraction::from(v.clone()))).collect();
             let value =
                 f.eval(&mut env).map_err(|e| Error::InvalidArgument { message: format!("the polynomial: {e}") })?;
             if !value.is_zero() {
-                return Ok(ImplicitOutcome::Counterexample { t, point, value: value.0 });
+                return Ok(ImplicitOutcome::Counterexample { t, point, value: value.to_big() });
             }
             params.push(t);
             if params.len() > bound {
