@@ -3,9 +3,9 @@
 //! round-trips through its printed form to the same exact value.
 
 use casteljau::Position;
+use casteljau::num::fraction::Fraction;
 use casteljau::num::parse::{parse_number, parse_points};
 use casteljau::proof::expr::{Env, parse_expr, with_step_limit};
-use casteljau::num::fraction::Fraction;
 use casteljau::rat;
 use proptest::prelude::*;
 
@@ -98,4 +98,15 @@ proptest! {
         let long = vec!["x"; wide].join(" + ");
         let _ = parse_expr(&long).map(|e| with_step_limit(1_000_000, || e.eval(&mut Env::new())));
     }
+}
+
+/// Found by `expressions_parse_and_evaluate_without_panic`: `1/30.5` printed as `(1 / 61/2)`,
+/// which reads back as `(1/61)/2`.
+#[test]
+fn expression_fraction_literal_prints_in_parentheses() {
+    let e = parse_expr("1/30.5").unwrap();
+    let again = parse_expr(&e.to_string()).unwrap();
+    let v = |e: &casteljau::proof::expr::Expr| e.eval(&mut Env::new()).unwrap();
+    assert_eq!(v(&again), v(&e));
+    assert_eq!(v(&e).to_string(), "2/61");
 }

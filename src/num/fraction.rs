@@ -72,6 +72,16 @@ impl Fraction {
         if self.den.is_none() { num_traits::ToPrimitive::to_i64(&self.num) } else { None }
     }
 
+    /// `a · b` from references (no copy of either operand).
+    pub fn product(a: &Fraction, b: &Fraction) -> Fraction {
+        let num = &a.num * &b.num;
+        match (&a.den, &b.den) {
+            (None, None) => Fraction::integer(num),
+            (Some(d), None) | (None, Some(d)) => Fraction { num, den: Some(d.clone()) },
+            (Some(x), Some(y)) => Fraction::new_raw(num, x * y),
+        }
+    }
+
     /// Whether the number is an integer.
     pub fn is_integer(&self) -> bool {
         self.den.as_ref().is_none_or(|d| (&self.num % d).is_zero())

@@ -23,8 +23,9 @@ use crate::num::parse::parse_number;
 use crate::num::scalar::Scalar;
 use crate::poly::bernstein::binomial;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
+use num_traits::{Signed, ToPrimitive};
 use std::fmt;
+use std::rc::Rc;
 
 /// An expression tree.
 #[derive(Clone, Debug, PartialEq)]
@@ -152,7 +153,9 @@ fn step() -> std::result::Result<(), EvalError> {
 pub type Env = Vec<(String, Fraction)>;
 
 fn lookup<'a>(env: &'a Env, name: &str) -> Option<&'a Fraction> {
-    env.iter().rev().find(|(n, _)| n == name).map(|(_, v)| v)
+    // names are a few bytes: compare inline rather than through a `memcmp` call
+    let same = |n: &str| n.len() == name.len() && n.bytes().zip(name.bytes()).all(|(a, b)| a == b);
+    env.iter().rev().find(|(n, _)| same(n)).map(|(_, v)| v)
 }
 
 struct Parser<'a> {
@@ -415,9 +418,11 @@ thread_local! {
     /// `B_i^n(x)` at integer `x` and `C(n, k)`, per thread: grid proofs evaluate the same
     /// Bernstein polynomials at the same integer nodes for every point and every instance
     /// (identity (8): `Σ_r B_j^r(s) B_r^n(t)` over a 41 × 41 grid for 861 instances).
-    static MEMO: std::cell::RefCell<std::collections::HashMap<(i64, i64, i64), Fraction, MemoHash>> =
-        std::cell::RefCell::new(std::collections::HashMap::default());
+    static MEMO: std::cell::RefCell<Memo> = std::cell::RefCell::new(Memo::default());
 }
+
+/// Memoised values by `(i, n, x)`.
+type Memo = std::collections::HashMap<(i64, i64, i64), Rc<Fraction>, MemoHash>;
 
 /// A multiplicative hash for the memo's small integer keys (SipHash's DoS resistance is not
 /// needed for keys the evaluator makes itself, and it cost a tenth of identity (8)'s time).
@@ -443,11 +448,11 @@ impl std::hash::Hasher for MemoHasher {
     }
 }
 
-fn memo(key: (i64, i64, i64), f: impl FnOnce() -> Fraction) -> Fraction {
+fn memo(key: (i64, i64, i64), f: impl FnOnce() -> Fraction) -> Rc<Fraction> {
     if let Some(v) = MEMO.with(|m| m.borrow().get(&key).cloned()) {
         return v;
     }
-    let v = f();
+    let v = Rc::new(f());
     MEMO.with(|m| {
         let mut m = m.borrow_mut();
         if m.len() >= MEMO_ENTRIES {
@@ -458,19 +463,86 @@ fn memo(key: (i64, i64, i64), f: impl FnOnce() -> Fraction) -> Fraction {
     v
 }
 
-/// `B_i^n(x)` (`0 ≤ i ≤ n`), memoised at integer `x`.
-fn bernstein_memo(i: i64, n: i64, x: &Fraction) -> Fraction {
-    match x.to_i64() {
-        Some(x) => {
-            memo((i, n, x), || crate::poly::bernstein::bernstein(i as usize, n as usize, &Fraction::from_i64(x)))
+/// A value, possibly shared with the memo: it is copied only when an operation must own it.
+enum Operand {
+    Owned(Fraction),
+    Shared(Rc<Fraction>),
+}
+
+impl Operand {
+    fn get(&self) -> &Fraction {
+        match self {
+            Operand::Owned(x) => x,
+            Operand::Shared(x) => x,
         }
-        None => crate::poly::bernstein::bernstein(i as usize, n as usize, x),
     }
+    fn into_owned(self) -> Fraction {
+        match self {
+            Operand::Owned(x) => x,
+            Operand::Shared(x) => Rc::unwrap_or_clone(x),
+        }
+    }
+}
+
+/// `x op y` for `op` in `+ − * /`, copying a shared operand only where no by-reference form exists.
+fn combine(op: char, x: Operand, y: Operand) -> std::result::Result<Fraction, EvalError> {
+    use Operand::{Owned, Shared};
+    if op == '/' && y.get().is_zero() {
+        return Err(EvalError::DivisionByZero);
+    }
+    let apply = |x: Fraction, y: &Fraction| match op {
+        '+' => x + y,
+        '-' => x - y,
+        '*' => x * y,
+        _ => x / y,
+    };
+    Ok(match (x, y) {
+        (Owned(x), y) => apply(x, y.get()),
+        (Shared(x), Owned(y)) => match op {
+            '+' => y + &*x,
+            '*' => y * &*x,
+            '-' => -(y - &*x),
+            _ => apply((*x).clone(), &y),
+        },
+        (Shared(x), Shared(y)) if op == '*' => Fraction::product(&x, &y),
+        (Shared(x), Shared(y)) => apply((*x).clone(), &y),
+    })
+}
+
+/// `B_i^n(x)`: zero outside `0 ≤ i ≤ n`; memoised (shared) at integer `x`.
+fn bern(i: &Expr, n: &Expr, x: &Expr, env: &mut Env) -> std::result::Result<Operand, EvalError> {
+    let (i, n) = (int_arg(i, env, "B's i")?, int_arg(n, env, "B's n")?);
+    if n < 0 || i < 0 || i > n {
+        return Ok(Operand::Owned(Fraction::zero()));
+    }
+    if n >= 64 {
+        step_n(1 + (n as u64).saturating_mul(n as u64) / 2_000)?;
+    }
+    // a bound variable is read in place, without a copy of its value
+    let at = match x {
+        Expr::Var(name) => lookup(env, name).and_then(Fraction::to_i64),
+        _ => None,
+    };
+    let at = match at {
+        Some(k) => k,
+        None => {
+            let v = x.eval(env)?;
+            match v.to_i64() {
+                Some(k) => k,
+                None => return Ok(Operand::Owned(crate::poly::bernstein::bernstein(i as usize, n as usize, &v))),
+            }
+        }
+    };
+    Ok(Operand::Shared(memo((i, n, at), || {
+        crate::poly::bernstein::bernstein(i as usize, n as usize, &Fraction::from_i64(at))
+    })))
 }
 
 /// `C(n, k)` (`0 ≤ k ≤ n`), memoised (`x = i64::MIN` marks the binomial entries).
 fn binomial_memo(n: i64, k: i64) -> Fraction {
-    memo((k, n, i64::MIN), || Fraction::from(BigRational::from_integer(binomial(n as usize, k as usize))))
+    Rc::unwrap_or_clone(memo((k, n, i64::MIN), || {
+        Fraction::from(BigRational::from_integer(binomial(n as usize, k as usize)))
+    }))
 }
 
 /// An integer argument (exponent, `C`'s and `B`'s indices, fold bounds), as [`small_int`] of its
@@ -506,6 +578,14 @@ fn pow(x: &Fraction, k: i64) -> std::result::Result<Fraction, EvalError> {
 }
 
 impl Expr {
+    /// The value of an operand of `+ − * /`: Bernstein values come shared from the memo.
+    fn operand(&self, env: &mut Env) -> std::result::Result<Operand, EvalError> {
+        match self {
+            Expr::Bern(i, n, x) => bern(i, n, x, env),
+            e => Ok(Operand::Owned(e.eval(env)?)),
+        }
+    }
+
     /// The exact value under `env`.
     ///
     /// # Errors
@@ -517,14 +597,8 @@ impl Expr {
             Expr::Var(n) => lookup(env, n).cloned().ok_or_else(|| EvalError::Invalid(format!("unknown name {n}")))?,
             Expr::Neg(e) => -e.eval(env)?,
             Expr::Bin(op, a, b) => {
-                let (x, y) = (a.eval(env)?, b.eval(env)?);
-                match op {
-                    '+' => x + y,
-                    '-' => x - y,
-                    '*' => x * y,
-                    _ if y.is_zero() => return Err(EvalError::DivisionByZero),
-                    _ => x / y,
-                }
+                let (x, y) = (a.operand(env)?, b.operand(env)?);
+                combine(*op, x, y)?
             }
             Expr::Pow(a, k) => {
                 let k = int_arg(k, env, "exponent")?;
@@ -545,23 +619,7 @@ impl Expr {
                     binomial_memo(n, k)
                 }
             }
-            Expr::Bern(i, n, x) => {
-                let (i, n) = (int_arg(i, env, "B's i")?, int_arg(n, env, "B's n")?);
-                if n < 0 || i < 0 || i > n {
-                    Fraction::zero()
-                } else {
-                    if n >= 64 {
-                        step_n(1 + (n as u64).saturating_mul(n as u64) / 2_000)?;
-                    }
-                    match &**x {
-                        // a bound variable: no copy of its value
-                        Expr::Var(name) if lookup(env, name).is_some() => {
-                            bernstein_memo(i, n, lookup(env, name).expect("just found"))
-                        }
-                        x => bernstein_memo(i, n, &x.eval(env)?),
-                    }
-                }
-            }
+            Expr::Bern(i, n, x) => bern(i, n, x, env)?.into_owned(),
             Expr::Fold(is_sum, r, lo, hi, body) => {
                 let (lo, hi) = (int_arg(lo, env, "lower bound")?, int_arg(hi, env, "upper bound")?);
                 let mut acc = if *is_sum { Fraction::zero() } else { Fraction::one() };
@@ -679,6 +737,8 @@ impl Expr {
 impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            // `61/2` bare inside `1 / 61/2` would read back as `(1/61)/2`
+            Expr::Num(v) if !v.is_integer() || v.is_negative() => write!(f, "({v})"),
             Expr::Num(v) => write!(f, "{v}"),
             Expr::Var(n) => write!(f, "{n}"),
             Expr::Neg(e) => write!(f, "-({e})"),
