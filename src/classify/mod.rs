@@ -237,7 +237,7 @@ fn invariants_json<K: fmt::Display, S: serde::Serializer>(v: &[K; 3], s: S) -> s
     use serde::ser::SerializeMap;
     let mut m = s.serialize_map(Some(3))?;
     for (name, x) in ["A", "B", "C"].iter().zip(v) {
-        m.serialize_entry(name, &x.to_string())?;
+        m.serialize_entry(name, &crate::num::serial::AsString(x))?;
     }
     m.end()
 }
@@ -249,8 +249,8 @@ fn t_e_and_d_json<K: fmt::Display, S: serde::Serializer>(
     use serde::ser::SerializeMap;
     let mut m = s.serialize_map(None)?;
     if let Some((t_e, d)) = v {
-        m.serialize_entry("t_E", &t_e.to_string())?;
-        m.serialize_entry("d", &d.to_string())?;
+        m.serialize_entry("t_E", &crate::num::serial::AsString(t_e))?;
+        m.serialize_entry("d", &crate::num::serial::AsString(d))?;
     }
     m.end()
 }

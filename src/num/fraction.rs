@@ -139,6 +139,7 @@ impl Scalar for Fraction {
 }
 
 impl Exact for Fraction {
+    const ATOMIC_DISPLAY: bool = true;
     fn sign(&self) -> Ordering {
         self.num.sign().cmp(&num_bigint::Sign::NoSign)
     }

@@ -236,33 +236,35 @@ impl<K: Exact> Exact for QuadraticExt<K> {
 }
 
 impl<K: Exact> fmt::Display for QuadraticExt<K> {
-    /// `a`, `b*sqrt(d)` or `a + b*sqrt(d)` / `a - b*sqrt(d)`, with `K`'s own formatting.
+    /// `a`, `b*sqrt(d)` or `a + b*sqrt(d)` / `a - b*sqrt(d)`, with `K`'s own formatting
+    /// (parenthesised where `K` spells a number with spaces).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.b.is_zero() {
             return write!(f, "{}", self.a);
         }
-        let paren = |x: &K| {
+        let paren = |f: &mut fmt::Formatter<'_>, x: &K| -> fmt::Result {
+            if K::ATOMIC_DISPLAY {
+                return write!(f, "{x}");
+            }
             let s = x.to_string();
-            if s.contains(' ') { format!("({s})") } else { s }
+            if s.contains(' ') { write!(f, "({s})") } else { f.write_str(&s) }
         };
-        let radical = |b: &K| {
-            if *b == K::one() {
-                format!("sqrt({})", paren(&self.d))
-            } else {
-                format!("{}*sqrt({})", paren(b), paren(&self.d))
+        let radical = |f: &mut fmt::Formatter<'_>, b: &K| -> fmt::Result {
+            if *b != K::one() {
+                paren(f, b)?;
+                f.write_str("*")?;
             }
+            f.write_str("sqrt(")?;
+            paren(f, &self.d)?;
+            f.write_str(")")
         };
-        if self.a.is_zero() {
-            if self.b.sign() == Ordering::Less {
-                return write!(f, "-{}", radical(&-self.b.clone()));
-            }
-            return write!(f, "{}", radical(&self.b));
+        let negative = self.b.sign() == Ordering::Less;
+        if !self.a.is_zero() {
+            write!(f, "{} {} ", self.a, if negative { '-' } else { '+' })?;
+        } else if negative {
+            f.write_str("-")?;
         }
-        if self.b.sign() == Ordering::Less {
-            write!(f, "{} - {}", self.a, radical(&-self.b.clone()))
-        } else {
-            write!(f, "{} + {}", self.a, radical(&self.b))
-        }
+        if negative { radical(f, &-self.b.clone()) } else { radical(f, &self.b) }
     }
 }
 

@@ -77,6 +77,11 @@ pub trait Exact: Scalar + Eq {
     /// `x.exact_sqrt() == Some(r)` implies `r ≥ 0` and `r·r == x`; `None` exactly when `x` is
     /// negative or not a square in the field.
     fn exact_sqrt(&self) -> Option<Self>;
+
+    /// Whether `Display` writes one token without spaces (a rational `-7/6`), so that a
+    /// compound spelling such as `a + b*sqrt(d)` needs no parentheses around it. `false`
+    /// unless an implementation says otherwise.
+    const ATOMIC_DISPLAY: bool = false;
 }
 
 impl Scalar for f64 {
@@ -122,6 +127,7 @@ impl Scalar for BigRational {
 }
 
 impl Exact for BigRational {
+    const ATOMIC_DISPLAY: bool = true;
     fn sign(&self) -> Ordering {
         if Signed::is_negative(self) {
             Ordering::Less
@@ -248,6 +254,7 @@ impl Scalar for Rational {
 }
 
 impl Exact for Rational {
+    const ATOMIC_DISPLAY: bool = true;
     fn sign(&self) -> Ordering {
         self.0.sign()
     }

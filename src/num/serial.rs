@@ -34,9 +34,18 @@ pub fn string<T: Display, S: Serializer>(value: &T, s: S) -> Result<S::Ok, S::Er
 pub fn strings<T: Display, S: Serializer>(values: &[T], s: S) -> Result<S::Ok, S::Error> {
     let mut seq = s.serialize_seq(Some(values.len()))?;
     for v in values {
-        seq.serialize_element(&v.to_string())?;
+        seq.serialize_element(&AsString(v))?;
     }
     seq.end()
+}
+
+/// A value serialized as the string its `Display` writes (no intermediate `String`).
+pub struct AsString<'a, T>(pub &'a T);
+
+impl<T: Display> Serialize for AsString<'_, T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self.0)
+    }
 }
 
 /// An optional exact number: a string, or `null`.

@@ -254,6 +254,7 @@ impl Scalar for SmallRational {
 }
 
 impl Exact for SmallRational {
+    const ATOMIC_DISPLAY: bool = true;
     fn sign(&self) -> Ordering {
         self.num.cmp(&0)
     }
