@@ -175,9 +175,10 @@ pub fn batch(
 /// [`batch`] on the raw text of each input line (for inputs that are not a control polygon,
 /// such as JSON Lines splines): `f` gets the line number and the text.
 ///
-/// Input is streamed: lines are read in chunks of [`CHUNK_LINES`], each chunk is answered on
-/// `--threads` cores (rayon; one thread answers in order without it) and written in input
-/// order before the next chunk is read, so memory is bounded by the chunk, not the input.
+/// Input is streamed: lines are read in chunks of [`CHUNK_LINES`]; chunk k is answered on
+/// `--threads` cores (rayon) while this thread writes chunk k − 1's answers in input order and
+/// reads chunk k + 1 (with one thread: write, answer, read in turn), so memory is bounded by two
+/// chunks, not the input.
 pub fn batch_lines(
     args: &CurveArgs,
     out: &mut dyn Write,
@@ -224,16 +225,9 @@ pub fn batch_lines(
     let mut code = 0;
     let mut failed = false;
     let mut done = 0usize;
-    loop {
-        let chunk: Vec<_> = source.by_ref().take(CHUNK_LINES).collect();
-        if chunk.is_empty() {
-            break;
-        }
-        let answers: Vec<Result<Answer>> = if sequential {
-            chunk.iter().map(answer).collect()
-        } else {
-            pool.install(|| chunk.par_iter().map(answer).collect())
-        };
+    type Item = (Option<usize>, std::result::Result<String, String>);
+    // writes one chunk's answers in order; false once stdout is closed
+    let mut write_chunk = |chunk: &[Item], answers: Vec<Result<Answer>>| -> bool {
         for ((line, _), result) in chunk.iter().zip(answers) {
             let line = *line;
             let written = match result {
@@ -280,13 +274,41 @@ pub fn batch_lines(
                 }
             };
             if written.is_err() {
-                return code.max(2); // stdout closed (e.g. a pipe): stop quietly
+                return false; // stdout closed (e.g. a pipe): stop quietly
             }
         }
         done += chunk.len();
         if progress {
             eprint!("\r\x1b[K{done} lines");
         }
+        true
+    };
+    // Chunk k is answered on the pool while this thread writes chunk k − 1 and reads chunk k + 1.
+    let mut pending: Option<(Vec<Item>, Vec<Result<Answer>>)> = None;
+    let mut chunk: Vec<Item> = source.by_ref().take(CHUNK_LINES).collect();
+    while !chunk.is_empty() {
+        let (answers, next, open) = if sequential {
+            let open = pending.take().is_none_or(|(c, a)| write_chunk(&c, a));
+            let answers: Vec<Result<Answer>> = chunk.iter().map(answer).collect();
+            (answers, source.by_ref().take(CHUNK_LINES).collect(), open)
+        } else {
+            std::thread::scope(|scope| {
+                let worker = scope.spawn(|| pool.install(|| chunk.par_iter().map(answer).collect::<Vec<_>>()));
+                let open = pending.take().is_none_or(|(c, a)| write_chunk(&c, a));
+                let next: Vec<Item> = if open { source.by_ref().take(CHUNK_LINES).collect() } else { vec![] };
+                let answers = worker.join().unwrap_or_else(|p| std::panic::resume_unwind(p));
+                (answers, next, open)
+            })
+        };
+        if !open {
+            return code.max(2);
+        }
+        pending = Some((std::mem::replace(&mut chunk, next), answers));
+    }
+    if let Some((c, a)) = pending.take()
+        && !write_chunk(&c, a)
+    {
+        return code.max(2);
     }
     if progress {
         eprint!("\r\x1b[K");
