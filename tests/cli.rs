@@ -423,3 +423,44 @@ fn cli_batch_streaming_per_line_errors_and_thread_independent_order() {
         String::from_utf8_lossy(&text.stderr)
     );
 }
+
+/// `--numbers binary64`: the curve a float program holds after reading "0.1" etc. is not the
+/// decimal one. These decimals make an explicit cubic (A = 0) exactly; their binary64 values make
+/// an acnode. Hex floats are exact in both modes.
+#[test]
+fn cli_numbers_binary64_classifies_the_float_curve() {
+    let curve = "0 0, 0.1 0.3, 0.2 -0.1, 0.3 0.2";
+    let class = |args: &[&str]| -> String {
+        let o = run(args, None);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        v["class"].as_str().unwrap().to_string()
+    };
+    assert_eq!(class(&["classify", "--json", curve]), "explicit");
+    assert_eq!(class(&["classify", "--json", "--numbers", "binary64", curve]), "acnode");
+    // the same binary64 values written as hex floats: exact in the default mode
+    let hex: Vec<String> = curve
+        .split(',')
+        .map(|p| {
+            p.split_whitespace().map(|t| format!("{:?}", hexf(t.parse::<f64>().unwrap()))).collect::<Vec<_>>().join(" ")
+        })
+        .collect();
+    assert_eq!(class(&["classify", "--json", &hex.join(", ").replace('"', "")]), "acnode");
+    // batch lines take the mode too; out-of-range numbers name the token
+    let o = run(&["classify", "--numbers", "binary64", "--input", "-"], Some("0 0, 1 1, 2 0, 1e400 1\n"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("\"1e400\"") && stderr(&o).contains("line 1"), "{}", stderr(&o));
+}
+
+/// `x` as a C99 hex float (`0x1.999999999999ap-4` for 0.1).
+fn hexf(x: f64) -> String {
+    if x == 0.0 {
+        return "0x0p0".into();
+    }
+    let bits = x.to_bits();
+    let sign = if bits >> 63 == 1 { "-" } else { "" };
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1 << 52) - 1);
+    assert!(exp != 0, "normal numbers only");
+    format!("{sign}0x1.{frac:013x}p{}", exp - 1023)
+}

@@ -110,3 +110,20 @@ fn expression_fraction_literal_prints_in_parentheses() {
     assert_eq!(v(&again), v(&e));
     assert_eq!(v(&e).to_string(), "2/61");
 }
+
+proptest! {
+    /// Any finite f64, printed as Rust prints it (shortest round-trip decimal, plain or with an
+    /// exponent), reads back in binary64 mode as exactly that f64 — and in exact mode as the
+    /// decimal, which is the f64 only when the decimal is a binary fraction.
+    #[test]
+    fn binary64_mode_reads_back_every_printed_f64(bits in any::<u64>()) {
+        use casteljau::num::parse::{NumberMode, parse_number_in};
+        let x = f64::from_bits(bits);
+        prop_assume!(x.is_finite());
+        let exact = num_rational::BigRational::from_float(x).unwrap();
+        for text in [format!("{x}"), format!("{x:e}"), format!("{x:?}")] {
+            let v = parse_number_in(&text, Default::default(), NumberMode::Binary64).unwrap();
+            prop_assert_eq!(&v, &exact, "{}", text);
+        }
+    }
+}

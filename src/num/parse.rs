@@ -1,10 +1,18 @@
 //! Exact numbers and control polygons from text.
 //!
-//! Numbers: an optional sign, then an integer (`-3`), a fraction (`-7/12`), or a decimal with an
-//! optional exponent (`0.125`, `.5`, `1.5e-3`, `2E3`). Decimals are exact: `0.1` is `1/10`.
-//! Rejected, with the token and its position: `nan`, `inf`, `1/0`, `1//2`, `0x10`, `1/-2`,
+//! Numbers: an optional sign, then an integer (`-3`), a fraction (`-7/12`), a decimal with an
+//! optional exponent (`0.125`, `.5`, `1.5e-3`, `2E3`), or a hexadecimal float with a binary
+//! exponent (`0x1.8p-3` = 3/16, `-0x1p-1074`, the smallest subnormal, as C's `%a` and Rust's
+//! hexf write them). Decimals are exact: `0.1` is `1/10`. Rejected, with the token and its
+//! position: `nan`, `inf`, `1/0`, `1//2`, `0x10` (a hex float needs its `p` exponent), `1/-2`,
 //! empty tokens, tokens longer than [`MAX_TOKEN_LEN`] characters and exponents beyond
-//! ±[`MAX_EXPONENT`].
+//! ±[`MAX_EXPONENT`] (decimal) or ±[`MAX_BINARY_EXPONENT`] (hex).
+//!
+//! [`NumberMode::Binary64`] reads every number as the IEEE-754 binary64 value nearest to it
+//! (ties to even, as Rust's `f64` parser and C's `strtod` round), taken exactly: the number a float
+//! program holds after reading the same text. `0.1` is then
+//! `3602879701896397/36028797018963968`, not `1/10`; `0x1.8p-3`, `0.5` and integers up to 2^53
+//! are binary64 values already and stay as they are.
 //!
 //! Curves: numbers separated by whitespace and/or commas. When commas separate groups of
 //! several numbers (`"x0 y0, x1 y1"`), each group is one point and must have `dim` numbers;
@@ -22,6 +30,51 @@ use num_traits::{Pow, Zero};
 pub const MAX_TOKEN_LEN: usize = 1000;
 /// Largest accepted decimal exponent magnitude (`1e1000` is accepted, `1e1001` is not).
 pub const MAX_EXPONENT: u32 = 1000;
+/// Largest accepted binary exponent magnitude of a hex float (binary64 needs ±1074).
+pub const MAX_BINARY_EXPONENT: u32 = 16384;
+
+/// How numbers in text are read.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum NumberMode {
+    /// Every number is the exact rational it spells (`0.1` = 1/10).
+    #[default]
+    Exact,
+    /// Every number is the binary64 value nearest to it, exactly (`0.1` = 3602879701896397/2^55).
+    Binary64,
+}
+
+/// [`parse_number`] in a [`NumberMode`].
+///
+/// # Errors
+/// As [`parse_number`]; in binary64 mode also a number beyond the binary64 range (it would round
+/// to infinity).
+///
+/// # Example
+/// ```
+/// use casteljau::num::parse::{NumberMode, parse_number_in};
+/// let p = Default::default();
+/// let x = parse_number_in("0.1", p, NumberMode::Binary64).unwrap();
+/// assert_eq!(x.to_string(), "3602879701896397/36028797018963968"); // the f64 0.1, exactly
+/// assert_eq!(parse_number_in("0.1", p, NumberMode::Exact).unwrap().to_string(), "1/10");
+/// assert!(parse_number_in("1e309", p, NumberMode::Binary64).is_err());
+/// ```
+pub fn parse_number_in(token: &str, position: Position, mode: NumberMode) -> Result<BigRational> {
+    let r = parse_number(token, position)?;
+    match mode {
+        NumberMode::Exact => Ok(r),
+        NumberMode::Binary64 => {
+            let f = crate::num::scalar::ratio_to_f64(&r);
+            if !f.is_finite() {
+                return Err(Error::ParseNumber {
+                    token: token.chars().take(40).collect(),
+                    position,
+                    reason: "beyond the binary64 range (it rounds to infinity)".into(),
+                });
+            }
+            Ok(BigRational::from_float(f).expect("finite floats are ratios"))
+        }
+    }
+}
 
 /// Parses one exact number.
 ///
@@ -56,7 +109,9 @@ pub fn parse_number(token: &str, position: Position) -> Result<BigRational> {
         b'+' => (false, &token[1..]),
         _ => (false, token),
     };
-    let value = if let Some((num, den)) = body.split_once('/') {
+    let value = if body.starts_with("0x") || body.starts_with("0X") {
+        parse_hex_float(&body[2..]).map_err(fail)?
+    } else if let Some((num, den)) = body.split_once('/') {
         let n = digits(num).ok_or_else(|| fail("numerator is not a plain integer"))?;
         let d = digits(den).ok_or_else(|| fail("denominator is not a plain positive integer"))?;
         if d.is_zero() {
@@ -67,6 +122,39 @@ pub fn parse_number(token: &str, position: Position) -> Result<BigRational> {
         parse_decimal(body).map_err(fail)?
     };
     Ok(if negative { -value } else { value })
+}
+
+/// `h[.h]p[±]d` after `0x`: hex digits with an optional point, then a decimal binary exponent.
+fn parse_hex_float(s: &str) -> std::result::Result<BigRational, &'static str> {
+    let (mantissa, exponent) = s.split_once(['p', 'P']).ok_or("a hex float needs a binary exponent (0x1.8p-3)")?;
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if int.is_empty() && frac.is_empty() {
+        return Err("a hex float needs hex digits");
+    }
+    if !int.bytes().chain(frac.bytes()).all(|b| b.is_ascii_hexdigit()) {
+        return Err("not a hex float (hex digits, then p and the exponent)");
+    }
+    let (eneg, edigits) = match exponent.as_bytes().first() {
+        Some(b'-') => (true, &exponent[1..]),
+        Some(b'+') => (false, &exponent[1..]),
+        _ => (false, exponent),
+    };
+    if edigits.is_empty() || !edigits.bytes().all(|b| b.is_ascii_digit()) {
+        return Err("malformed binary exponent");
+    }
+    let magnitude: i64 = match edigits.parse::<u32>() {
+        Ok(m) if m <= MAX_BINARY_EXPONENT => m as i64,
+        _ => return Err("binary exponent too large (limit ±16384)"),
+    };
+    let digits = format!("{int}{frac}");
+    let n = BigInt::parse_bytes(digits.as_bytes(), 16).ok_or("not a hex float")?;
+    let shift = if eneg { -magnitude } else { magnitude } - 4 * frac.len() as i64;
+    let two = BigInt::from(2u32);
+    Ok(if shift >= 0 {
+        BigRational::from_integer(n * Pow::pow(&two, shift as u64))
+    } else {
+        BigRational::new(n, Pow::pow(&two, (-shift) as u64))
+    })
 }
 
 /// A non-empty run of ASCII digits.
@@ -173,6 +261,19 @@ fn tokens(text: &str) -> std::result::Result<Vec<Token<'_>>, (usize, usize)> {
 /// assert!(parse_points("0 0, 1", 2, None).is_err());
 /// ```
 pub fn parse_points(text: &str, dim: usize, line: Option<usize>) -> Result<Vec<Point<BigRational>>> {
+    parse_points_in(text, dim, line, NumberMode::Exact)
+}
+
+/// [`parse_points`] in a [`NumberMode`].
+///
+/// # Errors
+/// As [`parse_points`] and [`parse_number_in`].
+pub fn parse_points_in(
+    text: &str,
+    dim: usize,
+    line: Option<usize>,
+    mode: NumberMode,
+) -> Result<Vec<Point<BigRational>>> {
     let toks = tokens(text).map_err(|(column, token)| Error::ParseNumber {
         token: String::new(),
         position: Position { line, column, token },
@@ -184,7 +285,7 @@ pub fn parse_points(text: &str, dim: usize, line: Option<usize>) -> Result<Vec<P
     let mut values = Vec::with_capacity(toks.len());
     for (k, t) in toks.iter().enumerate() {
         let position = Position { line, column: t.column, token: k + 1 };
-        values.push(parse_number(t.text, position)?);
+        values.push(parse_number_in(t.text, position, mode)?);
     }
     group_points(&toks, values, dim, line)
 }
@@ -232,11 +333,29 @@ fn group_points<T: Scalar>(
 /// assert!(parse_points_small("0 0, 1", 2, None).is_none()); // malformed: the exact route reports it
 /// ```
 pub fn parse_points_small(text: &str, dim: usize, line: Option<usize>) -> Option<Vec<Point<SmallRational>>> {
+    parse_points_small_in(text, dim, line, NumberMode::Exact)
+}
+
+/// [`parse_points_small`] in a [`NumberMode`]: in binary64 mode only numbers that are binary64
+/// values already (a power-of-two denominator and a numerator of at most 53 bits) take the fast
+/// route; the rest are rounded by [`parse_points_in`].
+pub fn parse_points_small_in(
+    text: &str,
+    dim: usize,
+    line: Option<usize>,
+    mode: NumberMode,
+) -> Option<Vec<Point<SmallRational>>> {
     let toks = tokens(text).ok()?;
     if toks.is_empty() {
         return None;
     }
-    let values = toks.iter().map(|t| small_number(t.text)).collect::<Option<Vec<_>>>()?;
+    let exact_binary64 = |x: &SmallRational| {
+        (x.denom() as u128).is_power_of_two() && x.numer().unsigned_abs() <= 1 << 53 && x.denom() <= 1 << 100
+    };
+    let values = toks
+        .iter()
+        .map(|t| small_number(t.text).filter(|x| mode == NumberMode::Exact || exact_binary64(x)))
+        .collect::<Option<Vec<_>>>()?;
     group_points(&toks, values, dim, line).ok()
 }
 

@@ -175,7 +175,7 @@ struct FloatApproximations {
 /// evidence too. Only the output asked for (`json` or text) is rendered.
 pub(crate) fn classify(
     text: &str,
-    dim: usize,
+    (dim, mode): (usize, casteljau::num::parse::NumberMode),
     line: Option<usize>,
     float: bool,
     full: bool,
@@ -183,13 +183,13 @@ pub(crate) fn classify(
 ) -> Result<Answer> {
     use casteljau::num::small::checked;
     let fast = (!full)
-        .then(|| casteljau::num::parse::parse_points_small(text, dim, line))
+        .then(|| casteljau::num::parse::parse_points_small_in(text, dim, line, mode))
         .flatten()
         .and_then(|pts| checked(|| BezierCurve::new(pts).and_then(|c| casteljau::classify::classify_in(&c))));
     if let Some(k) = fast {
         return Ok(classification_answer(&k?, None, float, json));
     }
-    let c = casteljau::num::parse::parse_points(text, dim, line).and_then(BezierCurve::new)?;
+    let c = casteljau::num::parse::parse_points_in(text, dim, line, mode).and_then(BezierCurve::new)?;
     let k = casteljau::classify::classify_in(&c)?;
     let evidence = if full { casteljau::classify::evidence::cubic_evidence(&c, &k)? } else { None };
     Ok(classification_answer(&k, evidence, float, json))

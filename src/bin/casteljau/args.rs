@@ -3,9 +3,11 @@
 use clap::{Args, Parser, Subcommand};
 
 pub const AFTER_HELP: &str = "\
-CURVES: control points as exact numbers (integers, p/q, decimals such as 0.125 or 1.5e-3),
-commas between points: \"x0 y0, x1 y1, x2 y2\". With --input FILE (or '-' / no curve: stdin)
-each line is one curve; numbers may be separated by whitespace or commas, read --dim at a time.
+CURVES: control points as exact numbers (integers, p/q, decimals such as 0.125 or 1.5e-3, hex
+floats such as 0x1.8p-3), commas between points: \"x0 y0, x1 y1, x2 y2\". --numbers binary64 reads
+each as the f64 nearest to it (0.1 = 3602879701896397/2^55), as float code holds it.
+With --input FILE (or '-' / no curve: stdin) each line is one curve; numbers may be separated by
+whitespace or commas, read --dim at a time.
 Blank lines and lines starting with '#' are skipped.
 
 LIMITS: each answer's cost is estimated from the input (degree, bit lengths, output size) before
@@ -499,4 +501,27 @@ pub struct CurveArgs {
     /// answer whose estimated cost exceeds it is refused (exit 2) before any work starts.
     #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
     pub max_work: f64,
+    /// How the control points' numbers are read: `exact` (0.1 is 1/10) or `binary64` (every
+    /// number is the f64 nearest to it, taken exactly, as your float code holds it: 0.1 is
+    /// 3602879701896397/2^55). Hex floats (0x1.8p-3) are exact binary values in both modes.
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
+}
+
+/// `--numbers`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Numbers {
+    /// Every number is the exact rational it spells.
+    Exact,
+    /// Every number is the nearest IEEE-754 binary64 value (ties to even), taken exactly.
+    Binary64,
+}
+
+impl From<Numbers> for casteljau::num::parse::NumberMode {
+    fn from(n: Numbers) -> Self {
+        match n {
+            Numbers::Exact => casteljau::num::parse::NumberMode::Exact,
+            Numbers::Binary64 => casteljau::num::parse::NumberMode::Binary64,
+        }
+    }
 }

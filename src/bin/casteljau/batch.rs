@@ -7,7 +7,7 @@
 use crate::args::{CurveArgs, RationalArgs};
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::error::{Error, Position, Result};
-use casteljau::num::parse::{parse_number, parse_numbers, parse_points};
+use casteljau::num::parse::{parse_number, parse_numbers, parse_points_in};
 use casteljau::num::point::Point;
 use casteljau::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
@@ -168,7 +168,7 @@ pub fn batch(
     f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer> + Sync,
 ) -> i32 {
     batch_lines(args, out, |line, text| {
-        parse_points(text, args.dim, line).and_then(BezierCurve::new).and_then(|c| f(&c))
+        parse_points_in(text, args.dim, line, args.numbers.into()).and_then(BezierCurve::new).and_then(|c| f(&c))
     })
 }
 
