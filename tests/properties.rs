@@ -272,3 +272,37 @@ mod polynomial_routes {
         }
     }
 }
+
+/// `a + b√d` to 200 fractional bits below its leading bit: `a + b·⌊√(d·4^k)⌋/2^k`, an oracle
+/// independent of the exact-sign search in `to_f64`.
+fn high_precision(a: &BigRational, b: &BigRational, d: &BigRational) -> BigRational {
+    let k = 400u32;
+    let scale = BigInt::from(1) << k;
+    let num = d.numer() * &scale * &scale * d.denom();
+    let root = num.sqrt(); // ⌊√(p q 4^k)⌋ = ⌊2^k √d · q⌋
+    a + b * BigRational::new(root, scale * d.denom())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// `to_f64` of `a + b√d` is the correctly rounded value: it agrees with rounding a
+    /// 400-bit approximation, including under heavy cancellation (a ≈ −b√d).
+    #[test]
+    fn quadratic_extension_to_f64_is_correctly_rounded(
+        p in -1000i64..1000, q in 1i64..1000, r in -1000i64..1000, s in 1i64..1000, d in 2i64..10_000, shift in 0u32..60,
+    ) {
+        let d = BigRational::from_integer(BigInt::from(d));
+        prop_assume!(casteljau::num::scalar::rational_sqrt(&d).is_none());
+        let (a, b) = (BigRational::new(p.into(), q.into()), BigRational::new(r.into(), s.into()));
+        prop_assume!(!b.is_zero());
+        // a cancelling pair: a' = nearest 2^-shift-grid value to -b√d, so x = a' + b√d is tiny
+        let approx = -(b.clone() * high_precision(&rat(0), &rat(1), &d));
+        let grid = BigRational::from_integer(BigInt::from(1) << shift);
+        let a2 = (approx * &grid).round() / &grid;
+        for a in [a, a2] {
+            let x = QuadraticExt::new(a.clone(), b.clone(), d.clone());
+            prop_assert_eq!(x.to_f64(), ratio_to_f64(&high_precision(&a, &b, &d)), "{}", x);
+        }
+    }
+}

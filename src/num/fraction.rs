@@ -140,6 +140,9 @@ impl Scalar for Fraction {
 
 impl Exact for Fraction {
     const ATOMIC_DISPLAY: bool = true;
+    fn to_ratio(&self) -> Option<BigRational> {
+        Some(self.to_big())
+    }
     fn sign(&self) -> Ordering {
         self.num.sign().cmp(&num_bigint::Sign::NoSign)
     }

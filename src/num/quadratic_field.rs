@@ -181,8 +181,87 @@ impl<K: Exact> Scalar for QuadraticExt<K> {
     fn is_zero(&self) -> bool {
         self.a.is_zero() && self.b.is_zero()
     }
+    /// Correctly rounded (nearest, ties to even) when `K` is a rational type, decided by exact
+    /// signs (see [`nearest_f64`]); for towers (`K` itself an extension) the floating-point value
+    /// of `a + b·√d`.
     fn to_f64(&self) -> f64 {
-        self.a.to_f64() + self.b.to_f64() * self.d.to_f64().sqrt()
+        if self.b.is_zero() {
+            return self.a.to_f64();
+        }
+        let approx = self.a.to_f64() + self.b.to_f64() * self.d.to_f64().sqrt();
+        // decided in Q(√d) over BigRational: every rational the search compares with fits there
+        match (self.a.to_ratio(), self.b.to_ratio(), self.d.to_ratio()) {
+            (Some(a), Some(b), Some(d)) => {
+                let x = QuadraticExt { a, b, d };
+                nearest_f64(|r| (x.clone() - &QuadraticExt::from_base(r.clone())).sign(), approx)
+            }
+            // a tower element: the approximation (not certified)
+            _ => approx,
+        }
+    }
+}
+
+/// The `f64` nearest to a real number `x` (ties to even; `±inf` from `±(2^1024 − 2^970)` on, as
+/// IEEE-754 rounds), given only `sign_minus(r) = sign(x − r)` for rationals `r` and a guess.
+///
+/// The guess is checked and walked a few ulps; if it is farther off (cancellation in
+/// `a + b√d`), a binary search over the ordered `f64` bit patterns finds the two neighbours
+/// of `x` in at most 64 exact comparisons. Then `x` is compared with their midpoint. Every
+/// decision is an exact sign, so the result is the correctly rounded value whatever the guess.
+pub fn nearest_f64(sign_minus: impl Fn(&BigRational) -> Ordering, guess: f64) -> f64 {
+    use num_traits::Pow;
+    let limit = || -> BigRational { Pow::pow(BigRational::from_integer(2.into()), 1024u32) };
+    // the value of f, with ±inf standing for ±2^1024 (the next exponent's first value)
+    let ext = |f: f64| -> BigRational {
+        if f.is_infinite() {
+            if f > 0.0 { limit() } else { -limit() }
+        } else {
+            BigRational::from_float(f).expect("finite")
+        }
+    };
+    // x ≥ f
+    let at_least = |f: f64| sign_minus(&ext(f)) != Ordering::Less;
+    if at_least(f64::INFINITY) {
+        return f64::INFINITY;
+    }
+    if !at_least(f64::NEG_INFINITY) {
+        return f64::NEG_INFINITY;
+    }
+    // f with ext(f) ≤ x < ext(next_up(f))
+    let mut f = if guess.is_finite() { guess } else { 0.0 };
+    let mut found = false;
+    for _ in 0..4 {
+        if !at_least(f) {
+            f = f.next_down();
+        } else if at_least(f.next_up()) {
+            f = f.next_up();
+        } else {
+            found = true;
+            break;
+        }
+    }
+    if !found {
+        // ordered keys of the f64s from -inf to +inf; the largest key with ext ≤ x
+        let key = |x: f64| -> u64 {
+            let b = x.to_bits();
+            if b >> 63 == 1 { !b } else { b | 1 << 63 }
+        };
+        let unkey = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
+        let (mut lo, mut hi) = (key(f64::NEG_INFINITY), key(f64::INFINITY));
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if at_least(unkey(mid)) { lo = mid } else { hi = mid }
+        }
+        f = unkey(lo);
+    }
+    let up = f.next_up();
+    let m = (ext(f) + ext(up)) / BigRational::from_integer(2.into());
+    match sign_minus(&m) {
+        Ordering::Less => f,
+        Ordering::Greater => up,
+        // a tie: the neighbour with an even significand (MAX is odd: a tie above it goes to inf)
+        Ordering::Equal if up.is_infinite() || up.to_bits() & 1 == 0 => up,
+        Ordering::Equal => f,
     }
 }
 

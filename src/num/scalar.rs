@@ -82,6 +82,12 @@ pub trait Exact: Scalar + Eq {
     /// compound spelling such as `a + b*sqrt(d)` needs no parentheses around it. `false`
     /// unless an implementation says otherwise.
     const ATOMIC_DISPLAY: bool = false;
+
+    /// The number as a [`BigRational`] when it is one (every rational type); `None` for
+    /// extension elements.
+    fn to_ratio(&self) -> Option<BigRational> {
+        None
+    }
 }
 
 impl Scalar for f64 {
@@ -128,6 +134,9 @@ impl Scalar for BigRational {
 
 impl Exact for BigRational {
     const ATOMIC_DISPLAY: bool = true;
+    fn to_ratio(&self) -> Option<BigRational> {
+        Some(self.clone())
+    }
     fn sign(&self) -> Ordering {
         if Signed::is_negative(self) {
             Ordering::Less
@@ -255,6 +264,9 @@ impl Scalar for Rational {
 
 impl Exact for Rational {
     const ATOMIC_DISPLAY: bool = true;
+    fn to_ratio(&self) -> Option<BigRational> {
+        Some(self.0.clone())
+    }
     fn sign(&self) -> Ordering {
         self.0.sign()
     }

@@ -255,6 +255,9 @@ impl Scalar for SmallRational {
 
 impl Exact for SmallRational {
     const ATOMIC_DISPLAY: bool = true;
+    fn to_ratio(&self) -> Option<BigRational> {
+        Some(self.to_big())
+    }
     fn sign(&self) -> Ordering {
         self.num.cmp(&0)
     }
