@@ -134,27 +134,42 @@ fn parse_hex_float(s: &str) -> std::result::Result<BigRational, &'static str> {
     if !int.bytes().chain(frac.bytes()).all(|b| b.is_ascii_hexdigit()) {
         return Err("not a hex float (hex digits, then p and the exponent)");
     }
-    let (eneg, edigits) = match exponent.as_bytes().first() {
-        Some(b'-') => (true, &exponent[1..]),
-        Some(b'+') => (false, &exponent[1..]),
-        _ => (false, exponent),
-    };
-    if edigits.is_empty() || !edigits.bytes().all(|b| b.is_ascii_digit()) {
-        return Err("malformed binary exponent");
-    }
-    let magnitude: i64 = match edigits.parse::<u32>() {
-        Ok(m) if m <= MAX_BINARY_EXPONENT => m as i64,
-        _ => return Err("binary exponent too large (limit ±16384)"),
+    let exp = match signed_exponent(exponent, MAX_BINARY_EXPONENT) {
+        Ok(e) => e,
+        Err(Exponent::Malformed) => return Err("malformed binary exponent"),
+        Err(Exponent::TooLarge) => return Err("binary exponent too large (limit ±16384)"),
     };
     let digits = format!("{int}{frac}");
     let n = BigInt::parse_bytes(digits.as_bytes(), 16).ok_or("not a hex float")?;
-    let shift = if eneg { -magnitude } else { magnitude } - 4 * frac.len() as i64;
-    let two = BigInt::from(2u32);
+    // each hex digit after the point is 4 bits
+    let shift = exp - 4 * frac.len() as i64;
     Ok(if shift >= 0 {
-        BigRational::from_integer(n * Pow::pow(&two, shift as u64))
+        BigRational::from_integer(n << shift as usize)
     } else {
-        BigRational::new(n, Pow::pow(&two, (-shift) as u64))
+        BigRational::new(n, BigInt::from(1) << (-shift) as usize)
     })
+}
+
+/// Why an exponent was refused.
+enum Exponent {
+    Malformed,
+    TooLarge,
+}
+
+/// `[±]digits` with magnitude at most `limit` (the exponent of a decimal or of a hex float).
+fn signed_exponent(e: &str, limit: u32) -> std::result::Result<i64, Exponent> {
+    let (negative, digits) = match e.as_bytes().first() {
+        Some(b'-') => (true, &e[1..]),
+        Some(b'+') => (false, &e[1..]),
+        _ => (false, e),
+    };
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(Exponent::Malformed);
+    }
+    match digits.parse::<u32>() {
+        Ok(m) if m <= limit => Ok(if negative { -(m as i64) } else { m as i64 }),
+        _ => Err(Exponent::TooLarge),
+    }
 }
 
 /// A non-empty run of ASCII digits.
@@ -178,22 +193,12 @@ fn parse_decimal(s: &str) -> std::result::Result<BigRational, &'static str> {
     if !int.bytes().all(|b| b.is_ascii_digit()) || !frac.bytes().all(|b| b.is_ascii_digit()) {
         return Err("not an exact number (use integers, p/q or decimals)");
     }
-    let mut exp: i64 = 0;
-    if let Some(e) = exponent {
-        let (eneg, edigits) = match e.as_bytes().first() {
-            Some(b'-') => (true, &e[1..]),
-            Some(b'+') => (false, &e[1..]),
-            _ => (false, e),
-        };
-        if edigits.is_empty() || !edigits.bytes().all(|b| b.is_ascii_digit()) {
-            return Err("malformed exponent");
-        }
-        let magnitude: u32 = match edigits.parse() {
-            Ok(m) if m <= MAX_EXPONENT => m,
-            _ => return Err("exponent too large (limit ±1000)"),
-        };
-        exp = if eneg { -(magnitude as i64) } else { magnitude as i64 };
-    }
+    let exp = match exponent.map(|e| signed_exponent(e, MAX_EXPONENT)) {
+        None => 0,
+        Some(Ok(e)) => e,
+        Some(Err(Exponent::Malformed)) => return Err("malformed exponent"),
+        Some(Err(Exponent::TooLarge)) => return Err("exponent too large (limit ±1000)"),
+    };
     let all_digits = format!("{int}{frac}");
     let n: BigInt = all_digits.parse().map_err(|_| "not a number")?;
     let scale = exp - frac.len() as i64;

@@ -422,7 +422,14 @@ thread_local! {
 }
 
 /// Memoised values by `(i, n, x)`.
-type Memo = std::collections::HashMap<(i64, i64, i64), Rc<Fraction>, MemoHash>;
+type Memo = std::collections::HashMap<MemoKey, Rc<Fraction>, MemoHash>;
+
+/// `B_i^n(x)` at an integer `x`, or `C(n, k)`: distinct keys whatever the values.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+enum MemoKey {
+    Bernstein(i64, i64, i64),
+    Binomial(i64, i64),
+}
 
 /// A multiplicative hash for the memo's small integer keys (SipHash's DoS resistance is not
 /// needed for keys the evaluator makes itself, and it cost a tenth of identity (8)'s time).
@@ -443,12 +450,15 @@ impl std::hash::Hasher for MemoHasher {
     fn write_i64(&mut self, n: i64) {
         self.write_u64(n as u64);
     }
+    fn write_usize(&mut self, n: usize) {
+        self.write_u64(n as u64);
+    }
     fn write_u64(&mut self, n: u64) {
         self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
     }
 }
 
-fn memo(key: (i64, i64, i64), f: impl FnOnce() -> Fraction) -> Rc<Fraction> {
+fn memo(key: MemoKey, f: impl FnOnce() -> Fraction) -> Rc<Fraction> {
     if let Some(v) = MEMO.with(|m| m.borrow().get(&key).cloned()) {
         return v;
     }
@@ -533,14 +543,14 @@ fn bern(i: &Expr, n: &Expr, x: &Expr, env: &mut Env) -> std::result::Result<Oper
             }
         }
     };
-    Ok(Operand::Shared(memo((i, n, at), || {
+    Ok(Operand::Shared(memo(MemoKey::Bernstein(i, n, at), || {
         crate::poly::bernstein::bernstein(i as usize, n as usize, &Fraction::from_i64(at))
     })))
 }
 
-/// `C(n, k)` (`0 ≤ k ≤ n`), memoised (`x = i64::MIN` marks the binomial entries).
+/// `C(n, k)` (`0 ≤ k ≤ n`), memoised.
 fn binomial_memo(n: i64, k: i64) -> Fraction {
-    Rc::unwrap_or_clone(memo((k, n, i64::MIN), || {
+    Rc::unwrap_or_clone(memo(MemoKey::Binomial(n, k), || {
         Fraction::from(BigRational::from_integer(binomial(n as usize, k as usize)))
     }))
 }

@@ -175,7 +175,8 @@ struct FloatApproximations {
 /// evidence too. Only the output asked for (`json` or text) is rendered.
 pub(crate) fn classify(
     text: &str,
-    (dim, mode): (usize, casteljau::num::parse::NumberMode),
+    dim: usize,
+    mode: casteljau::num::parse::NumberMode,
     line: Option<usize>,
     float: bool,
     full: bool,

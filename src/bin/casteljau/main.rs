@@ -149,7 +149,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                 let (dim, json, full) = (curve.dim, curve.json, detail == args::Detail::Full);
                 let mode = curve.numbers.into();
                 return batch::batch_lines(&curve, out, |line, text| {
-                    answers::classify(text, (dim, mode), line, float, full, json)
+                    answers::classify(text, dim, mode, line, float, full, json)
                 });
             }
             rational_batch(&rational, curve, out, move |c, w| {
