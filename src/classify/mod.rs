@@ -258,8 +258,31 @@ fn t_e_and_d_json<K: fmt::Display, S: serde::Serializer>(
 /// Largest degree [`classify`] accepts.
 pub const MAX_CLASSIFY_DEGREE: usize = 3;
 
-fn cross<K: Scalar>(u: &Point<K>, v: &Point<K>) -> K {
-    u.coords[0].clone() * &v.coords[1] - u.coords[1].clone() * &v.coords[0]
+/// A planar vector of the power form, held inline (the classifier allocates no points).
+type Vector<K> = [K; 2];
+
+fn cross<K: Scalar>(u: &Vector<K>, v: &Vector<K>) -> K {
+    u[0].clone() * &v[1] - u[1].clone() * &v[0]
+}
+
+/// The power coefficients `a_k = C(n, k) Δ^k P_0` of a planar curve of degree `n ≤ 3`, padded
+/// with zeros to four (the same numbers as [`BezierCurve::power_coefficients`]).
+fn power_form<K: Scalar>(curve: &BezierCurve<K>) -> [Vector<K>; 4] {
+    let n = curve.degree();
+    let mut diff: [Vector<K>; 4] = std::array::from_fn(|i| match curve.points().get(i) {
+        Some(p) => [p.coords[0].clone(), p.coords[1].clone()],
+        None => [K::zero(), K::zero()],
+    });
+    let mut out: [Vector<K>; 4] = std::array::from_fn(|_| [K::zero(), K::zero()]);
+    for k in 0..=n {
+        // C(n, k) for n ≤ 3
+        let c = [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]][n][k];
+        out[k] = if c == 1 { diff[0].clone() } else { diff[0].clone().map(|x| K::from_i64(c) * &x) };
+        for i in 0..n - k {
+            diff[i] = [diff[i + 1][0].clone() - &diff[i][0], diff[i + 1][1].clone() - &diff[i][1]];
+        }
+    }
+    out
 }
 
 /// `0 ≤ t ≤ 1`, exactly.
@@ -364,12 +387,11 @@ pub fn classify_in<K: Radical>(curve: &BezierCurve<K>) -> Result<Classification<
     if n > MAX_CLASSIFY_DEGREE {
         return Err(Error::TooLarge { what: "degree to classify", value: n, limit: MAX_CLASSIFY_DEGREE });
     }
-    let mut a = curve.power_coefficients();
-    a.resize(4, Point::origin(2));
+    let a = power_form(curve);
     let inv = [cross(&a[2], &a[3]), cross(&a[1], &a[3]), cross(&a[1], &a[2])];
     let [big_a, big_b, big_c] = inv.clone();
     let collinear = inv.iter().all(Scalar::is_zero);
-    let real_degree = (0..4).rev().find(|&k| a[k].coords.iter().any(|x| !Scalar::is_zero(x))).unwrap_or(0);
+    let real_degree = (0..4).rev().find(|&k| a[k].iter().any(|x| !Scalar::is_zero(x))).unwrap_or(0);
     let mut out = Classification {
         degree: n,
         real_degree,
@@ -455,7 +477,7 @@ fn degenerate_class(n: usize, real: usize, collinear: bool) -> (CurveClass, Stri
     }
 }
 
-fn genuine_cubic<K: Radical>(out: &mut Classification<K>, a: &[Point<K>], big_a: &K, big_b: &K, big_c: &K) {
+fn genuine_cubic<K: Radical>(out: &mut Classification<K>, a: &[Vector<K>; 4], big_a: &K, big_b: &K, big_c: &K) {
     let rat = K::from_i64;
     if Scalar::is_zero(big_a) {
         out.class = CurveClass::Cubic(NodeType::Explicit);
@@ -468,13 +490,9 @@ fn genuine_cubic<K: Radical>(out: &mut Classification<K>, a: &[Point<K>], big_a:
     let te = -big_b.clone() / (rat(2) * big_a);
     let d = (rat(4) * big_a * big_c - rat(3) * big_b * big_b) / (rat(4) * big_a * big_a);
     // D = a0 + a1 t_E + a2 (t_E² + d) + a3 (t_E³ + 3 t_E d), simplified with A a1 − B a2 + C a3 = 0
-    let dp = a[0].add(
-        &a[2]
-            .scale(big_a)
-            .sub(&a[3].scale(big_b))
-            .scale(&((big_a.clone() * big_c - big_b.clone() * big_b) / (big_a.clone() * big_a * big_a))),
-    );
-    out.double_point = Some(dp);
+    let ratio = (big_a.clone() * big_c - big_b.clone() * big_b) / (big_a.clone() * big_a * big_a);
+    let dp = (0..2).map(|i| a[0][i].clone() + &((a[2][i].clone() * big_a - a[3][i].clone() * big_b) * &ratio));
+    out.double_point = Some(Point::new(dp.collect()));
     let node = match d.sign() {
         Ordering::Greater => NodeType::Crunode,
         Ordering::Equal => NodeType::Cusp,
@@ -523,14 +541,14 @@ fn unit_signs<K: Exact>(node: NodeType, a: &K, b: &K, c: &K) -> [i8; 4] {
 }
 
 /// Simple real roots of `p'(t)` for a collinear curve `P(t) = a0 + v·p(t)`: where it turns back.
-fn turning_points<K: Radical>(a: &[Point<K>]) -> Vec<Parameter<K>> {
+fn turning_points<K: Radical>(a: &[Vector<K>; 4]) -> Vec<Parameter<K>> {
     let rat = K::from_i64;
-    let Some(v) = a[1..].iter().find(|p| p.coords.iter().any(|x| !Scalar::is_zero(x))) else {
+    let Some(v) = a[1..].iter().find(|p| p.iter().any(|x| !Scalar::is_zero(x))) else {
         return vec![];
     };
     // α_k with a_k = α_k v (v has a non-zero coordinate c)
-    let c = if Scalar::is_zero(&v.coords[0]) { 1 } else { 0 };
-    let alpha: Vec<K> = a.iter().map(|p| p.coords[c].clone() / &v.coords[c]).collect();
+    let c = if Scalar::is_zero(&v[0]) { 1 } else { 0 };
+    let alpha: Vec<K> = a.iter().map(|p| p[c].clone() / &v[c]).collect();
     // p'(t) = α1 + 2α2 t + 3α3 t²
     // a double root of p' is no turning point: the speed vanishes but the curve goes on
     let (c0, c1, c2) = (alpha[1].clone(), rat(2) * &alpha[2], rat(3) * &alpha[3]);

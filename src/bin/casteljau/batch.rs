@@ -288,8 +288,10 @@ pub fn batch_lines(
     let mut chunk: Vec<Item> = source.by_ref().take(CHUNK_LINES).collect();
     while !chunk.is_empty() {
         let (answers, next, open) = if sequential {
-            let open = pending.take().is_none_or(|(c, a)| write_chunk(&c, a));
+            // answer before freeing the previous chunk's answers: their memory is then reused
+            // for the next chunk instead of going back to the system and faulting in again
             let answers: Vec<Result<Answer>> = chunk.iter().map(answer).collect();
+            let open = pending.take().is_none_or(|(c, a)| write_chunk(&c, a));
             (answers, source.by_ref().take(CHUNK_LINES).collect(), open)
         } else {
             std::thread::scope(|scope| {
