@@ -38,6 +38,7 @@ pub mod catalogue;
 pub mod classify;
 pub mod curve;
 pub mod error;
+pub mod format;
 pub mod num;
 pub mod plot;
 pub mod poly;

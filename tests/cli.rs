@@ -464,3 +464,82 @@ fn hexf(x: f64) -> String {
     assert!(exp != 0, "normal numbers only");
     format!("{sign}0x1.{frac:013x}p{}", exp - 1023)
 }
+
+fn font(name: &str) -> String {
+    format!("{}/tests/data/fonts/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn json_lines(o: &std::process::Output) -> Vec<serde_json::Value> {
+    stdout(o).lines().map(|l| serde_json::from_str(l).unwrap()).collect()
+}
+
+#[test]
+fn cli_scan_font_lists_every_segment_with_provenance_in_order() {
+    let o = run(&["scan", &font("Tuffy.ttf")], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let lines = json_lines(&o);
+    assert!(lines.len() > 40_000);
+    let a: Vec<&serde_json::Value> = lines.iter().filter(|v| v["glyph"] == "a").collect();
+    assert_eq!(a[0]["glyph_id"], 68);
+    assert_eq!(a[0]["contour"], 0);
+    assert_eq!(a[0]["index"], 0);
+    assert_eq!(a[0]["degree"], 2);
+    assert_eq!(a[0]["points"], serde_json::json!([["489", "582"], ["378", "582"], ["308", "1025/2"]]));
+    assert_eq!(a[0]["class"], "quadratic");
+    // glyph ids never go backwards: deterministic file order
+    let ids: Vec<u64> = lines.iter().map(|v| v["glyph_id"].as_u64().unwrap()).collect();
+    assert!(ids.windows(2).all(|w| w[0] <= w[1]));
+    assert!(stderr(&o).contains("segments"), "{}", stderr(&o));
+    // the same answer on one thread
+    let one = run(&["scan", "--threads", "1", "--quiet", &font("Tuffy.ttf")], None);
+    assert_eq!(stdout(&one), stdout(&o));
+    assert!(stderr(&one).is_empty());
+}
+
+#[test]
+fn cli_scan_cff_font_gives_cubics() {
+    let o = run(&["scan", "--quiet", &font("cantarell_vf_trimmed.ttf")], None);
+    assert_eq!(o.status.code(), Some(0));
+    let lines = json_lines(&o);
+    assert!(lines.iter().any(|v| v["degree"] == 3 && v["segment"]["category"] == "arch"));
+    assert!(lines.iter().all(|v| v["glyph"].is_null()));
+}
+
+#[test]
+fn cli_scan_only_filters_and_flags_endpoint_cusps() {
+    let o = run(&["scan", "--only", "endpoint", "--path", "M0 0 C0 0 1 1 2 0 C3 1 4 1 5 0 Z"], None);
+    assert_eq!(o.status.code(), Some(0));
+    let lines = json_lines(&o);
+    assert_eq!(lines.len(), 1);
+    assert_eq!(lines[0]["index"], 0);
+    assert_eq!(lines[0]["flags"], serde_json::json!(["zero_length_handle", "cusp_at_endpoint"]));
+    assert_eq!(lines[0]["cusp_parameters"], serde_json::json!(["0"]));
+    assert_eq!(run(&["scan", "--only", "cusps", "--path", "M0 0 L1 1"], None).status.code(), Some(2));
+}
+
+#[test]
+fn cli_scan_svg_reports_skips_and_element_errors_with_exit_2() {
+    let dir = std::env::temp_dir().join(format!("casteljau-scan-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("icon.svg");
+    std::fs::write(
+        &svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg"><path id="p" d="M0 0 Q1 2 2 0 A1 1 0 0 1 3 3"/>
+<circle r="2"/><path d="M0 0 L1"/></svg>"#,
+    )
+    .unwrap();
+    let o = run(&["scan", svg.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2));
+    let lines = json_lines(&o);
+    assert_eq!(lines[0]["element"], "p");
+    assert_eq!(lines[0]["subpath"], 0);
+    assert_eq!(lines[0]["class"], "quadratic");
+    assert!(lines[1]["skipped"].as_str().unwrap().contains("arc"));
+    assert_eq!(lines[1]["from"], serde_json::json!(["2", "0"]));
+    assert_eq!(lines[2]["element"], 1);
+    assert!(lines[2]["skipped"].as_str().unwrap().contains("circle"));
+    assert!(lines[3]["error"].as_str().unwrap().contains("column"));
+    assert!(stderr(&o).contains("errors 1"), "{}", stderr(&o));
+    assert_eq!(run(&["scan", dir.join("missing.ttf").to_str().unwrap()], None).status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

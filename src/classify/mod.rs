@@ -582,3 +582,44 @@ pub fn loop_blinn(curve: &BezierCurve<BigRational>) -> ([BigRational; 3], Option
     };
     ([d1, d2, d3], node)
 }
+
+/// Facts about one segment that float code most often gets wrong, as stable names (the
+/// `flags` of `casteljau scan`):
+///
+/// * `degenerate`: the real degree is below the written degree (a zero-length line, a
+///   degree-elevated curve, coincident points);
+/// * `zero_length_handle`: a control point at its end point (`P1 = P0` or `P(n−1) = Pn`,
+///   degree ≥ 2);
+/// * `cusp_at_endpoint`, `loop_at_endpoint`, `inflection_at_endpoint`: a cusp parameter, a
+///   self-intersection parameter of a crunode, or an inflection parameter exactly `0` or `1`.
+///
+/// # Example
+/// ```
+/// use casteljau::{BezierCurve, classify::{classify, segment_flags}, num::parse::parse_points};
+/// let c = BezierCurve::new(parse_points("0 0, 0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
+/// let k = classify(&c).unwrap();
+/// assert_eq!(segment_flags(c.points(), &k), ["zero_length_handle", "cusp_at_endpoint"]);
+/// ```
+pub fn segment_flags<K: Radical>(points: &[Point<K>], k: &Classification<K>) -> Vec<&'static str> {
+    let mut flags = vec![];
+    let n = points.len().saturating_sub(1);
+    if k.real_degree < k.degree {
+        flags.push("degenerate");
+    }
+    if n >= 2 && (points[0] == points[1] || points[n - 1] == points[n]) {
+        flags.push("zero_length_handle");
+    }
+    let at_end = |ps: &[Parameter<K>]| {
+        ps.iter().any(|t| t.radicand().is_zero() && (t.rational_part().is_zero() || *t.rational_part() == K::one()))
+    };
+    if at_end(&k.cusp_parameters) {
+        flags.push("cusp_at_endpoint");
+    }
+    if k.node_type == Some(NodeType::Crunode) && at_end(&k.double_point_parameters) {
+        flags.push("loop_at_endpoint");
+    }
+    if at_end(&k.inflection_parameters) {
+        flags.push("inflection_at_endpoint");
+    }
+    flags
+}

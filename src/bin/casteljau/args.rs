@@ -102,6 +102,10 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// Every segment of fonts (.ttf .otf .ttc .otc), SVG files (.svg), SVG path data (--path)
+    /// or text batches (other files), exactly: one JSON line per segment with its provenance,
+    /// control points, classification and flags; a summary per file on stderr.
+    Scan(ScanArgs),
     /// Classify planar curves of degree ≤ 3 exactly: node type, double point, parameters,
     /// segment features on [0,1].
     Classify {
@@ -524,4 +528,29 @@ impl From<Numbers> for casteljau::num::parse::NumberMode {
             Numbers::Binary64 => casteljau::num::parse::NumberMode::Binary64,
         }
     }
+}
+
+/// `casteljau scan`.
+#[derive(Args, Debug)]
+pub struct ScanArgs {
+    /// Font files (.ttf, .otf, .ttc, .otc), SVG files (.svg) or text batches (one curve per line).
+    pub files: Vec<String>,
+    /// SVG path data to scan, e.g. "M0 0 C1 2 3 2 4 0 Z" (reported as file "<path>").
+    #[arg(long, allow_hyphen_values = true)]
+    pub path: Option<String>,
+    /// Only segments of these kinds (comma-separated): cusp, loop, inflection (on [0,1]),
+    /// degenerate, zero_length_handle, endpoint (a cusp, loop or inflection exactly at t = 0 or 1),
+    /// skipped, error.
+    #[arg(long)]
+    pub only: Option<String>,
+    /// How SVG and text numbers are read: `exact` (0.1 is 1/10) or `binary64` (the f64 nearest
+    /// to it, exactly). Font coordinates are always the font's exact values.
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
+    /// Threads (0: all cores). Output stays in file order.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No summary and no progress on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
 }

@@ -5,12 +5,14 @@
 //! * [`batch`]: reading curves (argument, file, stdin), limits, writing one answer per curve.
 //! * [`answers`]: each command's exact answer for one curve, as text and typed JSON.
 //! * [`commands`]: the commands with their own input and output (`prove`, `plot`, `surface`,
-//!   `gallery`); [`splines`]: the `spline` command (knot vectors, JSON Lines splines).
+//!   `gallery`); [`splines`]: the `spline` command (knot vectors, JSON Lines splines); [`scan`]:
+//!   fonts, SVG and batches, segment by segment.
 
 mod answers;
 mod args;
 mod batch;
 mod commands;
+mod scan;
 mod splines;
 
 use args::{Cli, Command};
@@ -105,6 +107,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Gallery { dir } => commands::gallery(&dir, out),
         Command::Plot(args) => commands::plot(args, out),
         Command::Spline { op } => splines::run(op, out),
+        Command::Scan(args) => scan::run(&args, out),
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
         }

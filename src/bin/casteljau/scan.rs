@@ -1,0 +1,465 @@
+//! `casteljau scan FILE...`: every segment of every outline in fonts (`.ttf`, `.otf`, `.ttc`,
+//! `.otc`), SVG files (`.svg`), bare SVG path data (`--path`) and text batches (any other file:
+//! one curve per line), one JSON line per segment with its provenance, exact control points,
+//! classification and flags, in file order; a summary per file on stderr.
+//!
+//! JSON fields (stable; more may be added): `file`; fonts: `face` (collections only), `glyph`
+//! (the glyph's name or `null`), `glyph_id`, `contour`; SVG: `element` (the id, or the 0-based
+//! index among shape elements), `tag`, `subpath`; text batches: `line`; then `index` (the
+//! segment's place in its contour/subpath/line), the fields of `classify --json` (`degree`,
+//! `class`, `segment`, exact parameters, …), `points` (exact strings) and `flags` (see
+//! `casteljau::classify::segment_flags`). A piece that is no polynomial Bézier curve (an SVG
+//! arc) has `skipped` (the reason), `from` and `to` instead; an element or glyph that cannot be
+//! read has `error`.
+
+use crate::args::ScanArgs;
+use casteljau::classify::{Classification, classify, segment_flags};
+use casteljau::curve::bezier::BezierCurve;
+use casteljau::format::{Contour, Segment, font, svg, svg_path};
+use casteljau::num::parse::{NumberMode, parse_points_in};
+use casteljau::num::point::Point;
+use num_rational::BigRational;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::io::{IsTerminal, Write};
+
+/// Where a segment comes from.
+#[derive(Serialize, Default, Clone)]
+struct Provenance<'a> {
+    file: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    face: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    glyph: Option<Option<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    glyph_id: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    contour: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    element: Option<serde_json::Value>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tag: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    subpath: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    line: Option<usize>,
+}
+
+/// One JSON line of `scan`.
+#[derive(Serialize)]
+struct Record<'a> {
+    #[serde(flatten)]
+    at: &'a Provenance<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    index: Option<usize>,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    classification: Option<&'a Classification>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    points: Option<&'a [Point<BigRational>]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    flags: Option<Vec<&'static str>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    skipped: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    from: Option<&'a Point<BigRational>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    to: Option<&'a Point<BigRational>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<String>,
+}
+
+/// Counts for the summary.
+#[derive(Default)]
+struct Tally {
+    segments: usize,
+    by_category: BTreeMap<&'static str, usize>,
+    by_flag: BTreeMap<&'static str, usize>,
+    skipped: usize,
+    errors: usize,
+    units_with_loop_or_cusp: usize,
+}
+
+impl Tally {
+    fn add(&mut self, o: Tally) {
+        self.segments += o.segments;
+        for (k, v) in o.by_category {
+            *self.by_category.entry(k).or_default() += v;
+        }
+        for (k, v) in o.by_flag {
+            *self.by_flag.entry(k).or_default() += v;
+        }
+        self.skipped += o.skipped;
+        self.errors += o.errors;
+        self.units_with_loop_or_cusp += o.units_with_loop_or_cusp;
+    }
+}
+
+/// The `--only` kinds.
+const ONLY_KINDS: [&str; 8] =
+    ["cusp", "loop", "inflection", "degenerate", "zero_length_handle", "endpoint", "skipped", "error"];
+
+/// The rendered lines of one unit (glyph, element, batch line) and its tally.
+struct Rendered {
+    lines: Vec<u8>,
+    tally: Tally,
+}
+
+/// What a rendered unit is: its contours are a glyph's `contour`s, an SVG element's
+/// `subpath`s, or one batch line's curve.
+#[derive(Clone, Copy)]
+enum Unit {
+    Glyph,
+    Element,
+    Line,
+}
+
+struct Scanner {
+    only: Option<Vec<String>>,
+    mode: NumberMode,
+}
+
+impl Scanner {
+    fn keep(&self, k: Option<&Classification>, flags: &[&str], skipped: bool, error: bool) -> bool {
+        let Some(only) = &self.only else { return true };
+        only.iter().any(|o| match o.as_str() {
+            "cusp" => k.is_some_and(|k| k.segment.has_cusp),
+            "loop" => k.is_some_and(|k| k.segment.has_loop),
+            "inflection" => k.is_some_and(|k| k.segment.inflections > 0),
+            "degenerate" => flags.contains(&"degenerate"),
+            "zero_length_handle" => flags.contains(&"zero_length_handle"),
+            "endpoint" => flags.iter().any(|f| f.ends_with("_at_endpoint")),
+            "skipped" => skipped,
+            "error" => error,
+            _ => false,
+        })
+    }
+
+    /// The JSON lines of one unit's contours.
+    fn render(&self, at: &Provenance<'_>, contours: &[Contour], unit: Unit) -> Rendered {
+        let mut out = Rendered { lines: vec![], tally: Tally::default() };
+        let mut loop_or_cusp = false;
+        for (ci, c) in contours.iter().enumerate() {
+            let mut at = at.clone();
+            match unit {
+                Unit::Glyph => at.contour = Some(ci),
+                Unit::Element => at.subpath = Some(ci),
+                Unit::Line => {}
+            }
+            for (index, s) in c.segments.iter().enumerate() {
+                out.tally.segments += 1;
+                match s {
+                    Segment::Bezier(ps) => {
+                        let k = BezierCurve::new(ps.clone()).and_then(|c| classify(&c));
+                        let k = match k {
+                            Ok(k) => k,
+                            Err(e) => {
+                                self.error_line(&mut out, &at, Some(index), e.to_string());
+                                continue;
+                            }
+                        };
+                        let flags = segment_flags(ps, &k);
+                        *out.tally.by_category.entry(k.segment.category.as_str()).or_default() += 1;
+                        for f in &flags {
+                            *out.tally.by_flag.entry(f).or_default() += 1;
+                        }
+                        loop_or_cusp |= k.segment.has_loop || k.segment.has_cusp;
+                        if !self.keep(Some(&k), &flags, false, false) {
+                            continue;
+                        }
+                        let r = Record {
+                            at: &at,
+                            index: Some(index),
+                            classification: Some(&k),
+                            points: Some(ps),
+                            flags: Some(flags),
+                            skipped: None,
+                            from: None,
+                            to: None,
+                            error: None,
+                        };
+                        write_record(&mut out.lines, &r);
+                    }
+                    Segment::Skipped { from, to, reason } => {
+                        out.tally.skipped += 1;
+                        if !self.keep(None, &[], true, false) {
+                            continue;
+                        }
+                        let r = Record {
+                            at: &at,
+                            index: Some(index),
+                            classification: None,
+                            points: None,
+                            flags: None,
+                            skipped: Some(reason),
+                            from: Some(from),
+                            to: Some(to),
+                            error: None,
+                        };
+                        write_record(&mut out.lines, &r);
+                    }
+                }
+            }
+        }
+        out.tally.units_with_loop_or_cusp = usize::from(loop_or_cusp);
+        out
+    }
+
+    fn error_line(&self, out: &mut Rendered, at: &Provenance<'_>, index: Option<usize>, error: String) {
+        out.tally.errors += 1;
+        if self.keep(None, &[], false, true) {
+            let r = Record {
+                at,
+                index,
+                classification: None,
+                points: None,
+                flags: None,
+                skipped: None,
+                from: None,
+                to: None,
+                error: Some(error),
+            };
+            write_record(&mut out.lines, &r);
+        }
+    }
+
+    fn rendered_error(&self, at: &Provenance<'_>, error: String) -> Rendered {
+        let mut out = Rendered { lines: vec![], tally: Tally::default() };
+        self.error_line(&mut out, at, None, error);
+        out
+    }
+}
+
+fn write_record(buf: &mut Vec<u8>, r: &Record<'_>) {
+    serde_json::to_writer(&mut *buf, r).expect("exact strings serialize");
+    buf.push(b'\n');
+}
+
+/// Glyphs (or elements, or lines) answered per parallel chunk.
+const UNITS_PER_CHUNK: usize = 256;
+
+/// Runs `scan`; returns the exit code (2 when any file, glyph, element or line could not be
+/// read; 0 otherwise).
+pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
+    let only = match &args.only {
+        None => None,
+        Some(s) => {
+            let kinds: Vec<String> = s.split(',').map(|k| k.trim().to_string()).filter(|k| !k.is_empty()).collect();
+            if let Some(bad) = kinds.iter().find(|k| !ONLY_KINDS.contains(&k.as_str())) {
+                eprintln!("casteljau: --only: unknown kind {bad:?} (kinds: {})", ONLY_KINDS.join(", "));
+                return 2;
+            }
+            Some(kinds)
+        }
+    };
+    if args.files.is_empty() && args.path.is_none() {
+        eprintln!("casteljau: scan needs FILE arguments or --path");
+        return 2;
+    }
+    let pool = match rayon::ThreadPoolBuilder::new().num_threads(args.threads).build() {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("casteljau: cannot start {} threads: {e}", args.threads);
+            return 2;
+        }
+    };
+    let sc = Scanner { only, mode: args.numbers.into() };
+    let progress = !args.quiet && std::io::stderr().is_terminal();
+    let mut code = 0;
+    let mut write = |r: &Rendered| -> bool { out.write_all(&r.lines).is_ok() };
+    if let Some(d) = &args.path {
+        let at = Provenance { file: "<path>", element: Some(0.into()), ..Default::default() };
+        let r = match svg_path::parse_path(d, sc.mode) {
+            Ok(contours) => sc.render(&at, &contours, Unit::Element),
+            Err(e) => sc.rendered_error(&at, e.to_string()),
+        };
+        if r.tally.errors > 0 {
+            code = 2;
+        }
+        if !write(&r) {
+            return 2;
+        }
+        summary(args, "<path>", &r.tally);
+    }
+    for file in &args.files {
+        let lower = file.to_ascii_lowercase();
+        let mut tally = Tally::default();
+        let mut units = 0usize;
+        let mut each = |chunk: Vec<Rendered>, total: Option<usize>| -> bool {
+            for r in chunk {
+                units += 1;
+                if !write(&r) {
+                    return false;
+                }
+                tally.add(r.tally);
+            }
+            if progress {
+                match total {
+                    Some(t) => eprint!("\r\x1b[K{file}: {units}/{t}"),
+                    None => eprint!("\r\x1b[K{file}: {units}"),
+                }
+            }
+            true
+        };
+        let ok = if [".ttf", ".otf", ".ttc", ".otc"].iter().any(|e| lower.ends_with(e)) {
+            scan_font(&sc, &pool, file, &mut each)
+        } else if lower.ends_with(".svg") {
+            scan_svg(&sc, &pool, file, &mut each)
+        } else {
+            scan_text(&sc, &pool, file, &mut each)
+        };
+        if progress {
+            eprint!("\r\x1b[K");
+        }
+        match ok {
+            Ok(true) => {}
+            Ok(false) => return code.max(2), // stdout closed
+            Err(e) => {
+                eprintln!("casteljau: {file}: {e}");
+                code = 2;
+                continue;
+            }
+        }
+        if tally.errors > 0 {
+            code = 2;
+        }
+        summary(args, file, &tally);
+    }
+    code
+}
+
+type Each<'e> = dyn FnMut(Vec<Rendered>, Option<usize>) -> bool + 'e;
+
+fn scan_font(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
+    let data = std::fs::read(file).map_err(|e| format!("cannot read: {e}"))?;
+    let faces = font::font_count(&data).map_err(|e| e.to_string())?;
+    for face in 0..faces {
+        let f = font::Font::open(&data, face).map_err(|e| e.to_string())?;
+        let n = f.num_glyphs() as usize;
+        let gids: Vec<u32> = (0..f.num_glyphs()).collect();
+        for chunk in gids.chunks(UNITS_PER_CHUNK) {
+            let rendered: Vec<Rendered> = pool.install(|| {
+                chunk
+                    .par_iter()
+                    .map(|&gid| {
+                        let at = Provenance {
+                            file,
+                            face: (faces > 1).then_some(face),
+                            glyph: Some(f.glyph_name(gid)),
+                            glyph_id: Some(gid),
+                            ..Default::default()
+                        };
+                        match f.outline(gid) {
+                            Ok(contours) => sc.render(&at, &contours, Unit::Glyph),
+                            Err(e) => sc.rendered_error(&at, e.to_string()),
+                        }
+                    })
+                    .collect()
+            });
+            if !each(rendered, Some(n)) {
+                return Ok(false);
+            }
+        }
+    }
+    Ok(true)
+}
+
+fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
+    let text = std::fs::read_to_string(file).map_err(|e| format!("cannot read: {e}"))?;
+    let shapes = svg::read_svg(&text, sc.mode).map_err(|e| e.to_string())?;
+    let n = shapes.len();
+    for chunk in shapes.chunks(UNITS_PER_CHUNK) {
+        let rendered: Vec<Rendered> = pool.install(|| {
+            chunk
+                .par_iter()
+                .map(|s| {
+                    let element = match &s.id {
+                        Some(id) => serde_json::Value::String(id.clone()),
+                        None => s.index.into(),
+                    };
+                    let at =
+                        Provenance { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
+                    match &s.contours {
+                        Ok(contours) => sc.render(&at, contours, Unit::Element),
+                        Err(e) if e.contains("not a polynomial Bézier curve") || e.contains("irrational") => {
+                            // not an error of the file: listed as skipped
+                            let mut r = Rendered { lines: vec![], tally: Tally::default() };
+                            r.tally.skipped += 1;
+                            if sc.keep(None, &[], true, false) {
+                                let rec = Record {
+                                    at: &at,
+                                    index: None,
+                                    classification: None,
+                                    points: None,
+                                    flags: None,
+                                    skipped: Some(e),
+                                    from: None,
+                                    to: None,
+                                    error: None,
+                                };
+                                write_record(&mut r.lines, &rec);
+                            }
+                            r
+                        }
+                        Err(e) => sc.rendered_error(&at, format!("line {}: {e}", s.line)),
+                    }
+                })
+                .collect()
+        });
+        if !each(rendered, Some(n)) {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+fn scan_text(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
+    let text = std::fs::File::open(file).map_err(|e| format!("cannot read: {e}"))?;
+    let reader = std::io::BufReader::new(text);
+    let mut lines = std::io::BufRead::lines(reader).enumerate().peekable();
+    while lines.peek().is_some() {
+        let chunk: Vec<(usize, std::io::Result<String>)> = lines.by_ref().take(UNITS_PER_CHUNK * 16).collect();
+        let rendered: Vec<Rendered> = pool.install(|| {
+            chunk
+                .par_iter()
+                .filter(|(_, l)| l.as_ref().map_or(true, |l| !l.trim().is_empty() && !l.trim_start().starts_with('#')))
+                .map(|(i, l)| {
+                    let at = Provenance { file, line: Some(i + 1), ..Default::default() };
+                    let l = match l {
+                        Ok(l) => l,
+                        Err(e) => return sc.rendered_error(&at, e.to_string()),
+                    };
+                    match parse_points_in(l, 2, Some(i + 1), sc.mode) {
+                        Ok(ps) => sc.render(
+                            &at,
+                            &[Contour { segments: vec![Segment::Bezier(ps)], closed: false }],
+                            Unit::Line,
+                        ),
+                        Err(e) => sc.rendered_error(&at, e.to_string()),
+                    }
+                })
+                .collect()
+        });
+        if !each(rendered, None) {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+/// The per-file summary on stderr (none with `--quiet`).
+fn summary(args: &ScanArgs, file: &str, t: &Tally) {
+    if args.quiet {
+        return;
+    }
+    let list = |m: &BTreeMap<&str, usize>| m.iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", ");
+    eprintln!(
+        "{file}: {} segments; categories: {}; flags: {}; units with a loop or cusp: {}; skipped {}, errors {}",
+        t.segments,
+        if t.by_category.is_empty() { "none".into() } else { list(&t.by_category) },
+        if t.by_flag.is_empty() { "none".into() } else { list(&t.by_flag) },
+        t.units_with_loop_or_cusp,
+        t.skipped,
+        t.errors
+    );
+}

@@ -1,0 +1,384 @@
+//! Glyph outlines of TrueType (`glyf`) and CFF/CFF2 fonts (`.ttf`, `.otf`, `.ttc`, `.otc`),
+//! read from the font's raw tables with `read-fonts`, with the font's exact values:
+//!
+//! * `glyf`: the `i16` point coordinates; an implied on-curve point between two off-curve
+//!   points is their exact midpoint; composite glyphs apply their component transforms exactly
+//!   (`F2Dot14` entries are `k/16384`), with point-matching anchors and the scaled/unscaled
+//!   offset flags of the OpenType specification. Quadratic segments and lines. Where a
+//!   component is scaled by a 2×2 matrix the exact products are usually not integers:
+//!   FreeType and `skrifa` round each transformed point to an integer font unit, `ttf-parser`
+//!   keeps an `f32`; casteljau keeps the exact rational (the tests compare with `skrifa`:
+//!   equal on every other glyph of the test font, within one unit on the scaled ones).
+//! * CFF and CFF2: the Type 2 charstring is evaluated by `read-fonts` in the format's own
+//!   16.16 fixed-point arithmetic, and each coordinate it emits is taken as the exact rational
+//!   `bits/65536`. Cubic segments and lines.
+//!
+//! Only the default instance of a variable font is read: applying `gvar`/CFF2 blend deltas means
+//! rounding the interpolation scalars (the font crates do it in `f32`/16.16), so instances are
+//! not offered. Font pens that hand out `f32` are not used at all.
+//!
+//! Every contour is closed: its closing line is listed when it has non-zero length.
+//!
+//! # Example
+//! ```no_run
+//! use casteljau::format::font::Font;
+//! let data = std::fs::read("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf").unwrap();
+//! let font = Font::open(&data, 0).unwrap();
+//! let gid = (0..font.num_glyphs()).find(|&g| font.glyph_name(g).as_deref() == Some("a")).unwrap();
+//! let contours = font.outline(gid).unwrap();
+//! assert_eq!(contours.len(), 2);
+//! ```
+
+use crate::error::{Error, Result};
+use crate::format::{Affine, Contour, Segment};
+use crate::num::point::Point;
+use crate::num::scalar::rat;
+use num_rational::BigRational;
+use read_fonts::tables::glyf::{Anchor, CompositeGlyphFlags, Glyf, Glyph};
+use read_fonts::tables::loca::Loca;
+use read_fonts::tables::post::Post;
+use read_fonts::types::{GlyphId, GlyphId16, Tag};
+use read_fonts::{FileRef, FontRef, TableProvider};
+
+/// Deepest nesting of composite glyphs followed (the OpenType `maxp.maxComponentDepth` is
+/// usually ≤ 3).
+pub const MAX_COMPONENT_DEPTH: usize = 16;
+
+/// Most points of one glyph after composition.
+pub const MAX_GLYPH_POINTS: usize = 1 << 20;
+
+type P = Point<BigRational>;
+
+fn fail(message: String) -> Error {
+    Error::InvalidArgument { message }
+}
+
+/// The number of fonts in a font file (1 for `.ttf`/`.otf`, the count of a collection).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] when the data is not an OpenType font or collection.
+pub fn font_count(data: &[u8]) -> Result<u32> {
+    match FileRef::new(data).map_err(|e| fail(format!("not a font file: {e}")))? {
+        FileRef::Font(_) => Ok(1),
+        FileRef::Collection(c) => Ok(c.len()),
+    }
+}
+
+enum Outlines<'a> {
+    Glyf { glyf: Glyf<'a>, loca: Loca<'a> },
+    Cff(read_fonts::ps::cff::CffFontRef<'a>),
+}
+
+/// One font of a font file, ready to give exact glyph outlines.
+pub struct Font<'a> {
+    font: FontRef<'a>,
+    outlines: Outlines<'a>,
+    num_glyphs: u32,
+    post: Option<Post<'a>>,
+}
+
+impl<'a> Font<'a> {
+    /// The font at `index` of a font file (0 for a single font).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] when the data is not a font, the index is out of range, or the
+    /// font has neither `glyf` nor `CFF `/`CFF2` outlines.
+    pub fn open(data: &'a [u8], index: u32) -> Result<Self> {
+        let font = FontRef::from_index(data, index).map_err(|e| fail(format!("font {index}: {e}")))?;
+        let num_glyphs = font.maxp().map_err(|e| fail(format!("font {index}: maxp: {e}")))?.num_glyphs() as u32;
+        let upem = font.head().ok().map(|h| h.units_per_em() as i32);
+        let outlines = if let (Ok(glyf), Ok(loca)) = (font.glyf(), font.loca(None)) {
+            Outlines::Glyf { glyf, loca }
+        } else {
+            let table = font
+                .table_data(Tag::new(b"CFF "))
+                .or_else(|| font.table_data(Tag::new(b"CFF2")))
+                .ok_or_else(|| fail(format!("font {index}: no glyf or CFF outlines")))?;
+            let cff = read_fonts::ps::cff::CffFontRef::new(table.as_bytes(), 0, upem)
+                .map_err(|e| fail(format!("font {index}: CFF: {e}")))?;
+            Outlines::Cff(cff)
+        };
+        let post = font.post().ok();
+        Ok(Font { font, outlines, num_glyphs, post })
+    }
+
+    /// The number of glyphs (`maxp`).
+    pub fn num_glyphs(&self) -> u32 {
+        self.num_glyphs
+    }
+
+    /// `true` for CFF/CFF2 outlines (cubics), `false` for `glyf` (quadratics).
+    pub fn is_cff(&self) -> bool {
+        matches!(self.outlines, Outlines::Cff(_))
+    }
+
+    /// The glyph's PostScript name (`post` table, or the CFF charset), when the font has one.
+    pub fn glyph_name(&self, gid: u32) -> Option<String> {
+        if let Some(name) = u16::try_from(gid).ok().and_then(|g| self.post.as_ref()?.glyph_name(GlyphId16::new(g))) {
+            return Some(name.to_string());
+        }
+        if let Outlines::Cff(cff) = &self.outlines
+            && !cff.is_cid()
+        {
+            let sid = cff.charset()?.string_id(GlyphId::new(gid)).ok()?;
+            return cff.string(sid).map(|s| String::from_utf8_lossy(s).into_owned());
+        }
+        None
+    }
+
+    /// The glyph's contours in font units, exactly (see the module documentation).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming the glyph for malformed glyph data, a composite nested
+    /// deeper than [`MAX_COMPONENT_DEPTH`] (or cyclic), or more than [`MAX_GLYPH_POINTS`] points.
+    pub fn outline(&self, gid: u32) -> Result<Vec<Contour>> {
+        if gid >= self.num_glyphs {
+            return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
+        }
+        match &self.outlines {
+            Outlines::Glyf { glyf, loca } => {
+                let mut contours = vec![];
+                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut contours)?;
+                Ok(contours.iter().map(quadratic_contour).collect())
+            }
+            Outlines::Cff(cff) => {
+                let fd = cff.subfont_index(GlyphId::new(gid)).unwrap_or(0);
+                let sub = cff.subfont(fd, &[]).map_err(|e| fail(format!("glyph {gid}: CFF: {e}")))?;
+                let mut sink = CffSink::default();
+                cff.evaluate_charstring(&sub, GlyphId::new(gid), &[], &mut sink)
+                    .map_err(|e| fail(format!("glyph {gid}: charstring: {e}")))?;
+                sink.finish_contour();
+                Ok(sink.contours)
+            }
+        }
+    }
+
+    /// The underlying `read-fonts` font.
+    pub fn font_ref(&self) -> &FontRef<'a> {
+        &self.font
+    }
+}
+
+/// A TrueType contour: points with their on-curve flags.
+type RawContour = Vec<(P, bool)>;
+
+fn f2dot14(v: read_fonts::types::F2Dot14) -> BigRational {
+    BigRational::new(v.to_bits().into(), 16384.into())
+}
+
+fn int(v: i16) -> BigRational {
+    rat(v as i64)
+}
+
+/// Appends the glyph's contours, mapped by `m`, to `out`.
+fn glyf_points(
+    glyf: &Glyf<'_>,
+    loca: &Loca<'_>,
+    gid: u32,
+    m: &Affine,
+    depth: usize,
+    out: &mut Vec<RawContour>,
+) -> Result<()> {
+    if depth > MAX_COMPONENT_DEPTH {
+        return Err(fail(format!("glyph {gid}: composite nesting deeper than {MAX_COMPONENT_DEPTH} (or cyclic)")));
+    }
+    let glyph = loca.get_glyf(GlyphId::new(gid), glyf).map_err(|e| fail(format!("glyph {gid}: {e}")))?;
+    match glyph {
+        None => Ok(()),
+        Some(Glyph::Simple(g)) => {
+            let mut points = g.points();
+            let mut start = 0usize;
+            for end in g.end_pts_of_contours() {
+                let end = end.get() as usize;
+                if end < start || end >= g.num_points() {
+                    return Err(fail(format!("glyph {gid}: contour end {end} out of order")));
+                }
+                let mut c = Vec::with_capacity(end + 1 - start);
+                for _ in start..=end {
+                    let p = points.next().ok_or_else(|| fail(format!("glyph {gid}: too few points")))?;
+                    c.push((m.apply(&Point::new(vec![int(p.x), int(p.y)])), p.on_curve));
+                }
+                out.push(c);
+                start = end + 1;
+            }
+            let total: usize = out.iter().map(Vec::len).sum();
+            if total > MAX_GLYPH_POINTS {
+                return Err(Error::TooLarge { what: "points in one glyph", value: total, limit: MAX_GLYPH_POINTS });
+            }
+            Ok(())
+        }
+        Some(Glyph::Composite(g)) => {
+            for comp in g.components() {
+                let t = &comp.transform;
+                let linear = Affine([f2dot14(t.xx), f2dot14(t.yx), f2dot14(t.xy), f2dot14(t.yy), rat(0), rat(0)]);
+                let before = out.len();
+                // the component in its own units, mapped by the 2×2 part only; placed below
+                let mut own = vec![];
+                glyf_points(glyf, loca, comp.glyph.to_u32(), &linear, depth + 1, &mut own)?;
+                let offset = match comp.anchor {
+                    Anchor::Offset { x, y } => {
+                        let o = Point::new(vec![int(x), int(y)]);
+                        if comp.flags.contains(CompositeGlyphFlags::SCALED_COMPONENT_OFFSET)
+                            && !comp.flags.contains(CompositeGlyphFlags::UNSCALED_COMPONENT_OFFSET)
+                        {
+                            linear.apply(&o)
+                        } else {
+                            o
+                        }
+                    }
+                    Anchor::Point { base, component } => {
+                        // point matching: the component's point lands on the base's point
+                        // (both in the composite's units, before the outer map)
+                        let inv = m_inverse_points(out, before, m)?;
+                        let b = inv.get(base as usize).ok_or_else(|| {
+                            fail(format!("glyph {gid}: anchor point {base} beyond the composed points"))
+                        })?;
+                        let own_points: Vec<&P> = own.iter().flatten().map(|(p, _)| p).collect();
+                        let c = own_points.get(component as usize).ok_or_else(|| {
+                            fail(format!("glyph {gid}: component point {component} beyond its points"))
+                        })?;
+                        b.sub(c)
+                    }
+                };
+                let place = m.compose(&Affine([
+                    rat(1),
+                    rat(0),
+                    rat(0),
+                    rat(1),
+                    offset.coords[0].clone(),
+                    offset.coords[1].clone(),
+                ]));
+                out.extend(own.into_iter().map(|c| c.into_iter().map(|(p, on)| (place.apply(&p), on)).collect()));
+            }
+            Ok(())
+        }
+    }
+}
+
+/// The points composed so far in the composite's own units: the outer map `m` of a composite
+/// is only a translation-free product of 2×2 parts and offsets; point matching needs the
+/// untransformed points, so they are recomputed by inverting `m` exactly.
+fn m_inverse_points(out: &[RawContour], upto: usize, m: &Affine) -> Result<Vec<P>> {
+    let [a, b, c, d, e, f] = &m.0;
+    let det = a * d - b * c;
+    if det == rat(0) {
+        return Err(fail("point-matched component under a singular transform".into()));
+    }
+    let inv = Affine([d / &det, -b / &det, -c / &det, a / &det, rat(0), rat(0)]);
+    Ok(out[..upto]
+        .iter()
+        .flatten()
+        .map(|(p, _)| inv.apply(&Point::new(vec![&p.coords[0] - e, &p.coords[1] - f])))
+        .collect())
+}
+
+fn midpoint(a: &P, b: &P) -> P {
+    a.add(b).scale(&BigRational::new(1.into(), 2.into()))
+}
+
+/// The segments of a closed TrueType contour: lines between on-curve points, quadratics through
+/// off-curve points, and the implied on-curve midpoint between two off-curve points.
+fn quadratic_contour(points: &RawContour) -> Contour {
+    let mut segments = vec![];
+    let n = points.len();
+    if n == 0 {
+        return Contour { segments, closed: true };
+    }
+    let first_on = points.iter().position(|(_, on)| *on);
+    let (start, order): (P, Vec<&(P, bool)>) = match first_on {
+        Some(f) => (points[f].0.clone(), points[f + 1..].iter().chain(&points[..f]).collect()),
+        None => (midpoint(&points[n - 1].0, &points[0].0), points.iter().collect()),
+    };
+    let mut cur = start.clone();
+    let mut pending: Option<P> = None;
+    for (q, on) in order {
+        match (pending.take(), on) {
+            (None, true) => {
+                segments.push(Segment::Bezier(vec![cur.clone(), q.clone()]));
+                cur = q.clone();
+            }
+            (None, false) => pending = Some(q.clone()),
+            (Some(c), true) => {
+                segments.push(Segment::Bezier(vec![cur.clone(), c, q.clone()]));
+                cur = q.clone();
+            }
+            (Some(c), false) => {
+                let m = midpoint(&c, q);
+                segments.push(Segment::Bezier(vec![cur.clone(), c, m.clone()]));
+                cur = m;
+                pending = Some(q.clone());
+            }
+        }
+    }
+    match pending {
+        Some(c) => segments.push(Segment::Bezier(vec![cur, c, start])),
+        None if cur != start => segments.push(Segment::Bezier(vec![cur, start])),
+        None => {}
+    }
+    Contour { segments, closed: true }
+}
+
+/// Collects the charstring's path commands as exact segments.
+#[derive(Default)]
+struct CffSink {
+    contours: Vec<Contour>,
+    current: Option<(P, P, Vec<Segment>)>, // (start, current point, segments)
+}
+
+fn fixed(v: read_fonts::types::Fixed) -> BigRational {
+    BigRational::new(v.to_bits().into(), 65536.into())
+}
+
+impl CffSink {
+    fn finish_contour(&mut self) {
+        if let Some((start, cur, mut segs)) = self.current.take() {
+            if cur != start {
+                segs.push(Segment::Bezier(vec![cur, start]));
+            }
+            self.contours.push(Contour { segments: segs, closed: true });
+        }
+    }
+
+    fn point(x: read_fonts::types::Fixed, y: read_fonts::types::Fixed) -> P {
+        Point::new(vec![fixed(x), fixed(y)])
+    }
+
+    fn push(&mut self, to: P, segment: impl FnOnce(P) -> Segment) {
+        let (_, cur, segs) = self.current.get_or_insert_with(|| {
+            let o = Point::new(vec![rat(0), rat(0)]);
+            (o.clone(), o, vec![])
+        });
+        let s = segment(std::mem::replace(cur, to));
+        segs.push(s);
+    }
+}
+
+impl read_fonts::ps::cs::CommandSink for CffSink {
+    fn move_to(&mut self, x: read_fonts::types::Fixed, y: read_fonts::types::Fixed) {
+        self.finish_contour();
+        let p = Self::point(x, y);
+        self.current = Some((p.clone(), p, vec![]));
+    }
+
+    fn line_to(&mut self, x: read_fonts::types::Fixed, y: read_fonts::types::Fixed) {
+        let p = Self::point(x, y);
+        self.push(p.clone(), |from| Segment::Bezier(vec![from, p]));
+    }
+
+    fn curve_to(
+        &mut self,
+        cx0: read_fonts::types::Fixed,
+        cy0: read_fonts::types::Fixed,
+        cx1: read_fonts::types::Fixed,
+        cy1: read_fonts::types::Fixed,
+        x: read_fonts::types::Fixed,
+        y: read_fonts::types::Fixed,
+    ) {
+        let (c0, c1, p) = (Self::point(cx0, cy0), Self::point(cx1, cy1), Self::point(x, y));
+        self.push(p.clone(), |from| Segment::Bezier(vec![from, c0, c1, p]));
+    }
+
+    fn close(&mut self) {
+        self.finish_contour();
+    }
+}

@@ -1,0 +1,90 @@
+//! Users' files read into exact Bézier segments: SVG path data ([`svg_path`]) and SVG documents
+//! ([`svg`]), TrueType and CFF fonts ([`font`]). The edge layer: it depends on the numbers and
+//! curves below it and nothing depends on it; readers never round — a number that cannot be
+//! taken exactly is an error or a skipped piece with its reason, never an approximation.
+//!
+//! Every reader produces [`Contour`]s of [`Segment`]s: polynomial Bézier pieces of degree 1–3 with
+//! exact control points, or pieces that are not polynomial Bézier curves (elliptical arcs) kept
+//! in place as [`Segment::Skipped`] with their endpoints and the reason, so that every piece of
+//! every outline is listed.
+
+pub mod font;
+pub mod svg;
+pub mod svg_path;
+
+use crate::num::point::Point;
+use num_rational::BigRational;
+
+/// One piece of an outline.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Segment {
+    /// A polynomial Bézier segment: 2, 3 or 4 exact control points (a line, a quadratic or a
+    /// cubic).
+    Bezier(Vec<Point<BigRational>>),
+    /// A piece that is not a polynomial Bézier curve and is not approximated: its exact ends and
+    /// why it was skipped.
+    Skipped {
+        /// Where the piece starts.
+        from: Point<BigRational>,
+        /// Where it ends.
+        to: Point<BigRational>,
+        /// What it is and why it is not converted (e.g. an elliptical arc).
+        reason: String,
+    },
+}
+
+/// A contour (font) or subpath (SVG): its pieces in drawing order, including the closing line
+/// when the outline is closed and the closing line has non-zero length.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Contour {
+    /// The pieces, in order.
+    pub segments: Vec<Segment>,
+    /// Closed (`Z`, or every font contour).
+    pub closed: bool,
+}
+
+/// An exact planar affine map `(x, y) ↦ (a x + c y + e, b x + d y + f)`, the SVG matrix
+/// `[a b c d e f]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Affine(pub [BigRational; 6]);
+
+impl Affine {
+    /// The identity map.
+    pub fn identity() -> Self {
+        let (o, z) = (crate::num::scalar::rat(1), crate::num::scalar::rat(0));
+        Affine([o.clone(), z.clone(), z.clone(), o, z.clone(), z])
+    }
+
+    /// `self ∘ inner`: first `inner`, then `self` (an SVG parent's transform composed with its
+    /// child's: `parent.then_inner(child)`).
+    pub fn compose(&self, inner: &Affine) -> Affine {
+        let [a, b, c, d, e, f] = &self.0;
+        let [a2, b2, c2, d2, e2, f2] = &inner.0;
+        Affine([
+            a * a2 + c * b2,
+            b * a2 + d * b2,
+            a * c2 + c * d2,
+            b * c2 + d * d2,
+            a * e2 + c * f2 + e,
+            b * e2 + d * f2 + f,
+        ])
+    }
+
+    /// The image of a point.
+    pub fn apply(&self, p: &Point<BigRational>) -> Point<BigRational> {
+        let [a, b, c, d, e, f] = &self.0;
+        let (x, y) = (&p.coords[0], &p.coords[1]);
+        Point::new(vec![a * x + c * y + e, b * x + d * y + f])
+    }
+
+    /// The image of a segment (affine maps take Bézier control points to control points, so
+    /// the image is exact).
+    pub fn apply_segment(&self, s: &Segment) -> Segment {
+        match s {
+            Segment::Bezier(ps) => Segment::Bezier(ps.iter().map(|p| self.apply(p)).collect()),
+            Segment::Skipped { from, to, reason } => {
+                Segment::Skipped { from: self.apply(from), to: self.apply(to), reason: reason.clone() }
+            }
+        }
+    }
+}

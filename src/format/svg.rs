@@ -1,0 +1,319 @@
+//! SVG documents read exactly: every `<path>` and the Bézier-exact basic shapes (`<line>`,
+//! `<polyline>`, `<polygon>`, `<rect>`), with the `transform`s of the element and its ancestors
+//! applied as exact rational matrices. XML is parsed by `roxmltree`; path data by
+//! [`crate::format::svg_path`].
+//!
+//! What is not a polynomial Bézier curve is never approximated: `<circle>` and `<ellipse>` are
+//! listed with a note, the rounded corners of a `<rect>` and arcs inside paths are
+//! [`Segment::Skipped`] pieces, and a transform that is not rational (`rotate(30)`) skips its
+//! elements with a note. Transforms: `matrix`, `translate`, `scale`, `rotate` by a multiple of
+//! 90° (with or without a centre) and `skewX`/`skewY` by 0° or ±45°. Lengths are plain numbers
+//! or `px`; other units make a per-element error.
+//!
+//! # Example
+//! ```
+//! use casteljau::format::svg::read_svg;
+//! use casteljau::num::parse::NumberMode;
+//! let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
+//!   <g transform="translate(10 0) scale(2)"><path id="p" d="M0 0 Q1 1 2 0"/></g>
+//! </svg>"#;
+//! let shapes = read_svg(svg, NumberMode::Exact).unwrap();
+//! assert_eq!(shapes[0].id.as_deref(), Some("p"));
+//! let casteljau::format::Segment::Bezier(q) = &shapes[0].contours.as_ref().unwrap()[0].segments[0] else { panic!() };
+//! assert_eq!(q[1].to_string(), "(12, 2)");
+//! ```
+
+use crate::error::{Error, Position, Result};
+use crate::format::{Affine, Contour, Segment, svg_path};
+use crate::num::parse::{NumberMode, parse_number_in};
+use crate::num::point::Point;
+use crate::num::scalar::{Exact, Scalar, rat};
+use num_rational::BigRational;
+use std::cmp::Ordering;
+
+/// Most XML nodes accepted in one document.
+pub const MAX_SVG_NODES: u32 = 10_000_000;
+
+/// One shape element of an SVG document, in document order.
+#[derive(Clone, Debug)]
+pub struct SvgShape {
+    /// 0-based index among the document's shape elements (`path`, `rect`, `line`, `polyline`,
+    /// `polygon`, `circle`, `ellipse`).
+    pub index: usize,
+    /// The element's `id`, when it has one.
+    pub id: Option<String>,
+    /// The tag name.
+    pub tag: String,
+    /// 1-based line of the element in the file.
+    pub line: usize,
+    /// The subpaths in user space (all transforms applied), or why the element could not be
+    /// read exactly (bad path data, a non-rational transform, a circle or ellipse).
+    pub contours: std::result::Result<Vec<Contour>, String>,
+}
+
+/// The shape elements of an SVG document (see the module documentation).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] when the text is not well-formed XML (with the parser's line and
+/// column). Problems of single elements are reported in [`SvgShape::contours`], not here.
+pub fn read_svg(text: &str, mode: NumberMode) -> Result<Vec<SvgShape>> {
+    let options = roxmltree::ParsingOptions { allow_dtd: true, nodes_limit: MAX_SVG_NODES, ..Default::default() };
+    let doc = roxmltree::Document::parse_with_options(text, options)
+        .map_err(|e| Error::InvalidArgument { message: format!("not an SVG (XML) document: {e}") })?;
+    let mut out = vec![];
+    for node in doc.descendants().filter(|n| n.is_element()) {
+        let tag = node.tag_name().name();
+        if !matches!(tag, "path" | "rect" | "line" | "polyline" | "polygon" | "circle" | "ellipse") {
+            continue;
+        }
+        let line = doc.text_pos_at(node.range().start).row as usize;
+        let contours = transform_of(node, mode).and_then(|m| {
+            let shape = shape(node, tag, mode)?;
+            Ok(shape
+                .into_iter()
+                .map(|c| Contour {
+                    segments: c.segments.iter().map(|s| m.apply_segment(s)).collect(),
+                    closed: c.closed,
+                })
+                .collect())
+        });
+        out.push(SvgShape {
+            index: out.len(),
+            id: node.attribute("id").map(str::to_string),
+            tag: tag.to_string(),
+            line,
+            contours,
+        });
+    }
+    Ok(out)
+}
+
+type P = Point<BigRational>;
+
+fn pt(x: BigRational, y: BigRational) -> P {
+    Point::new(vec![x, y])
+}
+
+/// The element's own contours in its user space.
+fn shape(node: roxmltree::Node<'_, '_>, tag: &str, mode: NumberMode) -> std::result::Result<Vec<Contour>, String> {
+    let len = |name: &str| length(node, name, mode);
+    let line = |a: P, b: P| Segment::Bezier(vec![a, b]);
+    match tag {
+        "path" => match node.attribute("d") {
+            None => Ok(vec![]),
+            Some(d) => svg_path::parse_path(d, mode).map_err(|e| format!("d: {e}")),
+        },
+        "line" => Ok(vec![Contour {
+            segments: vec![line(pt(len("x1")?, len("y1")?), pt(len("x2")?, len("y2")?))],
+            closed: false,
+        }]),
+        "polyline" | "polygon" => {
+            let text = node.attribute("points").unwrap_or("");
+            // the points attribute is path data without commands
+            let numbers = svg_path::parse_path(&format!("M{text}"), mode).map_err(|e| format!("points: {e}"))?;
+            let mut vertices: Vec<P> = vec![];
+            for c in &numbers {
+                for s in &c.segments {
+                    if let Segment::Bezier(ps) = s {
+                        if vertices.is_empty() {
+                            vertices.push(ps[0].clone());
+                        }
+                        vertices.push(ps[1].clone());
+                    }
+                }
+            }
+            let mut segments: Vec<Segment> = vertices.windows(2).map(|w| line(w[0].clone(), w[1].clone())).collect();
+            let closed = tag == "polygon";
+            if closed && vertices.len() > 1 && vertices[0] != vertices[vertices.len() - 1] {
+                segments.push(line(vertices[vertices.len() - 1].clone(), vertices[0].clone()));
+            }
+            Ok(if segments.is_empty() { vec![] } else { vec![Contour { segments, closed }] })
+        }
+        "rect" => rect(node, mode),
+        _ => Err(format!("<{tag}> is not a polynomial Bézier curve (a conic); not approximated")),
+    }
+}
+
+/// `<rect>`: four sides, and with `rx`/`ry` the straight parts plus four skipped corner arcs
+/// (SVG 2 §10.2 for the radius rules).
+fn rect(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> std::result::Result<Vec<Contour>, String> {
+    let len = |name: &str| length(node, name, mode);
+    let (x, y, w, h) = (len("x")?, len("y")?, len("width")?, len("height")?);
+    if w.sign() != Ordering::Greater || h.sign() != Ordering::Greater {
+        return Ok(vec![]); // not rendered
+    }
+    let given = |name: &str| node.attribute(name).map(|_| len(name)).transpose();
+    let (rx, ry) = match (given("rx")?, given("ry")?) {
+        (None, None) => (rat(0), rat(0)),
+        (Some(r), None) | (None, Some(r)) => (r.clone(), r),
+        (Some(a), Some(b)) => (a, b),
+    };
+    let half = |v: &BigRational| v / rat(2);
+    let rx = if rx > half(&w) { half(&w) } else { rx };
+    let ry = if ry > half(&h) { half(&h) } else { ry };
+    let (x1, y1) = (x.clone() + &w, y.clone() + &h);
+    let corner = |from: P, to: P| Segment::Skipped {
+        from,
+        to,
+        reason: "rounded corner of a <rect> (an elliptical arc): not a polynomial Bézier curve, not approximated"
+            .into(),
+    };
+    if rx.is_zero() || ry.is_zero() {
+        let mut segs = vec![];
+        let mut side = |a: P, b: P| segs.push(Segment::Bezier(vec![a, b]));
+        side(pt(x.clone(), y.clone()), pt(x1.clone(), y.clone()));
+        side(pt(x1.clone(), y.clone()), pt(x1.clone(), y1.clone()));
+        side(pt(x1.clone(), y1.clone()), pt(x.clone(), y1.clone()));
+        side(pt(x.clone(), y1.clone()), pt(x.clone(), y.clone()));
+        return Ok(vec![Contour { segments: segs, closed: true }]);
+    }
+    let (xa, xb, ya, yb) = (x.clone() + &rx, x1.clone() - &rx, y.clone() + &ry, y1.clone() - &ry);
+    // top side, corner, right side, corner, … (a side of zero length is left out)
+    let corners = [
+        (pt(xb.clone(), y.clone()), pt(x1.clone(), ya.clone())),
+        (pt(x1.clone(), yb.clone()), pt(xb.clone(), y1.clone())),
+        (pt(xa.clone(), y1.clone()), pt(x.clone(), yb.clone())),
+        (pt(x.clone(), ya.clone()), pt(xa.clone(), y.clone())),
+    ];
+    let mut out = vec![];
+    for (k, (from, to)) in corners.iter().enumerate() {
+        let side_start = &corners[(k + 3) % 4].1;
+        if side_start != from {
+            out.push(Segment::Bezier(vec![side_start.clone(), from.clone()]));
+        }
+        out.push(corner(from.clone(), to.clone()));
+    }
+    Ok(vec![Contour { segments: out, closed: true }])
+}
+
+/// A length attribute: a number, optionally with `px`; absent means 0.
+fn length(node: roxmltree::Node<'_, '_>, name: &str, mode: NumberMode) -> std::result::Result<BigRational, String> {
+    let Some(v) = node.attribute(name) else { return Ok(rat(0)) };
+    let v = v.trim();
+    let v = v.strip_suffix("px").unwrap_or(v);
+    if v.ends_with(|c: char| c.is_ascii_alphabetic() || c == '%') {
+        return Err(format!("{name}=\"{v}\": only plain numbers and px lengths are read exactly"));
+    }
+    parse_number_in(v, Position { line: None, column: 1, token: 1 }, mode).map_err(|e| format!("{name}: {e}"))
+}
+
+/// The product of the `transform`s of the element and its ancestors (outermost first).
+fn transform_of(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> std::result::Result<Affine, String> {
+    let mut chain: Vec<roxmltree::Node<'_, '_>> = node.ancestors().filter(|n| n.is_element()).collect();
+    chain.reverse();
+    let mut m = Affine::identity();
+    for n in chain {
+        if let Some(t) = n.attribute("transform") {
+            let own = parse_transform(t, mode).map_err(|e| format!("transform=\"{t}\": {e}"))?;
+            m = m.compose(&own);
+        }
+    }
+    Ok(m)
+}
+
+/// An SVG transform list, exactly.
+///
+/// # Errors
+/// A message for malformed lists and for rotations and skews whose sine/cosine/tangent are not
+/// rational.
+pub fn parse_transform(text: &str, mode: NumberMode) -> std::result::Result<Affine, String> {
+    let mut m = Affine::identity();
+    let mut rest = text.trim_start_matches(|c: char| c.is_whitespace() || c == ',');
+    while !rest.is_empty() {
+        let open = rest.find('(').ok_or("expected name(numbers)")?;
+        let name = rest[..open].trim();
+        let close = rest[open..].find(')').ok_or("missing )")? + open;
+        let args = &rest[open + 1..close];
+        let nums: Vec<BigRational> = args
+            .split(|c: char| c.is_whitespace() || c == ',')
+            .filter(|s| !s.is_empty())
+            .enumerate()
+            .map(|(k, s)| parse_number_in(s, Position { line: None, column: 1, token: k + 1 }, mode))
+            .collect::<Result<_>>()
+            .map_err(|e| e.to_string())?;
+        let n = |k: usize| nums.get(k).cloned().unwrap_or_else(|| rat(0));
+        let arity = |ok: &[usize]| {
+            if ok.contains(&nums.len()) {
+                Ok(())
+            } else {
+                Err(format!("{name} takes {ok:?} numbers, got {}", nums.len()))
+            }
+        };
+        let (o, z) = (rat(1), rat(0));
+        let own = match name {
+            "matrix" => {
+                arity(&[6])?;
+                Affine([n(0), n(1), n(2), n(3), n(4), n(5)])
+            }
+            "translate" => {
+                arity(&[1, 2])?;
+                Affine([o.clone(), z.clone(), z.clone(), o, n(0), n(1)])
+            }
+            "scale" => {
+                arity(&[1, 2])?;
+                let sy = if nums.len() == 2 { n(1) } else { n(0) };
+                Affine([n(0), z.clone(), z.clone(), sy, z.clone(), z])
+            }
+            "rotate" => {
+                arity(&[1, 3])?;
+                let (c, s) = right_angle(&n(0)).ok_or_else(|| {
+                    format!("rotate({}) is not a multiple of 90°: its sine and cosine are irrational", n(0))
+                })?;
+                let r = Affine([rat(c), rat(s), rat(-s), rat(c), z.clone(), z.clone()]);
+                if nums.len() == 3 {
+                    let to = Affine([o.clone(), z.clone(), z.clone(), o.clone(), n(1), n(2)]);
+                    let back = Affine([o.clone(), z.clone(), z.clone(), o, -n(1), -n(2)]);
+                    to.compose(&r).compose(&back)
+                } else {
+                    r
+                }
+            }
+            "skewX" | "skewY" => {
+                arity(&[1])?;
+                let t = tan_exact(&n(0)).ok_or_else(|| {
+                    format!("{name}({}): the tangent is irrational (only 0° and ±45° are exact)", n(0))
+                })?;
+                if name == "skewX" {
+                    Affine([o.clone(), z.clone(), rat(t), o, z.clone(), z])
+                } else {
+                    Affine([o.clone(), rat(t), z.clone(), o, z.clone(), z])
+                }
+            }
+            _ => return Err(format!("unknown transform {name:?}")),
+        };
+        m = m.compose(&own);
+        rest = rest[close + 1..].trim_start_matches(|c: char| c.is_whitespace() || c == ',');
+    }
+    Ok(m)
+}
+
+/// `(cos, sin)` of an angle in degrees that is a multiple of 90.
+fn right_angle(deg: &BigRational) -> Option<(i64, i64)> {
+    if !deg.is_integer() {
+        return None;
+    }
+    let q = deg.to_integer() % num_bigint::BigInt::from(360);
+    let q: i64 = (if q.sign() == num_bigint::Sign::Minus { q + 360 } else { q }).try_into().ok()?;
+    match q {
+        0 => Some((1, 0)),
+        90 => Some((0, 1)),
+        180 => Some((-1, 0)),
+        270 => Some((0, -1)),
+        _ => None,
+    }
+}
+
+/// `tan` of 0°, ±45° (mod 180°).
+fn tan_exact(deg: &BigRational) -> Option<i64> {
+    if !deg.is_integer() {
+        return None;
+    }
+    let q = deg.to_integer() % num_bigint::BigInt::from(180);
+    let q: i64 = (if q.sign() == num_bigint::Sign::Minus { q + 180 } else { q }).try_into().ok()?;
+    match q {
+        0 => Some(0),
+        45 => Some(1),
+        135 => Some(-1),
+        _ => None,
+    }
+}
