@@ -174,3 +174,173 @@ pub fn near_cusp(exponents: std::ops::RangeInclusive<u32>) -> impl Strategy<Valu
         (BezierCurve::new(pts).unwrap(), k)
     })
 }
+
+/// The same hard cases with control points that are **exact binary64 values**, so float code
+/// sees exactly the curve casteljau decides: parameters are dyadic (`k/2^m`), the affine maps have
+/// integer entries times 3 (which clears the thirds of the Bézier ↔ power conversion), and every
+/// coordinate is checked to be an `f64` exactly ([`binary64::points`] gives them).
+///
+/// ```
+/// use casteljau::{classify::{classify, NodeType}, strategies::binary64};
+/// use proptest::prelude::*;
+/// proptest!(|((curve, tau) in binary64::cusp_at(binary64::unit_parameter()))| {
+///     let pts: Vec<[f64; 2]> = binary64::points(&curve); // exact: no rounding happened
+///     prop_assert_eq!(classify(&curve).unwrap().node_type, Some(NodeType::Cusp));
+///     prop_assert_eq!(pts.len(), 4);
+///     let _ = tau;
+/// });
+/// ```
+pub mod binary64 {
+    use super::compose;
+    use crate::curve::bezier::BezierCurve;
+    use crate::num::point::Point;
+    use crate::num::scalar::{rat, ratio};
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+
+    /// `x` is an `f64` exactly.
+    pub fn is_binary64(x: &BigRational) -> bool {
+        let f = crate::num::scalar::ratio_to_f64(x);
+        f.is_finite() && BigRational::from_float(f).as_ref() == Some(x)
+    }
+
+    /// The control points as `f64`s.
+    ///
+    /// # Panics
+    /// **Panics when a coordinate is not exactly an `f64`** (never for this module's curves).
+    pub fn points(c: &BezierCurve<BigRational>) -> Vec<[f64; 2]> {
+        c.points()
+            .iter()
+            .map(|p| {
+                let f = |x: &BigRational| {
+                    assert!(is_binary64(x), "{x} is not a binary64 value");
+                    crate::num::scalar::ratio_to_f64(x)
+                };
+                [f(&p.coords[0]), f(&p.coords[1])]
+            })
+            .collect()
+    }
+
+    fn exact_curve(c: BezierCurve<BigRational>) -> Option<BezierCurve<BigRational>> {
+        c.points().iter().all(|p| p.coords.iter().all(is_binary64)).then_some(c)
+    }
+
+    /// Dyadic parameters in `[0, 1]`, endpoints and `1/2` often.
+    pub fn unit_parameter() -> impl Strategy<Value = BigRational> {
+        prop_oneof![
+            Just(rat(0)),
+            Just(rat(1)),
+            Just(ratio(1, 2)),
+            (0u32..=8).prop_flat_map(|m| (0i64..=(1 << m)).prop_map(move |k| ratio(k, 1 << m)))
+        ]
+    }
+
+    /// Dyadic parameters outside `[0, 1]`.
+    pub fn outside_parameter() -> impl Strategy<Value = BigRational> {
+        prop_oneof![(1i64..=64).prop_map(|k| ratio(-k, 16)), (17i64..=80).prop_map(|k| ratio(k, 16))]
+    }
+
+    /// An invertible integer matrix times 3 and an integer offset.
+    fn affine3() -> impl Strategy<Value = ([i64; 4], [i64; 2])> {
+        (prop::array::uniform4(-4i64..=4), prop::array::uniform2(-50i64..=50))
+            .prop_filter("invertible", |(m, _)| m[0] * m[3] - m[1] * m[2] != 0)
+            .prop_map(|(m, o)| (m.map(|x| 3 * x), o))
+    }
+
+    /// A cusp exactly at the dyadic `t = τ`: an affine image of `(s², s³)`, `s = t − τ`.
+    pub fn cusp_at(
+        tau: impl Strategy<Value = BigRational>,
+    ) -> impl Strategy<Value = (BezierCurve<BigRational>, BigRational)> {
+        (tau, affine3()).prop_filter_map("binary64", |(tau, (m, o))| {
+            let (one, mt) = (rat(1), -tau.clone());
+            let x = compose([rat(0), rat(0), rat(1), rat(0)], &one, &mt);
+            let y = compose([rat(0), rat(0), rat(0), rat(1)], &one, &mt);
+            exact_curve(super::cubic_from_power(x, y, m, o)).map(|c| (c, tau))
+        })
+    }
+
+    /// A loop whose double point is reached exactly at `t0` and `t1 = t0 + 2^-j` (`t0 = 0` and
+    /// `t1 = 1` frequent): an affine image of `(s² − 1, s³ − s)`, `s = −1` at `t0`, `1` at `t1`.
+    pub fn loop_between() -> impl Strategy<Value = (BezierCurve<BigRational>, (BigRational, BigRational))> {
+        let start = |j: u32| {
+            let width = ratio(1, 1 << j);
+            prop_oneof![Just(rat(0)), Just(rat(1) - width.clone()), (-16i64..=16).prop_map(|k| ratio(k, 16)),]
+                .prop_map(move |t0| (t0.clone(), t0 + width.clone()))
+        };
+        ((0u32..=3).prop_flat_map(start), affine3()).prop_filter_map("binary64", |((t0, t1), (m, o))| {
+            let alpha = rat(2) / (t1.clone() - &t0);
+            let beta = rat(-1) - alpha.clone() * &t0;
+            let x = compose([rat(-1), rat(0), rat(1), rat(0)], &alpha, &beta);
+            let y = compose([rat(0), rat(-1), rat(0), rat(1)], &alpha, &beta);
+            exact_curve(super::cubic_from_power(x, y, m, o)).map(|c| (c, (t0, t1)))
+        })
+    }
+
+    /// An inflection exactly at `t = 0` or `t = 1`: an affine image of `(s, s³)`.
+    pub fn inflection_at_endpoint() -> impl Strategy<Value = (BezierCurve<BigRational>, BigRational)> {
+        (prop_oneof![Just(rat(0)), Just(rat(1))], 1i64..=5, affine3()).prop_filter_map("binary64", |(at, k, (m, o))| {
+            let alpha = rat(k);
+            let beta = -alpha.clone() * &at;
+            let x = compose([rat(0), rat(1), rat(0), rat(0)], &alpha, &beta);
+            let y = compose([rat(0), rat(0), rat(0), rat(1)], &alpha, &beta);
+            exact_curve(super::cubic_from_power(x, y, m, o)).map(|c| (c, at))
+        })
+    }
+
+    /// A quadratic with integer points (multiples of 3) written as a cubic: integer control points.
+    pub fn degree_elevated_quadratic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+        prop::collection::vec((-30i64..=30, -30i64..=30), 3).prop_map(|v| {
+            let q = v.into_iter().map(|(x, y)| Point::new(vec![rat(3 * x), rat(3 * y)])).collect();
+            BezierCurve::new(q).unwrap().elevate(1).unwrap()
+        })
+    }
+
+    /// Small dyadic numbers `k/2^m`, `|k| ≤ 1024`, `m ≤ 10`.
+    pub fn dyadic() -> impl Strategy<Value = BigRational> {
+        (-1024i64..=1024, 0u32..=10).prop_map(|(k, m)| ratio(k, 1 << m))
+    }
+
+    /// Cubics with dyadic control points.
+    pub fn cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+        prop::collection::vec((dyadic(), dyadic()), 4)
+            .prop_map(|v| BezierCurve::new(v.into_iter().map(|(x, y)| Point::new(vec![x, y])).collect()).unwrap())
+    }
+
+    /// Four dyadic control points on one line.
+    pub fn collinear_cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+        (prop::collection::vec(dyadic(), 4), (-5i64..=5, -5i64..=5), dyadic()).prop_map(|(s, (dx, dy), c)| {
+            let d = if dx == 0 && dy == 0 { (1, 0) } else { (dx, dy) };
+            let pts = s.into_iter().map(|s| Point::new(vec![s.clone() * rat(d.0) + &c, s * rat(d.1)])).collect();
+            BezierCurve::new(pts).unwrap()
+        })
+    }
+
+    /// A dyadic cubic with two coincident control points.
+    pub fn coincident_control_points() -> impl Strategy<Value = BezierCurve<BigRational>> {
+        (cubic(), 0usize..3).prop_map(|(c, i)| {
+            let mut pts = c.into_points();
+            pts[i + 1] = pts[i].clone();
+            BezierCurve::new(pts).unwrap()
+        })
+    }
+
+    /// A near-cusp: the cusp `(0,0) (1,1) (0,1) (1,0)` with `P1.y` moved by `±2^-k`; exactly a
+    /// crunode or an acnode, never a cusp. `1 ± 2^-k` is an `f64` for `k ≤ 52` (`1 − 2^-53` too);
+    /// larger `k` are not drawn.
+    pub fn near_cusp(
+        exponents: std::ops::RangeInclusive<u32>,
+    ) -> impl Strategy<Value = (BezierCurve<BigRational>, u32)> {
+        let (lo, hi) = (*exponents.start(), (*exponents.end()).min(52));
+        (lo..=hi.max(lo), prop_oneof![Just(1i64), Just(-1i64)]).prop_map(|(k, sign)| {
+            let k = k.min(52);
+            let eps = BigRational::new(BigInt::from(sign), BigInt::from(2).pow(k));
+            let pts = [(0, 0), (1, 1), (0, 1), (1, 0)]
+                .iter()
+                .enumerate()
+                .map(|(i, &(x, y))| Point::new(vec![rat(x), if i == 1 { rat(y) + &eps } else { rat(y) }]))
+                .collect();
+            (BezierCurve::new(pts).unwrap(), k)
+        })
+    }
+}

@@ -22,6 +22,7 @@ pub mod canonical;
 pub mod certified;
 pub mod evidence;
 pub mod moving_line;
+pub mod oracle;
 pub mod rational_cubic;
 
 use crate::curve::bezier::BezierCurve;

@@ -106,6 +106,10 @@ pub enum Command {
     /// or text batches (other files), exactly: one JSON line per segment with its provenance,
     /// control points, classification and flags; a summary per file on stderr.
     Scan(ScanArgs),
+    /// Check a float library's answers (JSON Lines: node type, category, loop, cusp,
+    /// inflections, parameters, double point) against the exact ones: every disagreement with
+    /// the exact and float values and the curve; exit 1 when there is any.
+    Check(CheckArgs),
     /// Classify planar curves of degree ≤ 3 exactly: node type, double point, parameters,
     /// segment features on [0,1].
     Classify {
@@ -551,6 +555,34 @@ pub struct ScanArgs {
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// No summary and no progress on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// `casteljau check`.
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// The float library's answers, one JSON object per curve (fields: node_type, category,
+    /// loop, cusp, inflections, inflection_parameters, cusp_parameters,
+    /// self_intersection_parameters, double_point; optional points and line).
+    #[arg(long)]
+    pub against: String,
+    /// The curves, one per line (the batch format); optional when every answer has "points".
+    pub curves: Option<String>,
+    /// Absolute tolerance on parameters t: a float parameter agrees with an exact one within it.
+    #[arg(long, default_value_t = 1e-9)]
+    pub tol: f64,
+    /// Absolute tolerance on each coordinate of the double point.
+    #[arg(long, default_value_t = 1e-9)]
+    pub point_tol: f64,
+    /// How CURVES and string coordinates are read (`exact` or `binary64`); JSON number
+    /// coordinates are always the f64 they denote.
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
+    /// JSON Lines output (one object per disagreement).
+    #[arg(long)]
+    pub json: bool,
+    /// No summary on stderr.
     #[arg(long, short)]
     pub quiet: bool,
 }

@@ -6,11 +6,13 @@
 //! * [`answers`]: each command's exact answer for one curve, as text and typed JSON.
 //! * [`commands`]: the commands with their own input and output (`prove`, `plot`, `surface`,
 //!   `gallery`); [`splines`]: the `spline` command (knot vectors, JSON Lines splines); [`scan`]:
-//!   fonts, SVG and batches, segment by segment.
+//!   fonts, SVG and batches, segment by segment; [`check`]: a float library's answers against
+//!   the exact ones.
 
 mod answers;
 mod args;
 mod batch;
+mod check;
 mod commands;
 mod scan;
 mod splines;
@@ -108,6 +110,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Plot(args) => commands::plot(args, out),
         Command::Spline { op } => splines::run(op, out),
         Command::Scan(args) => scan::run(&args, out),
+        Command::Check(args) => check::run(&args, out),
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
         }

@@ -1,0 +1,318 @@
+//! The oracle for float curve code: a float library's answers about one curve, checked against
+//! the exact classification — every disagreement, per field, with the exact value and the float
+//! one (the engine of `casteljau check`).
+//!
+//! The answers ([`FloatAnswers`], JSON with any subset of the fields, unknown fields ignored):
+//!
+//! | field | meaning | compared |
+//! | --- | --- | --- |
+//! | `node_type` | `"crunode"`, `"cusp"`, `"acnode"`, `"explicit"` or `null` (not a genuine cubic) | exactly |
+//! | `category` | the segment's Stone–DeRose category: `point`, `line`, `parabola`, `arch`, `single_inflection`, `double_inflection`, `loop`, `cusp` | exactly |
+//! | `loop`, `cusp` | a loop / a cusp on `[0, 1]` | exactly |
+//! | `inflections` | the number of inflections on `[0, 1]` | exactly |
+//! | `inflection_parameters` | the inflection parameters the library found on `[0, 1]` | within `tol` |
+//! | `cusp_parameters` | the cusp parameters on `[0, 1]` | within `tol` |
+//! | `self_intersection_parameters` | the two parameters of a loop on `[0, 1]` (`[]` when none) | within `tol` |
+//! | `double_point` | `[x, y]` of the double point (crunode, acnode) or cusp point | within `point_tol` |
+//!
+//! Parameter lists: a float parameter **matches** an exact one `e` when `|p − e| ≤ tol`, decided
+//! exactly (`p` and `tol` are taken as the exact values of their `f64`s, `e` is exact in `Q(√d)`).
+//! An exact parameter on `[0, 1]` matched by no float parameter is **missed**; a float parameter
+//! matching no exact parameter of the curve (on `[0, 1]` or not) is **spurious**; a second float
+//! parameter matching an exact parameter already matched is a **duplicate**. Points: the distance
+//! in each coordinate is at most `point_tol`, exactly.
+//!
+//! # Example
+//! ```
+//! use casteljau::classify::oracle::{FloatAnswers, check_f64, Tolerances};
+//! // a cusp exactly at t = 1/2; a float library that says "arch" and misses it
+//! let answers: FloatAnswers = serde_json::from_str(r#"{"category": "arch", "cusp_parameters": []}"#).unwrap();
+//! let d = check_f64(&[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]], &answers, &Tolerances::default()).unwrap();
+//! assert_eq!(d.len(), 2);
+//! assert_eq!((d[0].field, d[0].kind.as_str(), d[0].exact.as_str()), ("category", "mismatch", "cusp"));
+//! assert_eq!((d[1].field, d[1].kind.as_str(), d[1].exact.as_str()), ("cusp_parameters", "missed", "1/2"));
+//! ```
+
+use crate::classify::{Classification, NodeType, Parameter, classify};
+use crate::curve::bezier::BezierCurve;
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use crate::num::quadratic_field::QuadraticExt;
+use crate::num::scalar::{Exact, Scalar, rat};
+use num_rational::BigRational;
+use std::cmp::Ordering;
+
+/// A float library's answers about one curve (see the module table); absent fields are not
+/// checked.
+#[derive(Clone, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+pub struct FloatAnswers {
+    /// The node type, or `None` inside `Some` for "not a genuine cubic" (JSON `null`).
+    #[serde(default, deserialize_with = "explicit_null", skip_serializing_if = "Option::is_none")]
+    pub node_type: Option<Option<String>>,
+    /// The segment's category.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub category: Option<String>,
+    /// A loop on `[0, 1]`.
+    #[serde(default, rename = "loop", skip_serializing_if = "Option::is_none")]
+    pub has_loop: Option<bool>,
+    /// A cusp on `[0, 1]`.
+    #[serde(default, rename = "cusp", skip_serializing_if = "Option::is_none")]
+    pub has_cusp: Option<bool>,
+    /// The number of inflections on `[0, 1]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inflections: Option<usize>,
+    /// Inflection parameters found on `[0, 1]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inflection_parameters: Option<Vec<f64>>,
+    /// Cusp parameters found on `[0, 1]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cusp_parameters: Option<Vec<f64>>,
+    /// The two parameters of a loop on `[0, 1]` (empty when there is none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub self_intersection_parameters: Option<Vec<f64>>,
+    /// The double point or cusp point.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub double_point: Option<[f64; 2]>,
+}
+
+fn explicit_null<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Option<Option<String>>, D::Error> {
+    use serde::Deserialize;
+    Ok(Some(Option::<String>::deserialize(d)?))
+}
+
+/// How far a float answer may be from the exact one and still agree.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerances {
+    /// Absolute tolerance on parameters `t` (default `1e-9`).
+    pub parameter: f64,
+    /// Absolute tolerance on each coordinate of the double point (default `1e-9`).
+    pub point: f64,
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Tolerances { parameter: 1e-9, point: 1e-9 }
+    }
+}
+
+/// What kind of disagreement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Kind {
+    /// A value (class, count, flag, point) differs.
+    Mismatch,
+    /// An exact parameter on `[0, 1]` has no float parameter within the tolerance.
+    Missed,
+    /// A float parameter (or point) has no exact counterpart.
+    Spurious,
+    /// A second float parameter for an exact parameter already matched.
+    Duplicate,
+}
+
+impl Kind {
+    /// `mismatch`, `missed`, `spurious` or `duplicate`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kind::Mismatch => "mismatch",
+            Kind::Missed => "missed",
+            Kind::Spurious => "spurious",
+            Kind::Duplicate => "duplicate",
+        }
+    }
+}
+
+impl serde::Serialize for Kind {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+/// One disagreement between a float answer and the exact one. JSON fields: `field`, `kind`,
+/// `exact` (the exact value as a string, `""` when there is none, e.g. for a spurious parameter),
+/// `exact_float` (its nearest `f64`, when it is a number), `float` (the library's value).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Disagreement {
+    /// The answer field (`category`, `inflection_parameters`, …).
+    pub field: &'static str,
+    /// What kind of disagreement.
+    pub kind: Kind,
+    /// The exact value.
+    pub exact: String,
+    /// The exact value's nearest `f64`, for numbers.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact_float: Option<f64>,
+    /// The float library's value.
+    pub float: serde_json::Value,
+}
+
+/// [`check`] for `f64` control points, each taken exactly.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] for a non-finite coordinate; otherwise as [`check`].
+pub fn check_f64(points: &[[f64; 2]], answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
+    let exact = |x: f64| {
+        BigRational::from_float(x)
+            .ok_or_else(|| Error::InvalidArgument { message: format!("control point coordinate {x} is not finite") })
+    };
+    let pts = points.iter().map(|p| Ok(Point::new(vec![exact(p[0])?, exact(p[1])?]))).collect::<Result<Vec<_>>>()?;
+    check(&BezierCurve::new(pts)?, answers, tol)
+}
+
+/// Every disagreement between `answers` and the exact classification of `curve` (planar,
+/// degree ≤ 3), in the order of the module table.
+///
+/// # Errors
+/// As [`classify`]; [`Error::InvalidArgument`] for a negative or non-finite tolerance.
+pub fn check(curve: &BezierCurve<BigRational>, answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
+    for t in [tol.parameter, tol.point] {
+        if !(t.is_finite() && t >= 0.0) {
+            return Err(Error::InvalidArgument { message: format!("tolerance {t} must be finite and ≥ 0") });
+        }
+    }
+    let k = classify(curve)?;
+    Ok(compare(&k, answers, tol))
+}
+
+/// The comparison itself, on a classification already computed.
+pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> Vec<Disagreement> {
+    let mut out = vec![];
+    let mut differ = |field, exact: String, float: serde_json::Value| {
+        out.push(Disagreement { field, kind: Kind::Mismatch, exact, exact_float: None, float })
+    };
+    if let Some(n) = &answers.node_type {
+        let exact = k.node_type.map(NodeType::as_str);
+        if exact != n.as_deref() {
+            differ("node_type", exact.unwrap_or("null").into(), serde_json::json!(n));
+        }
+    }
+    if let Some(c) = &answers.category
+        && c != k.segment.category.as_str()
+    {
+        differ("category", k.segment.category.as_str().into(), serde_json::json!(c));
+    }
+    if let Some(b) = answers.has_loop
+        && b != k.segment.has_loop
+    {
+        differ("loop", k.segment.has_loop.to_string(), serde_json::json!(b));
+    }
+    if let Some(b) = answers.has_cusp
+        && b != k.segment.has_cusp
+    {
+        differ("cusp", k.segment.has_cusp.to_string(), serde_json::json!(b));
+    }
+    if let Some(n) = answers.inflections
+        && n != k.segment.inflections
+    {
+        differ("inflections", k.segment.inflections.to_string(), serde_json::json!(n));
+    }
+    if let Some(ps) = &answers.inflection_parameters {
+        match_parameters(&mut out, "inflection_parameters", &k.inflection_parameters, ps, tol.parameter);
+    }
+    if let Some(ps) = &answers.cusp_parameters {
+        match_parameters(&mut out, "cusp_parameters", &k.cusp_parameters, ps, tol.parameter);
+    }
+    if let Some(ps) = &answers.self_intersection_parameters {
+        // only a loop on [0, 1] has self-intersection parameters to report
+        let exact: &[Parameter] = if k.segment.has_loop { &k.double_point_parameters } else { &[] };
+        match_parameters(&mut out, "self_intersection_parameters", exact, ps, tol.parameter);
+    }
+    if let Some(p) = answers.double_point {
+        match &k.double_point {
+            None => out.push(Disagreement {
+                field: "double_point",
+                kind: Kind::Spurious,
+                exact: String::new(),
+                exact_float: None,
+                float: serde_json::json!(p),
+            }),
+            Some(d) => {
+                let near = d.coords.iter().zip(p).all(|(e, f)| match BigRational::from_float(f) {
+                    Some(f) => within(&QuadraticExt::from_base(e.clone()), &f, tol.point),
+                    None => false,
+                });
+                if !near {
+                    out.push(Disagreement {
+                        field: "double_point",
+                        kind: Kind::Mismatch,
+                        exact: d.to_string(),
+                        exact_float: None,
+                        float: serde_json::json!(p),
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// `|e − p| ≤ tol`, exactly.
+fn within(e: &Parameter, p: &BigRational, tol: f64) -> bool {
+    let tol = BigRational::from_float(tol).expect("finite tolerance");
+    let lo = e.clone() - QuadraticExt::from_base(p.clone() + &tol);
+    let hi = e.clone() - QuadraticExt::from_base(p.clone() - &tol);
+    lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less
+}
+
+fn in_unit(e: &Parameter) -> bool {
+    e.sign() != Ordering::Less && (QuadraticExt::from_base(rat(1)) - e.clone()).sign() != Ordering::Less
+}
+
+/// Matches float parameters to the exact ones (ascending) so that as many as possible agree: in
+/// ascending order each float takes the smallest unmatched exact parameter within `tol` (optimal
+/// for matching points to intervals of one width); what is left over is spurious, duplicate or
+/// missed.
+fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[Parameter], float: &[f64], tol: f64) {
+    let mut matched = vec![false; exact.len()];
+    let mut sorted: Vec<f64> = float.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let tol_q = BigRational::from_float(tol).expect("finite tolerance");
+    let mut j = 0;
+    for p in sorted {
+        let Some(q) = BigRational::from_float(p) else {
+            out.push(Disagreement {
+                field,
+                kind: Kind::Spurious,
+                exact: String::new(),
+                exact_float: None,
+                float: serde_json::json!(p.to_string()),
+            });
+            continue;
+        };
+        // exact parameters below p − tol can match no later float
+        let low = QuadraticExt::from_base(q.clone() - &tol_q);
+        while j < exact.len() && (exact[j].clone() - low.clone()).sign() == Ordering::Less {
+            j += 1;
+        }
+        if j < exact.len() && within(&exact[j], &q, tol) {
+            matched[j] = true;
+            j += 1;
+            continue;
+        }
+        match exact.iter().zip(&matched).find(|(e, m)| **m && within(e, &q, tol)) {
+            Some((e, _)) => out.push(Disagreement {
+                field,
+                kind: Kind::Duplicate,
+                exact: e.to_string(),
+                exact_float: Some(e.to_f64()),
+                float: serde_json::json!(p),
+            }),
+            None => out.push(Disagreement {
+                field,
+                kind: Kind::Spurious,
+                exact: String::new(),
+                exact_float: None,
+                float: serde_json::json!(p),
+            }),
+        }
+    }
+    for (e, m) in exact.iter().zip(matched) {
+        if !m && in_unit(e) {
+            out.push(Disagreement {
+                field,
+                kind: Kind::Missed,
+                exact: e.to_string(),
+                exact_float: Some(e.to_f64()),
+                float: serde_json::Value::Null,
+            });
+        }
+    }
+}
