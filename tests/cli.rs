@@ -543,3 +543,40 @@ fn cli_scan_svg_reports_skips_and_element_errors_with_exit_2() {
     assert_eq!(run(&["scan", dir.join("missing.ttf").to_str().unwrap()], None).status.code(), Some(2));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn cli_numbers_binary64_applies_to_parameters_and_weights() {
+    let o = run(&["eval", "--json", "--numbers", "binary64", "--t", "0.1", "0 0, 1 0"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["values"][0]["t"], "3602879701896397/36028797018963968");
+    assert_eq!(v["values"][0]["point"][0], "3602879701896397/36028797018963968");
+    let exact = run(&["eval", "--json", "--t", "0.1", "0 0, 1 0"], None);
+    assert!(stdout(&exact).contains("\"1/10\""));
+    // a weight 0.1 read as its double: the curve's midpoint moves accordingly
+    let w = |mode: &str| {
+        let o =
+            run(&["eval", "--json", "--numbers", mode, "--weights", "1 0.1 1", "--t", "1/2", "0 0, 1 1, 2 0"], None);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        v["values"][0]["point"][1].as_str().unwrap().to_string()
+    };
+    assert_eq!(w("exact"), "1/11");
+    assert_ne!(w("binary64"), "1/11");
+    let bad = run(&["eval", "--numbers", "binary64", "--t", "1e400", "0 0, 1 0"], None);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(stderr(&bad).contains("--t"), "{}", stderr(&bad));
+}
+
+#[test]
+fn cli_scan_variation_instances_cff2_and_refuses_glyf() {
+    let default = run(&["scan", "--quiet", &font("cantarell_vf_trimmed.ttf")], None);
+    let light = run(&["scan", "--quiet", "--variation", "wght=100", &font("cantarell_vf_trimmed.ttf")], None);
+    assert_eq!(light.status.code(), Some(0), "{}", stderr(&light));
+    let (d, l) = (json_lines(&default), json_lines(&light));
+    assert_eq!(d.len(), l.len());
+    assert_ne!(d[0]["points"], l[0]["points"]);
+    let o = run(&["scan", "--variation", "wght=700", &font("Tuffy.ttf")], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no variation axes"), "{}", stderr(&o));
+    assert_eq!(run(&["scan", "--variation", "wght", &font("cantarell_vf_trimmed.ttf")], None).status.code(), Some(2));
+}

@@ -189,14 +189,6 @@ fn data(name: &str) -> Vec<u8> {
     std::fs::read(format!("{}/tests/data/fonts/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap()
 }
 
-fn int_point(p: &Point<BigRational>) -> (i64, i64) {
-    let i = |x: &BigRational| {
-        assert!(x.is_integer(), "{x} is not an integer");
-        i64::try_from(x.to_integer()).unwrap()
-    };
-    (i(&p.coords[0]), i(&p.coords[1]))
-}
-
 #[test]
 fn font_truetype_glyph_a_has_exact_implied_midpoints() {
     let d = data("Tuffy.ttf");
@@ -296,23 +288,29 @@ fn font_truetype_every_glyph_matches_skrifa_segment_for_segment() {
     assert!(scaled_glyphs < 20, "{scaled_glyphs}");
 }
 
-/// FreeType's unscaled outlines of the default instance, from the fontations test data:
-/// `glyph <id>` then `m x,y`, `l x,y`, `c x,y x,y x,y` lines.
 /// A glyph's segments as integer control points.
 type IntSegments = Vec<Vec<(i64, i64)>>;
 
-fn freetype_outlines(text: &str) -> Vec<(u32, IntSegments)> {
+/// FreeType's unscaled outlines from the fontations test data: `glyph <id>`, `coords <normalized
+/// coordinate>`, then `m x,y`, `l x,y`, `c x,y x,y x,y` lines (integers: FreeType rounds to font
+/// units).
+fn freetype_outlines(text: &str) -> Vec<(u32, f32, IntSegments)> {
     let mut out = vec![];
     for block in text.split("\n-\n") {
         let mut lines = block.lines();
         let Some(head) = lines.next() else { continue };
         let Some(id) = head.strip_prefix("glyph ") else { continue };
         let gid: u32 = id.split_whitespace().next().unwrap().parse().unwrap();
+        let mut coord = 0.0f32;
         let mut segs = vec![];
         let mut cur = (0, 0);
         for l in lines {
             let mut parts = l.split_whitespace();
             let op = parts.next().unwrap();
+            if op == "coords" {
+                coord = parts.next().unwrap().parse().unwrap();
+                continue;
+            }
             if !matches!(op, "m" | "l" | "c") {
                 continue;
             }
@@ -322,42 +320,73 @@ fn freetype_outlines(text: &str) -> Vec<(u32, IntSegments)> {
                     (x.parse().unwrap(), y.parse().unwrap())
                 })
                 .collect();
-            match op {
-                "m" => cur = pts[0],
-                "l" | "c" => {
-                    let mut s = vec![cur];
-                    s.extend(&pts);
-                    cur = *pts.last().unwrap();
-                    segs.push(s);
-                }
-                _ => {}
+            if op == "m" {
+                cur = pts[0];
+            } else {
+                let mut s = vec![cur];
+                s.extend(&pts);
+                cur = *pts.last().unwrap();
+                segs.push(s);
             }
         }
-        out.push((gid, segs));
+        out.push((gid, coord, segs));
     }
     out
 }
 
 #[test]
-fn font_cff2_default_instance_matches_freetype() {
+fn font_cff2_instances_match_freetype() {
     let d = data("cantarell_vf_trimmed.ttf");
-    let f = Font::open(&d, 0).unwrap();
+    let mut f = Font::open(&d, 0).unwrap();
     assert!(f.is_cff());
-    let expected = freetype_outlines(&String::from_utf8(data("cantarell_vf_trimmed-freetype-default.txt")).unwrap());
-    assert_eq!(expected.len(), 6);
-    for (gid, segs) in expected {
-        let ours: Vec<Vec<(i64, i64)>> = f
+    assert_eq!(f.axes().len(), 1);
+    let expected = freetype_outlines(&String::from_utf8(data("cantarell_vf_trimmed-freetype.txt")).unwrap());
+    assert_eq!(expected.len(), 30); // 6 glyphs at 5 instances
+    let mut fractional = 0;
+    for (gid, coord, segs) in expected {
+        let raw = (coord as f64 * 16384.0).round() as i16;
+        f.set_normalized(vec![read_fonts::types::F2Dot14::from_bits(raw)]).unwrap();
+        let ours: Vec<Vec<Point<BigRational>>> = f
             .outline(gid)
             .unwrap()
-            .iter()
-            .flat_map(|c| c.segments.iter())
+            .into_iter()
+            .flat_map(|c| c.segments)
             .map(|s| match s {
-                Segment::Bezier(ps) => ps.iter().map(int_point).collect(),
+                Segment::Bezier(ps) => ps,
                 Segment::Skipped { .. } => unreachable!(),
             })
             .collect();
-        assert_eq!(ours, segs, "glyph {gid}");
+        // the default instance is integral and equal; at other instances the 16.16 blend gives
+        // fractions, which FreeType's unscaled outline turns into integers by its own rounding
+        // (neither floor nor nearest throughout): within one unit of the exact value, per
+        // coordinate — an instance blended wrongly would be off by tens of units
+        let flat: Vec<&Point<BigRational>> = ours.iter().flatten().collect();
+        let theirs: Vec<&(i64, i64)> = segs.iter().flatten().collect();
+        assert_eq!(ours.iter().map(Vec::len).collect::<Vec<_>>(), segs.iter().map(Vec::len).collect::<Vec<_>>());
+        for (p, q) in flat.iter().zip(&theirs) {
+            for (x, y) in p.coords.iter().zip([q.0, q.1]) {
+                fractional += usize::from(!x.is_integer());
+                let diff = x - BigRational::from_integer(y.into());
+                assert!(
+                    diff < BigRational::from_integer(1.into()) && diff > BigRational::from_integer((-1).into()),
+                    "glyph {gid} at {coord}: {x} vs {y}"
+                );
+            }
+        }
+        if coord == 0.0 {
+            assert!(ours.iter().flatten().all(|p| p.coords.iter().all(|x| x.is_integer())));
+        }
     }
+    assert!(fractional > 0, "the instances should exercise fractional 16.16 coordinates");
+    // user coordinates: the axis range is clamped, unknown axes and glyf fonts refused
+    let (tag, min, _, max) = f.axes()[0].clone();
+    f.set_variation(&[(tag.clone(), max + 100.0)]).unwrap();
+    assert_eq!(f.normalized()[0].to_f32(), 1.0);
+    f.set_variation(&[(tag, min)]).unwrap();
+    assert_eq!(f.normalized()[0].to_f32(), -1.0);
+    assert!(f.set_variation(&[("zzzz".into(), 1.0)]).is_err());
+    let tuffy = data("Tuffy.ttf");
+    assert!(Font::open(&tuffy, 0).unwrap().set_variation(&[("wght".into(), 700.0)]).is_err());
 }
 
 #[test]

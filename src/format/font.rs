@@ -13,9 +13,15 @@
 //!   16.16 fixed-point arithmetic, and each coordinate it emits is taken as the exact rational
 //!   `bits/65536`. Cubic segments and lines.
 //!
-//! Only the default instance of a variable font is read: applying `gvar`/CFF2 blend deltas means
-//! rounding the interpolation scalars (the font crates do it in `f32`/16.16), so instances are
-//! not offered. Font pens that hand out `f32` are not used at all.
+//! Variable fonts: the default instance, or an instance of a **CFF2** font
+//! ([`Font::set_variation`], `--variation wght=700`): user coordinates are normalized by the
+//! OpenType rules (`fvar`, `avar`) into `F2Dot14` and the charstring's `blend` operators are
+//! evaluated in 16.16 by `read-fonts`, so the instance's coordinates are exactly the 16.16 values
+//! of the format's own arithmetic, not the real-number interpolation, whose scalars the format
+//! rounds (the tests compare with FreeType's unscaled instances, which FreeType rounds to integer
+//! font units: within one unit everywhere, equal at the default instance). Instances of `glyf` fonts
+//! (`gvar` deltas with their interpolation of untouched points) are refused: no crate applies them
+//! without `f32`. Font pens that hand out `f32` are not used at all.
 //!
 //! Every contour is closed: its closing line is listed when it has non-zero length.
 //!
@@ -37,7 +43,7 @@ use num_rational::BigRational;
 use read_fonts::tables::glyf::{Anchor, CompositeGlyphFlags, Glyf, Glyph};
 use read_fonts::tables::loca::Loca;
 use read_fonts::tables::post::Post;
-use read_fonts::types::{GlyphId, GlyphId16, Tag};
+use read_fonts::types::{F2Dot14, Fixed, GlyphId, GlyphId16, Tag};
 use read_fonts::{FileRef, FontRef, TableProvider};
 
 /// Deepest nesting of composite glyphs followed (the OpenType `maxp.maxComponentDepth` is
@@ -75,6 +81,8 @@ pub struct Font<'a> {
     outlines: Outlines<'a>,
     num_glyphs: u32,
     post: Option<Post<'a>>,
+    /// Normalized variation coordinates (empty: the default instance).
+    coords: Vec<F2Dot14>,
 }
 
 impl<'a> Font<'a> {
@@ -99,7 +107,71 @@ impl<'a> Font<'a> {
             Outlines::Cff(cff)
         };
         let post = font.post().ok();
-        Ok(Font { font, outlines, num_glyphs, post })
+        Ok(Font { font, outlines, num_glyphs, post, coords: vec![] })
+    }
+
+    /// The variation axes: `(tag, min, default, max)` in user units (`fvar`); empty for a font
+    /// that is not variable.
+    pub fn axes(&self) -> Vec<(String, f64, f64, f64)> {
+        let Ok(fvar) = self.font.fvar() else { return vec![] };
+        fvar.axes()
+            .unwrap_or_default()
+            .iter()
+            .map(|a| {
+                (a.axis_tag().to_string(), a.min_value().to_f64(), a.default_value().to_f64(), a.max_value().to_f64())
+            })
+            .collect()
+    }
+
+    /// Selects an instance by user coordinates (`[("wght", 700.0)]`; axes not named stay at their
+    /// default; values are clamped to the axis range and taken in 16.16, as the format does).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for an unknown axis, a font without variations, or a `glyf`
+    /// font (see the module documentation).
+    pub fn set_variation(&mut self, settings: &[(String, f64)]) -> Result<()> {
+        let axes = self.axes();
+        if axes.is_empty() {
+            return Err(fail("the font has no variation axes (no fvar table)".into()));
+        }
+        for (tag, _) in settings {
+            if !axes.iter().any(|a| &a.0 == tag) {
+                let names: Vec<&str> = axes.iter().map(|a| a.0.as_str()).collect();
+                return Err(fail(format!("no axis {tag:?} (axes: {})", names.join(", "))));
+            }
+        }
+        if !self.is_cff() {
+            return Err(fail(
+                "instances of glyf fonts are not offered: applying gvar deltas (with the interpolation of \
+                 untouched points) is done in f32 by every font crate, so the coordinates would not be exact"
+                    .into(),
+            ));
+        }
+        let fvar = self.font.fvar().map_err(|e| fail(format!("fvar: {e}")))?;
+        let avar = self.font.avar().ok();
+        let mut coords = vec![F2Dot14::ZERO; axes.len()];
+        let user =
+            settings.iter().map(|(t, v)| (Tag::new_checked(t.as_bytes()).unwrap_or_default(), Fixed::from_f64(*v)));
+        fvar.user_to_normalized(avar.as_ref(), user, &mut coords);
+        self.coords = coords;
+        Ok(())
+    }
+
+    /// Selects an instance by normalized coordinates (one `F2Dot14` per axis, in `fvar` order).
+    ///
+    /// # Errors
+    /// As [`Self::set_variation`].
+    pub fn set_normalized(&mut self, coords: Vec<F2Dot14>) -> Result<()> {
+        if !self.is_cff() && coords.iter().any(|c| *c != F2Dot14::ZERO) {
+            return Err(fail("instances of glyf fonts are not offered (see Font::set_variation)".into()));
+        }
+        self.coords = coords;
+        Ok(())
+    }
+
+    /// The normalized coordinates of the selected instance (empty for the default one).
+    pub fn normalized(&self) -> &[F2Dot14] {
+        &self.coords
     }
 
     /// The number of glyphs (`maxp`).
@@ -143,9 +215,9 @@ impl<'a> Font<'a> {
             }
             Outlines::Cff(cff) => {
                 let fd = cff.subfont_index(GlyphId::new(gid)).unwrap_or(0);
-                let sub = cff.subfont(fd, &[]).map_err(|e| fail(format!("glyph {gid}: CFF: {e}")))?;
+                let sub = cff.subfont(fd, &self.coords).map_err(|e| fail(format!("glyph {gid}: CFF: {e}")))?;
                 let mut sink = CffSink::default();
-                cff.evaluate_charstring(&sub, GlyphId::new(gid), &[], &mut sink)
+                cff.evaluate_charstring(&sub, GlyphId::new(gid), &self.coords, &mut sink)
                     .map_err(|e| fail(format!("glyph {gid}: charstring: {e}")))?;
                 sink.finish_contour();
                 Ok(sink.contours)

@@ -509,9 +509,10 @@ pub struct CurveArgs {
     /// answer whose estimated cost exceeds it is refused (exit 2) before any work starts.
     #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
     pub max_work: f64,
-    /// How the control points' numbers are read: `exact` (0.1 is 1/10) or `binary64` (every
-    /// number is the f64 nearest to it, taken exactly, as your float code holds it: 0.1 is
-    /// 3602879701896397/2^55). Hex floats (0x1.8p-3) are exact binary values in both modes.
+    /// How the numbers of the control points, --weights and --t/--from/--to are read: `exact`
+    /// (0.1 is 1/10) or `binary64` (every number is the f64 nearest to it, taken exactly, as
+    /// your float code holds it: 0.1 is 3602879701896397/2^55). Hex floats (0x1.8p-3) are
+    /// exact binary values in both modes.
     #[arg(long, value_enum, default_value_t = Numbers::Exact)]
     pub numbers: Numbers,
 }
@@ -554,6 +555,11 @@ pub struct ScanArgs {
     /// Threads (0: all cores). Output stays in file order.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
+    /// An instance of a variable CFF2 font, in user coordinates: "wght=700,wdth=80" (other axes
+    /// at their defaults; coordinates are the format's exact 16.16 blend). glyf instances are
+    /// refused (their deltas are applied in f32 by every font crate).
+    #[arg(long)]
+    pub variation: Option<String>,
     /// No summary and no progress on stderr.
     #[arg(long, short)]
     pub quiet: bool,

@@ -7,7 +7,7 @@
 use crate::args::{CurveArgs, RationalArgs};
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::error::{Error, Position, Result};
-use casteljau::num::parse::{parse_number, parse_numbers, parse_points_in};
+use casteljau::num::parse::{NumberMode, parse_number_in, parse_numbers, parse_points_in};
 use casteljau::num::point::Point;
 use casteljau::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
@@ -17,7 +17,29 @@ use std::io::{BufRead, IsTerminal, Write};
 
 /// The numbers of an option such as `--ratios`, errors prefixed with the option's name.
 pub fn numbers(option: &str, text: &str) -> Result<Vec<BigRational>> {
-    parse_numbers(text).map_err(|e| Error::InvalidArgument { message: format!("{option}: {e}") })
+    numbers_in(option, text, NumberMode::Exact)
+}
+
+/// [`numbers`] in a number mode.
+pub fn numbers_in(option: &str, text: &str, mode: NumberMode) -> Result<Vec<BigRational>> {
+    let exact = parse_numbers(text).map_err(|e| Error::InvalidArgument { message: format!("{option}: {e}") })?;
+    match mode {
+        NumberMode::Exact => Ok(exact),
+        // the same tokens again, each read as the f64 it rounds to
+        NumberMode::Binary64 => text
+            .split(|c: char| c.is_whitespace() || c == ',')
+            .filter(|t| !t.is_empty())
+            .enumerate()
+            .map(|(k, t)| option_number_in(option, t, mode).map_err(|e| position_in(e, k + 1)))
+            .collect(),
+    }
+}
+
+fn position_in(e: Error, k: usize) -> Error {
+    match e {
+        Error::InvalidArgument { message } => Error::InvalidArgument { message: format!("{message} (number {k})") },
+        other => other,
+    }
 }
 
 /// The patch of `--degree m,n` from a curve line of `(m+1)(n+1)` points.
@@ -56,13 +78,18 @@ pub fn patch_of(
     casteljau::surface::RationalPatch::new(rows, w.chunks(n + 1).map(|r| r.to_vec()).collect())
 }
 
-/// `--weights`, parsed (`None` without it); an error with `--homogeneous` as well.
+/// `--weights`, parsed exactly (`None` without it); an error with `--homogeneous` as well.
 pub fn parse_weights(args: &RationalArgs) -> Result<Option<Vec<BigRational>>> {
+    parse_weights_in(args, NumberMode::Exact)
+}
+
+/// [`parse_weights`] in a number mode.
+pub fn parse_weights_in(args: &RationalArgs, mode: NumberMode) -> Result<Option<Vec<BigRational>>> {
     if args.homogeneous && args.weights.is_some() {
         return Err(Error::InvalidArgument { message: "give --weights or --homogeneous, not both".into() });
     }
     let Some(w) = &args.weights else { return Ok(None) };
-    numbers("--weights", w).map(Some)
+    numbers_in("--weights", w, mode).map(Some)
 }
 
 /// How a command's control points carry weights.
@@ -134,7 +161,7 @@ pub fn rational_batch(
     out: &mut dyn Write,
     f: impl Fn(&BezierCurve<BigRational>, Weights<'_>) -> Result<Answer> + Sync,
 ) -> i32 {
-    let weights = match parse_weights(rational) {
+    let weights = match parse_weights_in(rational, curve.numbers.into()) {
         Ok(w) => w,
         Err(e) => {
             eprintln!("casteljau: {e}");
@@ -152,8 +179,14 @@ pub fn rational_batch(
     batch(&curve, out, |c| f(c, w))
 }
 
+/// The exact number of an option such as `--t` (errors name the option).
 pub fn option_number(option: &str, s: &str) -> Result<BigRational> {
-    parse_number(s.trim(), Position { line: None, column: 1, token: 1 }).map_err(|e| match e {
+    option_number_in(option, s, NumberMode::Exact)
+}
+
+/// [`option_number`] in a number mode (`--numbers binary64`: the `f64` the token rounds to).
+pub fn option_number_in(option: &str, s: &str, mode: NumberMode) -> Result<BigRational> {
+    parse_number_in(s.trim(), Position { line: None, column: 1, token: 1 }, mode).map_err(|e| match e {
         Error::ParseNumber { token, reason, .. } => {
             Error::InvalidArgument { message: format!("{option}: bad number {token:?}: {reason}") }
         }

@@ -18,7 +18,9 @@ mod scan;
 mod splines;
 
 use args::{Cli, Command};
-use batch::{Answer, MAX_TRIANGLE_DEGREE, Weights, batch, option_number, output_limit, rational_batch, rational_curve};
+use batch::{
+    Answer, MAX_TRIANGLE_DEGREE, Weights, batch, option_number_in, output_limit, rational_batch, rational_curve,
+};
 use casteljau::error::{Error, Result};
 use casteljau::{rat, work};
 use clap::Parser;
@@ -39,7 +41,8 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
     match cli.command {
         Command::Prove(args) => commands::prove(&args, out),
         Command::Eval { t, rational, curve } => {
-            let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number("--t", s)).collect();
+            let mode = curve.numbers.into();
+            let ts: Result<Vec<BigRational>> = t.iter().map(|s| option_number_in("--t", s, mode)).collect();
             let budget = curve.budget();
             rational_batch(&rational, curve, out, move |c, w| {
                 let ts = ts.clone()?;
@@ -53,7 +56,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             })
         }
         Command::Subdivide { t, depth, rational, curve } => {
-            let t0 = option_number("--t", &t);
+            let t0 = option_number_in("--t", &t, curve.numbers.into());
             let budget = curve.budget();
             rational_batch(&rational, curve, out, move |c, w| {
                 let t0 = t0.clone()?;
@@ -91,8 +94,9 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             rational_batch(&rational, curve, out, move |c, w| answers::implicit(&rational_curve(c, w)?, &poly, &budget))
         }
         Command::Defined { from, to, rational, curve } => {
-            let range =
-                option_number("--from", &from).and_then(|a| Ok((a, option_number("--to", &to)?))).and_then(|(a, b)| {
+            let range = option_number_in("--from", &from, curve.numbers.into())
+                .and_then(|a| Ok((a, option_number_in("--to", &to, curve.numbers.into())?)))
+                .and_then(|(a, b)| {
                     if a >= b || a < rat(0) || b > rat(1) {
                         Err(Error::InvalidArgument { message: format!("need 0 <= --from < --to <= 1, got [{a}, {b}]") })
                     } else {
@@ -123,7 +127,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             Ok(answers::power(c).into())
         }),
         Command::Triangle { t, curve } => {
-            let t = option_number("--t", &t);
+            let t = option_number_in("--t", &t, curve.numbers.into());
             batch(&curve, out, |c| {
                 output_limit("triangle of degree", c.degree(), MAX_TRIANGLE_DEGREE)?;
                 let t = t.clone()?;

@@ -117,6 +117,7 @@ enum Unit {
 struct Scanner {
     only: Option<Vec<String>>,
     mode: NumberMode,
+    variation: Option<Vec<(String, f64)>>,
 }
 
 impl Scanner {
@@ -263,7 +264,14 @@ pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
             return 2;
         }
     };
-    let sc = Scanner { only, mode: args.numbers.into() };
+    let variation = match args.variation.as_deref().map(parse_variation).transpose() {
+        Ok(v) => v,
+        Err(e) => {
+            eprintln!("casteljau: --variation: {e}");
+            return 2;
+        }
+    };
+    let sc = Scanner { only, mode: args.numbers.into(), variation };
     let progress = !args.quiet && std::io::stderr().is_terminal();
     let mut code = 0;
     let mut write = |r: &Rendered| -> bool { out.write_all(&r.lines).is_ok() };
@@ -334,7 +342,10 @@ fn scan_font(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each
     let data = std::fs::read(file).map_err(|e| format!("cannot read: {e}"))?;
     let faces = font::font_count(&data).map_err(|e| e.to_string())?;
     for face in 0..faces {
-        let f = font::Font::open(&data, face).map_err(|e| e.to_string())?;
+        let mut f = font::Font::open(&data, face).map_err(|e| e.to_string())?;
+        if let Some(v) = &sc.variation {
+            f.set_variation(v).map_err(|e| format!("--variation: {e}"))?;
+        }
         let n = f.num_glyphs() as usize;
         let gids: Vec<u32> = (0..f.num_glyphs()).collect();
         for chunk in gids.chunks(UNITS_PER_CHUNK) {
@@ -462,4 +473,23 @@ fn summary(args: &ScanArgs, file: &str, t: &Tally) {
         t.skipped,
         t.errors
     );
+}
+
+/// `wght=700,wdth=80` as `(tag, value)` pairs.
+fn parse_variation(text: &str) -> Result<Vec<(String, f64)>, String> {
+    text.split(',')
+        .filter(|s| !s.trim().is_empty())
+        .map(|s| {
+            let (tag, value) = s.split_once('=').ok_or_else(|| format!("{s:?} is not tag=value"))?;
+            let tag = tag.trim();
+            if tag.is_empty() || tag.len() > 4 || !tag.is_ascii() {
+                return Err(format!("{tag:?} is not an axis tag (1 to 4 ASCII characters)"));
+            }
+            let v: f64 = value.trim().parse().map_err(|_| format!("{value:?} is not a number"))?;
+            if !v.is_finite() {
+                return Err(format!("{value:?} is not finite"));
+            }
+            Ok((tag.to_string(), v))
+        })
+        .collect()
 }
