@@ -1,9 +1,10 @@
 //! Univariate polynomials: the Bernstein basis and its conversions to and from the power form,
 //! exact polynomial arithmetic (trim, division, gcd, square-free part, quadratic roots), and
-//! exact real root isolation.
+//! exact real root isolation, and exact real algebraic numbers ([`algebraic::RealAlgebraic`]).
 //!
 //! Depends only on [`crate::num`].
 
+pub mod algebraic;
 pub mod bernstein;
 pub mod polynomial;
 pub mod roots;

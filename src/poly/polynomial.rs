@@ -252,6 +252,11 @@ fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
 
 /// Exact quotient `a / b` of integer polynomials when `b` divides `a` in `Z[x]` (as the
 /// primitive parts of `p` and of a divisor of `p` do, by Gauss's lemma).
+/// `a / b` for integer polynomials when `b` divides `a` exactly (lowest degree first).
+pub fn exact_quotient_integer(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
+    exact_quotient(a, b)
+}
+
 fn exact_quotient(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
     let lb = b.last().expect("non-zero divisor");
     let mut a = a;

@@ -337,6 +337,40 @@ pub(crate) fn elevate_rational(c: &RationalBezier<BigRational>, by: usize) -> Re
     Ok((weighted_text(&e), weighted_json(&e)))
 }
 
+/// `bbox`: the exact box and stationary points ([`casteljau::rational::extrema::BoundingBox`]).
+pub(crate) fn bbox(c: &RationalBezier<BigRational>) -> Result<(String, Value)> {
+    let b = casteljau::rational::extrema::bounding_box(c)?;
+    let names = ["x", "y", "z"];
+    let name = |k: usize| names.get(k).map(|s| s.to_string()).unwrap_or(format!("x{k}"));
+    let mut lines: Vec<String> = (0..b.min.len())
+        .map(|k| {
+            format!(
+                "{} in [{}, {}] (≈ [{}, {}]), least at t = {}, greatest at t = {}",
+                name(k),
+                b.min[k],
+                b.max[k],
+                b.min_float[k],
+                b.max_float[k],
+                b.min_at[k],
+                b.max_at[k]
+            )
+        })
+        .collect();
+    for s in &b.stationary {
+        lines.push(format!(
+            "{}'(t) = 0 at t = {} (≈ {}): {} = {} (≈ {})",
+            name(s.axis),
+            s.t,
+            s.t_float,
+            name(s.axis),
+            s.value,
+            s.value_float
+        ));
+    }
+    let value = serde_json::to_value(&b).expect("exact strings and finite floats serialize");
+    Ok((lines.join("\n"), value))
+}
+
 pub(crate) fn conic(c: &RationalBezier<BigRational>) -> Result<(String, Value)> {
     let (kind, shape) = c.conic_type()?;
     let text = match &shape {

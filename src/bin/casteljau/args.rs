@@ -156,6 +156,16 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// The exact bounding box on [0,1] and the stationary points of each coordinate (roots of
+    /// x'(t), y'(t); rational curves too), as exact algebraic numbers.
+    Bbox {
+        /// Rational curves.
+        #[command(flatten)]
+        rational: RationalArgs,
+        /// The curve(s) and output form.
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
     /// The conic of a rational quadratic: ellipse, parabola, hyperbola (from w1² − w0·w2).
     Conic {
         /// Rational curves.

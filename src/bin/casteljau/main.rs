@@ -115,6 +115,9 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Spline { op } => splines::run(op, out),
         Command::Scan(args) => scan::run(&args, out),
         Command::Check(args) => check::run(&args, out),
+        Command::Bbox { rational, curve } => {
+            rational_batch(&rational, curve, out, move |c, w| answers::bbox(&rational_curve(c, w)?).map(Answer::from))
+        }
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
         }

@@ -1,0 +1,747 @@
+//! Exact real algebraic numbers: a square-free primitive integer polynomial and an open
+//! interval with rational ends holding exactly one of its roots — or the rational number
+//! itself. Comparison and sign are exact (intervals are refined until they separate, and
+//! equality is decided by a gcd); `to_f64` is correctly rounded; `Display` writes a rational as
+//! a rational, a root of a quadratic polynomial as `a + b*sqrt(d)`, anything else as
+//! `root k of <poly> in [lo, hi]` (the `k`-th real root, ascending). The polynomial is the
+//! square-free part of the one the number came from, not factored further: a number whose
+//! polynomial is reducible (√2 as a root of `t⁴ − 4`) keeps the general spelling.
+//!
+//! # Invariants
+//! A `Root` is irrational (rational roots are detected when the number is made: a rational root
+//! `p/q` of an integer polynomial has `q | lc`, so once the interval is narrower than `1/lc²` the
+//! simplest rational inside is the only candidate), its polynomial is square-free, primitive,
+//! with a positive leading coefficient, and does not vanish at either end, where it takes
+//! opposite signs.
+//!
+//! # Termination
+//! Refinement bisects; the sign at the midpoint picks the half with the root. Comparing two
+//! distinct numbers refines until the intervals separate (they do: the numbers differ); equal
+//! numbers are recognised by the gcd of the polynomials having a root in the common interval,
+//! so no refinement loop is unbounded. `to_f64` refines until both ends round to the same `f64`,
+//! which happens because an irrational number is never a rounding boundary.
+//!
+//! # Example
+//! ```
+//! use casteljau::poly::algebraic::RealAlgebraic;
+//! use casteljau::{rat, ratio};
+//! // t² − 2: √2 and −√2; t³ − 2: ∛2
+//! let r = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)]);
+//! assert_eq!(r.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["-sqrt(2)", "sqrt(2)"]);
+//! let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
+//! assert_eq!(c[0].to_string(), "root 1 of t^3 - 2 in [1, 3/2]");
+//! assert_eq!(c[0].to_f64(), 2f64.cbrt());
+//! assert!(c[0] < r[1] && r[0] < RealAlgebraic::from(ratio(-1, 1)));
+//! // (2t − 1)(t² − 3): the rational root is a rational
+//! let m = RealAlgebraic::real_roots(&[rat(3), rat(-6), rat(-1), rat(2)]);
+//! assert_eq!(m[1].to_string(), "1/2");
+//! ```
+
+use crate::num::quadratic_field::QuadraticExt;
+use crate::num::scalar::{Exact, rat, ratio_to_f64};
+use crate::poly::bernstein::power_to_bernstein_matrix;
+use crate::poly::polynomial::{gcd_integer, primitive_part, quadratic_roots, square_free_integer, to_integer};
+use crate::poly::roots::{Root, isolate_bernstein};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+
+/// An exact real algebraic number (see the module documentation).
+#[derive(Clone, Debug)]
+pub struct RealAlgebraic(Repr);
+
+#[derive(Clone, Debug)]
+enum Repr {
+    Rational(BigRational),
+    Root { poly: Vec<BigInt>, lo: BigRational, hi: BigRational },
+}
+
+impl From<BigRational> for RealAlgebraic {
+    fn from(r: BigRational) -> Self {
+        RealAlgebraic(Repr::Rational(r))
+    }
+}
+
+/// The sign of `p(r)` for an integer polynomial (lowest degree first): the sign of
+/// `Σ c_i a^i b^(n−i)` for `r = a/b`, `b > 0`.
+pub fn sign_at(p: &[BigInt], r: &BigRational) -> Ordering {
+    if p.is_empty() {
+        return Ordering::Equal;
+    }
+    let (a, b) = (r.numer(), r.denom());
+    // Horner in homogeneous form: acc = acc·a + c_i·b^(n−i)
+    let n = p.len() - 1;
+    let mut acc = p[n].clone();
+    let mut bpow = BigInt::one();
+    for i in (0..n).rev() {
+        bpow *= b;
+        acc = acc * a + &p[i] * &bpow;
+    }
+    acc.sign().into_ordering()
+}
+
+trait IntoOrdering {
+    fn into_ordering(self) -> Ordering;
+}
+
+impl IntoOrdering for num_bigint::Sign {
+    fn into_ordering(self) -> Ordering {
+        match self {
+            num_bigint::Sign::Minus => Ordering::Less,
+            num_bigint::Sign::NoSign => Ordering::Equal,
+            num_bigint::Sign::Plus => Ordering::Greater,
+        }
+    }
+}
+
+/// The power-form coefficients of `p(lo + (hi − lo)·s)`.
+fn shifted(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<BigRational> {
+    let w = hi.clone() - lo;
+    let mut acc: Vec<BigRational> = vec![];
+    for c in p.iter().rev() {
+        // acc ← acc·(lo + w s) + c
+        let mut next = vec![rat(0); acc.len() + 1];
+        for (k, a) in acc.iter().enumerate() {
+            next[k] += a * lo;
+            next[k + 1] += a * &w;
+        }
+        next[0] += c;
+        acc = next;
+    }
+    acc
+}
+
+/// The distinct real roots of `p` (power form) in the closed interval `[lo, hi]`, ascending, as
+/// exact rationals or isolating open intervals of the square-free part.
+fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Root> {
+    let q = shifted(p, lo, hi);
+    let n = q.len() - 1;
+    let m = power_to_bernstein_matrix(n);
+    let b: Vec<BigRational> = (0..=n).map(|i| (0..=n).fold(rat(0), |acc, k| acc + &m[i][k] * &q[k])).collect();
+    let map = |s: BigRational| lo.clone() + (hi.clone() - lo) * s;
+    isolate_bernstein(&b)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|r| match r {
+            Root::Exact(s) => Root::Exact(map(s)),
+            Root::Isolated(a, b) => Root::Isolated(map(a), map(b)),
+        })
+        .collect()
+}
+
+/// `1 + max |c_i / c_n|`: every real root lies strictly inside `(−B, B)` (Cauchy).
+fn cauchy_bound(p: &[BigRational]) -> BigRational {
+    let lc = p.last().expect("non-zero polynomial").abs();
+    let m = p[..p.len() - 1].iter().map(|c| c.abs() / &lc).max().unwrap_or_else(|| rat(0));
+    (m + rat(1)).ceil() + rat(1)
+}
+
+/// The simplest rational (smallest denominator, then numerator) in the closed interval
+/// `[lo, hi]`, by continued fractions (Stern–Brocot).
+pub fn simplest_rational(lo: &BigRational, hi: &BigRational) -> BigRational {
+    debug_assert!(lo <= hi);
+    if lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less {
+        return rat(0);
+    }
+    if hi.sign() == Ordering::Less {
+        return -simplest_rational(&-hi.clone(), &-lo.clone());
+    }
+    // 0 < lo ≤ hi: integer parts until an integer fits, then fold back (iteratively)
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
+    let mut parts: Vec<BigRational> = vec![];
+    loop {
+        let c = lo.ceil();
+        if c <= hi {
+            let mut x = c;
+            for f in parts.into_iter().rev() {
+                x = f + x.recip();
+            }
+            return x;
+        }
+        let f = lo.floor();
+        let (l2, h2) = ((hi.clone() - &f).recip(), (lo.clone() - &f).recip());
+        parts.push(f);
+        lo = l2;
+        hi = h2;
+    }
+}
+
+impl RealAlgebraic {
+    /// The distinct real roots of `p` (power form, lowest degree first), ascending; empty for a
+    /// non-zero constant.
+    ///
+    /// # Panics
+    /// **Panics for the zero polynomial** (every number is a root).
+    pub fn real_roots(p: &[BigRational]) -> Vec<RealAlgebraic> {
+        let p = crate::poly::polynomial::trim(p.to_vec());
+        assert!(!p.is_empty(), "the zero polynomial has every number as a root");
+        if p.len() == 1 {
+            return vec![];
+        }
+        let b = cauchy_bound(&p);
+        Self::roots_in(&p, &-b.clone(), &b)
+    }
+
+    /// The distinct real roots of `p` in the closed interval `[lo, hi]`, ascending.
+    ///
+    /// # Panics
+    /// **Panics for the zero polynomial** or `lo > hi`.
+    pub fn roots_in(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<RealAlgebraic> {
+        let p = crate::poly::polynomial::trim(p.to_vec());
+        assert!(!p.is_empty(), "the zero polynomial has every number as a root");
+        assert!(lo <= hi, "empty interval [{lo}, {hi}]");
+        if lo == hi {
+            let ip = primitive_part(to_integer(&p));
+            return if sign_at(&ip, lo) == Ordering::Equal { vec![lo.clone().into()] } else { vec![] };
+        }
+        let sf = square_free_integer(primitive_part(to_integer(&p)));
+        isolate_power(&p, lo, hi)
+            .into_iter()
+            .map(|r| match r {
+                Root::Exact(x) => x.into(),
+                Root::Isolated(a, b) => Self::from_isolated(sf.clone(), a, b),
+            })
+            .collect()
+    }
+
+    /// The root of `poly` (square-free, primitive) in `(lo, hi)`, where it changes sign; made
+    /// rational when it is.
+    fn from_isolated(poly: Vec<BigInt>, mut lo: BigRational, mut hi: BigRational) -> Self {
+        // an end may be another root of the polynomial (found exactly at a split point): move it
+        // inward. p has exactly one root r in (lo, hi), all roots simple, so just inside a root
+        // end p has the sign of p′ there (right of lo) or of −p′ (left of hi); bisecting with
+        // those signs keeps r and ends with two ends where p ≠ 0.
+        let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
+        loop {
+            let s_lo = match sign_at(&poly, &lo) {
+                Ordering::Equal => sign_at(&dp, &lo),
+                s => s,
+            };
+            if sign_at(&poly, &lo) != Ordering::Equal && sign_at(&poly, &hi) != Ordering::Equal {
+                break;
+            }
+            let mid = (lo.clone() + &hi) / rat(2);
+            let s_mid = sign_at(&poly, &mid);
+            if s_mid == Ordering::Equal {
+                return mid.into();
+            }
+            if s_mid == s_lo {
+                lo = mid;
+            } else {
+                // s_mid is the sign just inside hi: the root is in (lo, mid)
+                hi = mid;
+            }
+        }
+        let mut x = RealAlgebraic(Repr::Root { poly, lo, hi });
+        x.detect_rational();
+        x
+    }
+
+    fn detect_rational(&mut self) {
+        let Repr::Root { poly, .. } = &self.0 else { return };
+        if poly.len() == 2 {
+            let r = BigRational::new(-poly[0].clone(), poly[1].clone());
+            self.0 = Repr::Rational(r);
+            return;
+        }
+        let lc = poly.last().expect("non-constant").abs();
+        let bound = BigRational::from_integer(&lc * &lc).recip();
+        self.refine(&bound);
+        let Repr::Root { poly, lo, hi } = &self.0 else { return };
+        let c = simplest_rational(lo, hi);
+        if c.denom() <= &lc && sign_at(poly, &c) == Ordering::Equal {
+            self.0 = Repr::Rational(c);
+        }
+    }
+
+    /// The number when it is rational.
+    pub fn to_rational(&self) -> Option<&BigRational> {
+        match &self.0 {
+            Repr::Rational(r) => Some(r),
+            Repr::Root { .. } => None,
+        }
+    }
+
+    /// An interval `[lo, hi]` holding the number (`lo = hi` when rational).
+    pub fn interval(&self) -> (BigRational, BigRational) {
+        match &self.0 {
+            Repr::Rational(r) => (r.clone(), r.clone()),
+            Repr::Root { lo, hi, .. } => (lo.clone(), hi.clone()),
+        }
+    }
+
+    /// The polynomial the number is a root of (square-free, primitive; degree 1 for a rational).
+    pub fn polynomial(&self) -> Vec<BigInt> {
+        match &self.0 {
+            Repr::Rational(r) => vec![-r.numer().clone(), r.denom().clone()],
+            Repr::Root { poly, .. } => poly.clone(),
+        }
+    }
+
+    /// Halves the interval once (it may become the rational midpoint itself).
+    pub fn bisect(&mut self) {
+        let Repr::Root { poly, lo, hi } = &mut self.0 else { return };
+        let mid = (lo.clone() + &*hi) / rat(2);
+        let s = sign_at(poly, &mid);
+        if s == Ordering::Equal {
+            self.0 = Repr::Rational(mid);
+        } else if s == sign_at(poly, lo) {
+            *lo = mid;
+        } else {
+            *hi = mid;
+        }
+    }
+
+    /// Narrows the interval below `width` (`width > 0`).
+    pub fn refine(&mut self, width: &BigRational) {
+        while let Repr::Root { lo, hi, .. } = &self.0 {
+            if hi.clone() - lo < *width {
+                return;
+            }
+            self.bisect();
+        }
+    }
+
+    /// Puts `r` outside the open interval, or finds that the number is `r`: the number
+    /// compared with the rational `r`, exactly.
+    fn cmp_rational(&mut self, r: &BigRational) -> Ordering {
+        match &self.0 {
+            Repr::Rational(x) => x.cmp(r),
+            Repr::Root { poly, lo, hi } => {
+                if r <= lo {
+                    return Ordering::Greater;
+                }
+                if r >= hi {
+                    return Ordering::Less;
+                }
+                let s = sign_at(poly, r);
+                if s == Ordering::Equal {
+                    // r is the root itself: impossible for an irrational number, kept for safety
+                    self.0 = Repr::Rational(r.clone());
+                    return Ordering::Equal;
+                }
+                let below = s != sign_at(poly, lo); // the root lies in (lo, r)
+                let (poly, lo, hi) = (poly.clone(), lo.clone(), hi.clone());
+                if below {
+                    self.0 = Repr::Root { poly, lo, hi: r.clone() };
+                    Ordering::Less
+                } else {
+                    self.0 = Repr::Root { poly, lo: r.clone(), hi };
+                    Ordering::Greater
+                }
+            }
+        }
+    }
+
+    /// The sign, exactly.
+    pub fn sign(&self) -> Ordering {
+        self.clone().cmp_rational(&rat(0))
+    }
+
+    /// The nearest `f64` (ties to even), correctly rounded.
+    pub fn to_f64(&self) -> f64 {
+        let mut x = self.clone();
+        loop {
+            match &x.0 {
+                Repr::Rational(r) => return ratio_to_f64(r),
+                Repr::Root { lo, hi, .. } => {
+                    let (a, b) = (ratio_to_f64(lo), ratio_to_f64(hi));
+                    if a == b {
+                        return a;
+                    }
+                }
+            }
+            x.bisect();
+        }
+    }
+
+    /// The `k`-th (1-based) real root of the number's polynomial, ascending.
+    fn root_index(&self) -> usize {
+        let Repr::Root { poly, lo, .. } = &self.0 else { return 1 };
+        let p: Vec<BigRational> = poly.iter().map(|c| BigRational::from_integer(c.clone())).collect();
+        let b = cauchy_bound(&p);
+        // roots below lo (lo is not a root), plus this one
+        Self::roots_in(&p, &-b, lo).len() + 1
+    }
+}
+
+/// Polynomials in `v` with integer coefficients (lowest degree first), for resultants.
+mod zv {
+    use num_bigint::BigInt;
+    use num_traits::Zero;
+
+    pub type P = Vec<BigInt>;
+
+    pub fn trim(mut p: P) -> P {
+        while p.last().is_some_and(Zero::is_zero) {
+            p.pop();
+        }
+        p
+    }
+
+    pub fn mul(a: &P, b: &P) -> P {
+        if a.is_empty() || b.is_empty() {
+            return vec![];
+        }
+        let mut out = vec![BigInt::zero(); a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate() {
+            if x.is_zero() {
+                continue;
+            }
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] += x * y;
+            }
+        }
+        trim(out)
+    }
+
+    pub fn sub(a: &P, b: &P) -> P {
+        let mut out = vec![BigInt::zero(); a.len().max(b.len())];
+        for (i, x) in a.iter().enumerate() {
+            out[i] += x;
+        }
+        for (i, y) in b.iter().enumerate() {
+            out[i] -= y;
+        }
+        trim(out)
+    }
+
+    /// `a / b` when `b` divides `a` exactly over `Z[v]`.
+    pub fn div_exact(a: &P, b: &P) -> P {
+        let mut r = a.clone();
+        if r.is_empty() {
+            return vec![];
+        }
+        let db = b.len() - 1;
+        let lb = &b[db];
+        let mut q = vec![BigInt::zero(); r.len().saturating_sub(db).max(1)];
+        while r.len() > db {
+            let k = r.len() - 1 - db;
+            let c = &r[r.len() - 1] / lb;
+            for (i, y) in b.iter().enumerate() {
+                let t = &c * y;
+                r[k + i] -= t;
+            }
+            q[k] = c;
+            // the top coefficient is zero when the division is exact; drop it either way
+            r.pop();
+            r = trim(r);
+        }
+        debug_assert!(r.is_empty(), "inexact division in Z[v]");
+        trim(q)
+    }
+
+    /// The determinant of a square matrix over `Z[v]` (Bareiss: every division is exact).
+    pub fn det(mut m: Vec<Vec<P>>) -> P {
+        let n = m.len();
+        let mut negate = false;
+        let mut prev: P = vec![BigInt::from(1)];
+        for k in 0..n {
+            if m[k][k].is_empty() {
+                let Some(i) = (k + 1..n).find(|&i| !m[i][k].is_empty()) else { return vec![] };
+                m.swap(k, i);
+                negate = !negate;
+            }
+            if k + 1 == n {
+                break;
+            }
+            for i in k + 1..n {
+                for j in k + 1..n {
+                    let t = sub(&mul(&m[k][k], &m[i][j]), &mul(&m[i][k], &m[k][j]));
+                    m[i][j] = div_exact(&t, &prev);
+                }
+            }
+            prev = m[k][k].clone();
+        }
+        let d = m[n - 1][n - 1].clone();
+        if negate { d.into_iter().map(|x| -x).collect() } else { d }
+    }
+}
+
+/// `Res_t(p(t), q(t))` where `q`'s coefficients are polynomials in `v` (Sylvester matrix).
+fn resultant_in_v(p: &[BigInt], q: &[zv::P]) -> zv::P {
+    let (m, n) = (p.len() - 1, q.len() - 1);
+    let size = m + n;
+    let mut rows: Vec<Vec<zv::P>> = vec![];
+    for r in 0..n {
+        let mut row = vec![vec![]; size];
+        for (i, c) in p.iter().rev().enumerate() {
+            row[r + i] = zv::trim(vec![c.clone()]);
+        }
+        rows.push(row);
+    }
+    for r in 0..m {
+        let mut row = vec![vec![]; size];
+        for (i, c) in q.iter().rev().enumerate() {
+            row[r + i] = c.clone();
+        }
+        rows.push(row);
+    }
+    if size == 0 {
+        return vec![BigInt::one()];
+    }
+    zv::det(rows)
+}
+
+/// Bernstein coefficients of `p` (power form) on `[lo, hi]`.
+fn bernstein_on(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<BigRational> {
+    let q = shifted(p, lo, hi);
+    if q.is_empty() {
+        return vec![rat(0)];
+    }
+    let n = q.len() - 1;
+    let m = power_to_bernstein_matrix(n);
+    (0..=n).map(|i| (0..=n).fold(rat(0), |acc, k| acc + &m[i][k] * &q[k])).collect()
+}
+
+impl RealAlgebraic {
+    /// `num(x) / den(x)` for this number `x`, exactly (power forms, lowest degree first):
+    /// rational when `x` is, otherwise the root of `Res_t(p(t), den(t)·v − num(t))` (`p` the
+    /// number's polynomial) that the Bernstein enclosure of `num/den` over `x`'s interval
+    /// isolates, refining `x` until it does.
+    ///
+    /// # Panics
+    /// **Panics when `den(x) = 0`.**
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{rat, poly::algebraic::RealAlgebraic};
+    /// let s2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone(); // √2
+    /// // (x² + x)/(x + 1) = x; x³ = 2√2
+    /// assert_eq!(s2.map_rational(&[rat(0), rat(1), rat(1)], &[rat(1), rat(1)]), s2);
+    /// assert_eq!(s2.map_rational(&[rat(0), rat(0), rat(0), rat(1)], &[rat(1)]).to_string(), "2*sqrt(2)");
+    /// ```
+    pub fn map_rational(&self, num: &[BigRational], den: &[BigRational]) -> RealAlgebraic {
+        let eval = |p: &[BigRational], x: &BigRational| p.iter().rev().fold(rat(0), |acc, c| acc * x + c);
+        if let Some(x) = self.to_rational() {
+            let d = eval(den, x);
+            assert!(d != rat(0), "the denominator vanishes at {x}");
+            return (eval(num, x) / d).into();
+        }
+        let num = crate::poly::polynomial::trim(num.to_vec());
+        let den = crate::poly::polynomial::trim(den.to_vec());
+        assert!(!den.is_empty(), "zero denominator");
+        // integer numerator and denominator with one common scale
+        let scale = num.iter().chain(&den).fold(BigInt::one(), |acc, c| num_integer::Integer::lcm(&acc, c.denom()));
+        let int = |p: &[BigRational]| -> Vec<BigInt> {
+            p.iter().map(|c| (c * BigRational::from_integer(scale.clone())).to_integer()).collect()
+        };
+        let (n_int, d_int) = (int(&num), int(&den));
+        let mut p = self.polynomial();
+        let r = loop {
+            let len = n_int.len().max(d_int.len());
+            let q: Vec<zv::P> = (0..len)
+                .map(|j| {
+                    let nj = n_int.get(j).cloned().unwrap_or_default();
+                    let dj = d_int.get(j).cloned().unwrap_or_default();
+                    zv::trim(vec![-nj, dj])
+                })
+                .collect();
+            let q = {
+                let mut q = q;
+                while q.last().is_some_and(|c| c.is_empty()) {
+                    q.pop();
+                }
+                q
+            };
+            let r = resultant_in_v(&p, &q);
+            if !r.is_empty() {
+                break r;
+            }
+            // num and den share a root with p (not x: den(x) ≠ 0): divide it out
+            let g = gcd_integer(&p, &gcd_integer(&n_int, &d_int));
+            p = crate::poly::polynomial::exact_quotient_integer(p, &g);
+        };
+        let r: Vec<BigRational> =
+            square_free_integer(primitive_part(r)).into_iter().map(BigRational::from_integer).collect();
+        // both in one degree, so that their Bernstein coefficients pair up
+        let degree = num.len().max(den.len());
+        let pad = |p: &[BigRational]| -> Vec<BigRational> {
+            let mut v = p.to_vec();
+            v.resize(degree, rat(0));
+            v
+        };
+        let (num_d, den_d) = (pad(&num), pad(&den));
+        let mut x = self.clone();
+        loop {
+            let (lo, hi) = x.interval();
+            if let Some(xr) = x.to_rational() {
+                let d = eval(&den, xr);
+                return (eval(&num, xr) / d).into();
+            }
+            let bd = bernstein_on(&den_d, &lo, &hi);
+            let positive = bd.iter().all(|c| c.sign() == Ordering::Greater);
+            let negative = bd.iter().all(|c| c.sign() == Ordering::Less);
+            if positive || negative {
+                let bn = bernstein_on(&num_d, &lo, &hi);
+                let ratios: Vec<BigRational> = bn.iter().zip(&bd).map(|(a, b)| a / b).collect();
+                let e0 = ratios.iter().min().expect("coefficients").clone();
+                let e1 = ratios.iter().max().expect("coefficients").clone();
+                let roots = RealAlgebraic::roots_in(&r, &e0, &e1);
+                if roots.len() == 1 {
+                    return roots.into_iter().next().expect("one root");
+                }
+            }
+            x.bisect();
+        }
+    }
+}
+
+impl PartialEq for RealAlgebraic {
+    fn eq(&self, o: &Self) -> bool {
+        self.cmp(o) == Ordering::Equal
+    }
+}
+
+impl Eq for RealAlgebraic {}
+
+impl PartialOrd for RealAlgebraic {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+impl Ord for RealAlgebraic {
+    /// Exact comparison (see the module's termination note).
+    fn cmp(&self, o: &Self) -> Ordering {
+        let (mut x, mut y) = (self.clone(), o.clone());
+        if let Some(r) = y.to_rational().cloned() {
+            return x.cmp_rational(&r);
+        }
+        if let Some(r) = x.to_rational().cloned() {
+            return y.cmp_rational(&r).reverse();
+        }
+        // both irrational: cut both at the ends of the overlap
+        let ((xl, xh), (yl, yh)) = (x.interval(), y.interval());
+        if xh <= yl {
+            return Ordering::Less;
+        }
+        if yh <= xl {
+            return Ordering::Greater;
+        }
+        let (l, h) = (xl.max(yl), xh.min(yh));
+        for cut in [&l, &h] {
+            let (cx, cy) = (x.cmp_rational(cut), y.cmp_rational(cut));
+            if cx != cy {
+                return if cx == Ordering::Equal { cy.reverse() } else { cx.cmp(&cy) };
+            }
+        }
+        // both in (l, h): equal iff gcd(p, q) has a root there (then it is both numbers)
+        let (p, q) = (x.polynomial(), y.polynomial());
+        let g = gcd_integer(&p, &q);
+        if g.len() > 1 {
+            let (sl, sh) = (sign_at(&g, &l), sign_at(&g, &h));
+            if sl != sh && sl != Ordering::Equal && sh != Ordering::Equal {
+                return Ordering::Equal;
+            }
+        }
+        // distinct: refine both until the intervals separate (open intervals: touching ends
+        // separate them too)
+        loop {
+            x.bisect();
+            y.bisect();
+            if x.to_rational().is_some() || y.to_rational().is_some() {
+                return x.cmp(&y);
+            }
+            let ((xl, xh), (yl, yh)) = (x.interval(), y.interval());
+            if xh <= yl {
+                return Ordering::Less;
+            }
+            if yh <= xl {
+                return Ordering::Greater;
+            }
+        }
+    }
+}
+
+/// `c_n t^n + … + c_0` with integer coefficients.
+fn poly_text(p: &[BigInt]) -> String {
+    let mut s = String::new();
+    for (k, c) in p.iter().enumerate().rev() {
+        if c.is_zero() {
+            continue;
+        }
+        let neg = c.is_negative();
+        let mag = c.abs();
+        s.push_str(match (s.is_empty(), neg) {
+            (true, true) => "-",
+            (true, false) => "",
+            (false, true) => " - ",
+            (false, false) => " + ",
+        });
+        let one = mag.is_one();
+        match k {
+            0 => s.push_str(&mag.to_string()),
+            _ => {
+                if !one {
+                    s.push_str(&format!("{mag}*"));
+                }
+                s.push('t');
+                if k > 1 {
+                    s.push_str(&format!("^{k}"));
+                }
+            }
+        }
+    }
+    s
+}
+
+impl fmt::Display for RealAlgebraic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.0 {
+            Repr::Rational(r) => write!(f, "{r}"),
+            Repr::Root { poly, lo, hi } if poly.len() == 3 => {
+                let c: Vec<BigRational> = poly.iter().map(|c| BigRational::from_integer(c.clone())).collect();
+                let inside = |x: &QuadraticExt<BigRational>| {
+                    (x.clone() - QuadraticExt::from_base(lo.clone())).sign() == Ordering::Greater
+                        && (x.clone() - QuadraticExt::from_base(hi.clone())).sign() == Ordering::Less
+                };
+                match quadratic_roots(&c[0], &c[1], &c[2]).into_iter().map(|(x, _)| x).find(inside) {
+                    Some(x) => write!(f, "{x}"),
+                    None => write!(f, "root {} of {} in [{lo}, {hi}]", self.root_index(), poly_text(poly)),
+                }
+            }
+            Repr::Root { poly, lo, hi } => {
+                write!(f, "root {} of {} in [{lo}, {hi}]", self.root_index(), poly_text(poly))
+            }
+        }
+    }
+}
+
+impl serde::Serialize for RealAlgebraic {
+    /// The exact string of `Display`.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::scalar::ratio;
+
+    #[test]
+    fn simplest_rationals_of_intervals() {
+        assert_eq!(simplest_rational(&ratio(1, 3), &ratio(1, 2)), ratio(1, 2));
+        assert_eq!(simplest_rational(&ratio(3, 10), &ratio(4, 10)), ratio(1, 3));
+        assert_eq!(simplest_rational(&ratio(-7, 10), &ratio(-6, 10)), ratio(-2, 3));
+        assert_eq!(simplest_rational(&ratio(-1, 10), &ratio(6, 10)), rat(0));
+        assert_eq!(simplest_rational(&ratio(31415, 10000), &ratio(31416, 10000)), ratio(333, 106));
+    }
+
+    #[test]
+    fn algebraic_order_and_equality_across_polynomials() {
+        // √2 as a root of t² − 2 and of t⁴ − 4 (another polynomial): equal
+        let a = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
+        let b = RealAlgebraic::real_roots(&[rat(-4), rat(0), rat(0), rat(0), rat(1)])[1].clone();
+        assert_eq!(a, b);
+        // the polynomial is kept as given (square-free, not factored): √2 is spelled as a root of it
+        assert_eq!(b.to_string(), "root 2 of t^4 - 4 in [3/4, 3/2]");
+        let c = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
+        assert!(a < c);
+        assert_eq!(a.sign(), Ordering::Greater);
+        assert_eq!(a.to_f64(), 2f64.sqrt());
+    }
+}
