@@ -39,6 +39,7 @@ pub mod classify;
 pub mod curve;
 pub mod error;
 pub mod format;
+pub mod intersect;
 pub mod num;
 pub mod plot;
 pub mod poly;

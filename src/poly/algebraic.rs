@@ -368,7 +368,7 @@ impl RealAlgebraic {
 }
 
 /// Polynomials in `v` with integer coefficients (lowest degree first), for resultants.
-mod zv {
+pub(crate) mod zv {
     use num_bigint::BigInt;
     use num_traits::Zero;
 
@@ -461,7 +461,7 @@ mod zv {
 }
 
 /// `Res_t(p(t), q(t))` where `q`'s coefficients are polynomials in `v` (Sylvester matrix).
-fn resultant_in_v(p: &[BigInt], q: &[zv::P]) -> zv::P {
+pub(crate) fn resultant_in_v(p: &[BigInt], q: &[zv::P]) -> zv::P {
     let (m, n) = (p.len() - 1, q.len() - 1);
     let size = m + n;
     let mut rows: Vec<Vec<zv::P>> = vec![];
@@ -485,6 +485,32 @@ fn resultant_in_v(p: &[BigInt], q: &[zv::P]) -> zv::P {
     zv::det(rows)
 }
 
+/// `Res_t(f, g)` where both have coefficients in `Z[v]` (lowest degree in `t` first; no
+/// trailing zero coefficients): the Sylvester determinant, by Bareiss.
+pub(crate) fn resultant_zv(f: &[zv::P], g: &[zv::P]) -> zv::P {
+    let (m, n) = (f.len().saturating_sub(1), g.len().saturating_sub(1));
+    let size = m + n;
+    if size == 0 {
+        return vec![BigInt::one()];
+    }
+    let mut rows: Vec<Vec<zv::P>> = vec![];
+    for r in 0..n {
+        let mut row = vec![vec![]; size];
+        for (i, c) in f.iter().rev().enumerate() {
+            row[r + i] = c.clone();
+        }
+        rows.push(row);
+    }
+    for r in 0..m {
+        let mut row = vec![vec![]; size];
+        for (i, c) in g.iter().rev().enumerate() {
+            row[r + i] = c.clone();
+        }
+        rows.push(row);
+    }
+    zv::det(rows)
+}
+
 /// Bernstein coefficients of `p` (power form) on `[lo, hi]`.
 fn bernstein_on(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<BigRational> {
     let q = shifted(p, lo, hi);
@@ -497,6 +523,42 @@ fn bernstein_on(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Bi
 }
 
 impl RealAlgebraic {
+    /// The sign of `q(x)` for this number `x` (`q` in power form), exactly: zero when `q` and
+    /// the number's polynomial share a root in its interval, otherwise the sign on an interval
+    /// refined until `q` has no root in it.
+    pub fn sign_of(&self, q: &[BigRational]) -> Ordering {
+        let q = crate::poly::polynomial::trim(q.to_vec());
+        if q.is_empty() {
+            return Ordering::Equal;
+        }
+        let qi = primitive_part(to_integer(&q));
+        let scale_sign = q.last().expect("non-zero").sign();
+        let adjust = |o: Ordering| if scale_sign == Ordering::Less { o.reverse() } else { o };
+        let mut x = self.clone();
+        if let Some(r) = x.to_rational() {
+            return adjust(sign_at(&qi, r));
+        }
+        let g = gcd_integer(&x.polynomial(), &qi);
+        let (lo, hi) = x.interval();
+        if g.len() > 1 {
+            let (a, b) = (sign_at(&g, &lo), sign_at(&g, &hi));
+            if a != b && a != Ordering::Equal && b != Ordering::Equal {
+                return Ordering::Equal;
+            }
+        }
+        loop {
+            if let Some(r) = x.to_rational() {
+                return adjust(sign_at(&qi, r));
+            }
+            let (lo, hi) = x.interval();
+            let qr: Vec<BigRational> = qi.iter().map(|c| BigRational::from_integer(c.clone())).collect();
+            if Self::roots_in(&qr, &lo, &hi).is_empty() {
+                return adjust(sign_at(&qi, &lo));
+            }
+            x.bisect();
+        }
+    }
+
     /// `num(x) / den(x)` for this number `x`, exactly (power forms, lowest degree first):
     /// rational when `x` is, otherwise the root of `Res_t(p(t), den(t)·v − num(t))` (`p` the
     /// number's polynomial) that the Bernstein enclosure of `num/den` over `x`'s interval

@@ -156,6 +156,10 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// Exact intersections of two curves (or --self: of one curve with itself): parameter pairs
+    /// as exact algebraic numbers, the point, transversal or tangent with the contact order,
+    /// and shared arcs (overlaps).
+    Intersect(IntersectArgs),
     /// The exact bounding box on [0,1] and the stationary points of each coordinate (roots of
     /// x'(t), y'(t); rational curves too), as exact algebraic numbers.
     Bbox {
@@ -601,4 +605,42 @@ pub struct CheckArgs {
     /// No summary on stderr.
     #[arg(long, short)]
     pub quiet: bool,
+}
+
+/// `casteljau intersect`.
+#[derive(Args, Debug)]
+pub struct IntersectArgs {
+    /// The first curve, e.g. "0 0, 1 2, 2 0".
+    #[arg(allow_hyphen_values = true)]
+    pub a: Option<String>,
+    /// The second curve (omit with --self).
+    #[arg(allow_hyphen_values = true)]
+    pub b: Option<String>,
+    /// Self-intersections of one curve (pairs s < t).
+    #[arg(long = "self")]
+    pub self_intersection: bool,
+    /// Every real parameter, not only [0, 1] (`--domain all`).
+    #[arg(long = "all")]
+    pub all: bool,
+    /// Weights of the first curve (a rational curve).
+    #[arg(long, allow_hyphen_values = true)]
+    pub weights_a: Option<String>,
+    /// Weights of the second curve.
+    #[arg(long, allow_hyphen_values = true)]
+    pub weights_b: Option<String>,
+    /// A batch file: one pair "A ; B" per line (one curve with --self); '-' for stdin.
+    #[arg(long, short)]
+    pub input: Option<String>,
+    /// JSON Lines output with exact strings.
+    #[arg(long)]
+    pub json: bool,
+    /// Threads answering a batch (0: all cores).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No progress line on a terminal.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// How numbers are read: `exact` or `binary64` (as for the other commands).
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
 }

@@ -14,6 +14,7 @@ mod args;
 mod batch;
 mod check;
 mod commands;
+mod intersect;
 mod scan;
 mod splines;
 
@@ -115,6 +116,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Spline { op } => splines::run(op, out),
         Command::Scan(args) => scan::run(&args, out),
         Command::Check(args) => check::run(&args, out),
+        Command::Intersect(args) => intersect::run(&args, out),
         Command::Bbox { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::bbox(&rational_curve(c, w)?).map(Answer::from))
         }

@@ -1,0 +1,453 @@
+//! Exact intersections of planar polynomial and rational Bézier curves, and self-intersections.
+//!
+//! Curve–curve: with `A(s) = (X_A, Y_A)/W_A` and `B(t) = (X_B, Y_B)/W_B`, a common point solves
+//! `X_A(s)W_B(t) − X_B(t)W_A(s) = 0`, `Y_A(s)W_B(t) − Y_B(t)W_A(s) = 0`. The resultant in `t`
+//! is a polynomial `R(s)` whose roots contain every intersection's `s`; the resultant in `s`
+//! gives `T(t)` likewise. Each root `σ` of `R` in the domain is paired with each root `τ` of `T`
+//! for which `A(σ) = B(τ)` — decided exactly, coordinate by coordinate, as equalities of real
+//! algebraic numbers — so every pair reported is an intersection and every intersection is
+//! reported, however tangential, at an endpoint, or through a cusp or double point.
+//! `R ≡ 0` means the curves share a component: an **overlap** (see [`intersect`]).
+//!
+//! Self-intersection: `A(s) = A(t)`, `s < t`, from the divided differences
+//! `(X(s)W(t) − X(t)W(s))/(s − t)` and the same for `Y`, paired the same way.
+//!
+//! Contact order: `min(multiplicity of σ in R, multiplicity of τ in T)` — the intersection
+//! multiplicity when neither curve passes through the point twice; `1` is transversal, `≥ 2`
+//! tangent (a line through a cusp counts 2 as well).
+//!
+//! # Example
+//! ```
+//! use casteljau::{BezierCurve, num::parse::parse_points, intersect::{intersect_polynomial, Domain}};
+//! let c = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
+//! // the parabola y = 4t(1 − t)·… touches the line y = 1 at its apex: one tangency of order 2
+//! let r = intersect_polynomial(&c("0 0, 1 2, 2 0"), &c("0 1, 2 1"), Domain::Unit).unwrap();
+//! assert_eq!(r.intersections.len(), 1);
+//! let i = &r.intersections[0];
+//! assert_eq!((i.s.to_string(), i.t.to_string(), i.contact_order), ("1/2".into(), "1/2".into(), 2));
+//! assert_eq!(i.kind.as_str(), "tangent");
+//! ```
+
+use crate::curve::bezier::BezierCurve;
+use crate::error::{Error, Result};
+use crate::num::point::Point;
+use crate::num::scalar::rat;
+use crate::poly::algebraic::{RealAlgebraic, resultant_zv, zv};
+use crate::poly::polynomial::{derivative, trim};
+use crate::rational::RationalBezier;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::One;
+use std::cmp::Ordering;
+
+/// Largest degree of either curve [`intersect`] accepts.
+pub const MAX_INTERSECT_DEGREE: usize = 10;
+
+/// Where parameters are sought.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Domain {
+    /// The closed square `[0, 1]²` (ends included).
+    Unit,
+    /// Every real parameter.
+    All,
+}
+
+/// Transversal or tangent.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// The curves cross with distinct tangents (contact order 1).
+    Transversal,
+    /// Contact order ≥ 2.
+    Tangent,
+}
+
+impl Kind {
+    /// `transversal` or `tangent`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kind::Transversal => "transversal",
+            Kind::Tangent => "tangent",
+        }
+    }
+}
+
+impl serde::Serialize for Kind {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+/// One intersection. JSON: `s`, `t` (exact strings), `s_float`, `t_float`, `point` (exact
+/// strings, absent when irrational), `point_float`, `kind`, `contact_order`.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Intersection {
+    /// The parameter on the first curve.
+    pub s: RealAlgebraic,
+    /// The parameter on the second curve (for a self-intersection, the larger parameter).
+    pub t: RealAlgebraic,
+    /// `s`, correctly rounded.
+    pub s_float: f64,
+    /// `t`, correctly rounded.
+    pub t_float: f64,
+    /// The common point, when its coordinates are rational.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub point: Option<Point<BigRational>>,
+    /// The common point, each coordinate correctly rounded.
+    pub point_float: [f64; 2],
+    /// Transversal or tangent.
+    pub kind: Kind,
+    /// The contact order (see the module documentation).
+    pub contact_order: usize,
+}
+
+/// A shared arc: matching closed parameter intervals. JSON: `s`, `t` as `[lo, hi]` exact strings
+/// (`t` descending when the second curve runs backwards).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Overlap {
+    /// The interval on the first curve.
+    #[serde(serialize_with = "crate::num::serial::strings")]
+    pub s: [BigRational; 2],
+    /// The matching interval on the second curve, `t(s_lo)` then `t(s_hi)`.
+    #[serde(serialize_with = "crate::num::serial::strings")]
+    pub t: [BigRational; 2],
+}
+
+/// Everything two curves share. JSON: `intersections` (sorted by `s`), `overlaps`.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Intersections {
+    /// The isolated common points, sorted by `s`, then `t`.
+    pub intersections: Vec<Intersection>,
+    /// Shared arcs.
+    pub overlaps: Vec<Overlap>,
+}
+
+/// `(X, Y, W)` of a rational curve as integer power forms (one common scale).
+fn integer_forms(c: &RationalBezier<BigRational>) -> [Vec<BigInt>; 3] {
+    let h = c.homogeneous().power_coefficients();
+    let scale =
+        h.iter().flat_map(|p| p.coords.iter()).fold(BigInt::one(), |acc, x| num_integer::Integer::lcm(&acc, x.denom()));
+    let coord = |k: usize| -> Vec<BigInt> {
+        let v: Vec<BigInt> =
+            h.iter().map(|p| (p.coords[k].clone() * BigRational::from_integer(scale.clone())).to_integer()).collect();
+        zv::trim(v)
+    };
+    [coord(0), coord(1), coord(2)]
+}
+
+fn to_rational(p: &[BigInt]) -> Vec<BigRational> {
+    p.iter().map(|c| BigRational::from_integer(c.clone())).collect()
+}
+
+/// `F(s) W_B(t) − G(t) W_A(s)` as a polynomial in `t` with coefficients in `Z[s]`.
+fn cross_system(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> Vec<zv::P> {
+    let len = fb.len().max(wb.len());
+    let mut out: Vec<zv::P> = (0..len)
+        .map(|j| {
+            let w = wb.get(j).cloned().unwrap_or_default();
+            let g = fb.get(j).cloned().unwrap_or_default();
+            // fa·w_j − g_j·wa
+            let a: zv::P = fa.iter().map(|c| c * &w).collect();
+            let b: zv::P = wa.iter().map(|c| c * &g).collect();
+            zv::sub(&zv::trim(a), &zv::trim(b))
+        })
+        .collect();
+    while out.last().is_some_and(|c| c.is_empty()) {
+        out.pop();
+    }
+    out
+}
+
+/// The distinct roots of `r` (integer coefficients) in the domain.
+fn roots(r: &[BigInt], domain: Domain) -> Vec<RealAlgebraic> {
+    let r = to_rational(r);
+    if r.len() <= 1 {
+        return vec![];
+    }
+    match domain {
+        Domain::Unit => RealAlgebraic::roots_in(&r, &rat(0), &rat(1)),
+        Domain::All => RealAlgebraic::real_roots(&r),
+    }
+}
+
+/// The multiplicity of `x` as a root of `r`.
+fn multiplicity(r: &[BigRational], x: &RealAlgebraic) -> usize {
+    let mut p = r.to_vec();
+    let mut k = 0;
+    while !trim(p.clone()).is_empty() && x.sign_of(&p) == Ordering::Equal {
+        k += 1;
+        p = derivative(&p);
+    }
+    k
+}
+
+/// The point `(X/W, Y/W)` at `x`.
+fn point_at(f: &[Vec<BigInt>; 3], x: &RealAlgebraic) -> [RealAlgebraic; 2] {
+    let w = to_rational(&f[2]);
+    [x.map_rational(&to_rational(&f[0]), &w), x.map_rational(&to_rational(&f[1]), &w)]
+}
+
+fn rational_point(p: &[RealAlgebraic; 2]) -> Option<Point<BigRational>> {
+    Some(Point::new(vec![p[0].to_rational()?.clone(), p[1].to_rational()?.clone()]))
+}
+
+/// [`intersect`] of two polynomial curves.
+///
+/// # Errors
+/// As [`intersect`].
+pub fn intersect_polynomial(
+    a: &BezierCurve<BigRational>,
+    b: &BezierCurve<BigRational>,
+    domain: Domain,
+) -> Result<Intersections> {
+    let unit = |c: &BezierCurve<BigRational>| RationalBezier::new(c.points().to_vec(), vec![rat(1); c.points().len()]);
+    intersect(&unit(a)?, &unit(b)?, domain)
+}
+
+fn check(c: &RationalBezier<BigRational>, domain: Domain) -> Result<()> {
+    if c.dim() != 2 {
+        return Err(Error::DimensionMismatch { expected: 2, found: c.dim() });
+    }
+    if c.degree() > MAX_INTERSECT_DEGREE {
+        return Err(Error::TooLarge { what: "degree to intersect", value: c.degree(), limit: MAX_INTERSECT_DEGREE });
+    }
+    if domain == Domain::Unit {
+        c.check_defined(&rat(0), &rat(1))?;
+    }
+    Ok(())
+}
+
+/// Every intersection of two planar curves (polynomial or rational, degree ≤
+/// [`MAX_INTERSECT_DEGREE`]) with parameters in the domain, and their shared arcs.
+///
+/// Overlaps: when the curves share a component, each polynomial curve is reduced to its real
+/// degree and, if one is `A(φ(t))` with a linear `φ(t) = αt + β` (a sub-segment, a reversed or
+/// degree-elevated copy), the shared arcs are `s ∈ [0, 1] ∩ φ([0, 1])` with `t = φ⁻¹(s)`, and
+/// the isolated intersections elsewhere (where the shared curve crosses itself) are added.
+///
+/// # Errors
+/// [`Error::DimensionMismatch`] unless planar; [`Error::TooLarge`] above the degree limit;
+/// [`Error::WeightsVanish`] when a weight polynomial vanishes on `[0, 1]` (unit domain);
+/// [`Error::InvalidArgument`] for a shared component that is not a linear reparametrization
+/// (rational curves, or polynomial curves traced more than once).
+pub fn intersect(
+    a: &RationalBezier<BigRational>,
+    b: &RationalBezier<BigRational>,
+    domain: Domain,
+) -> Result<Intersections> {
+    check(a, domain)?;
+    check(b, domain)?;
+    let (fa, fb) = (integer_forms(a), integer_forms(b));
+    let r = {
+        let f = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]);
+        let g = cross_system(&fa[1], &fa[2], &fb[1], &fb[2]);
+        resultant_zv(&f, &g)
+    };
+    if r.is_empty() {
+        return overlap(a, b, domain);
+    }
+    let t_poly = {
+        let f = cross_system(&fb[0], &fb[2], &fa[0], &fa[2]);
+        let g = cross_system(&fb[1], &fb[2], &fa[1], &fa[2]);
+        resultant_zv(&f, &g)
+    };
+    let (ss, ts) = (roots(&r, domain), roots(&t_poly, domain));
+    let (rr, tr) = (to_rational(&r), to_rational(&t_poly));
+    let pa: Vec<[RealAlgebraic; 2]> = ss.iter().map(|s| point_at(&fa, s)).collect();
+    let pb: Vec<[RealAlgebraic; 2]> = ts.iter().map(|t| point_at(&fb, t)).collect();
+    let mut out = vec![];
+    for (s, p) in ss.iter().zip(&pa) {
+        for (t, q) in ts.iter().zip(&pb) {
+            if p[0] == q[0] && p[1] == q[1] {
+                let order = multiplicity(&rr, s).min(multiplicity(&tr, t)).max(1);
+                out.push(Intersection {
+                    s_float: s.to_f64(),
+                    t_float: t.to_f64(),
+                    point: rational_point(p),
+                    point_float: [p[0].to_f64(), p[1].to_f64()],
+                    kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
+                    contact_order: order,
+                    s: s.clone(),
+                    t: t.clone(),
+                });
+            }
+        }
+    }
+    Ok(Intersections { intersections: out, overlaps: vec![] })
+}
+
+/// `(F(s)W(t) − F(t)W(s)) / (s − t)` as a polynomial in `t` with coefficients in `Z[s]`.
+fn divided_difference(f: &[BigInt], w: &[BigInt]) -> Vec<zv::P> {
+    let n = f.len().max(w.len());
+    let get = |p: &[BigInt], i: usize| p.get(i).cloned().unwrap_or_default();
+    // P[i][j]: coefficient of s^i t^j
+    let p = |i: usize, j: usize| get(f, i) * get(w, j) - get(f, j) * get(w, i);
+    // P = (s − t)·Q: P[i][j] = Q[i−1][j] − Q[i][j−1], so Q[i−1][j] = P[i][j] + Q[i][j−1]
+    let mut q = vec![vec![BigInt::default(); n]; n];
+    for j in 0..n {
+        for i in (1..n).rev() {
+            let prev = if j > 0 { q[i][j - 1].clone() } else { BigInt::default() };
+            q[i - 1][j] = p(i, j) + prev;
+        }
+    }
+    let mut out: Vec<zv::P> = (0..n).map(|j| zv::trim((0..n).map(|i| q[i][j].clone()).collect())).collect();
+    while out.last().is_some_and(|c| c.is_empty()) {
+        out.pop();
+    }
+    out
+}
+
+/// Every self-intersection `A(s) = A(t)`, `s < t`, with both parameters in the domain (a
+/// cubic's double point is the special case: it agrees with [`crate::classify::classify`]).
+///
+/// # Errors
+/// As [`intersect`]; [`Error::InvalidArgument`] when the curve traces itself more than once
+/// (every point is a self-intersection).
+pub fn self_intersect(a: &RationalBezier<BigRational>, domain: Domain) -> Result<Intersections> {
+    check(a, domain)?;
+    let fa = integer_forms(a);
+    let dx = divided_difference(&fa[0], &fa[2]);
+    let dy = divided_difference(&fa[1], &fa[2]);
+    if dx.is_empty() || dy.is_empty() {
+        // a coordinate is constant: the curve lies on a line; pairs come from the other one
+        let d = if dx.is_empty() { &dy } else { &dx };
+        if d.is_empty() {
+            return Err(Error::InvalidArgument { message: "the curve is a single point".into() });
+        }
+    }
+    let r = resultant_zv(&dx, &dy);
+    if r.is_empty() {
+        return Err(Error::InvalidArgument {
+            message: "the curve traces a curve more than once (or lies on a line with a turn-back): every point of \
+                      an arc is a self-intersection"
+                .into(),
+        });
+    }
+    let ss = roots(&r, domain);
+    let rr = to_rational(&r);
+    let pts: Vec<[RealAlgebraic; 2]> = ss.iter().map(|s| point_at(&fa, s)).collect();
+    let mut out = vec![];
+    for i in 0..ss.len() {
+        for j in i + 1..ss.len() {
+            if pts[i][0] == pts[j][0] && pts[i][1] == pts[j][1] {
+                let order = multiplicity(&rr, &ss[i]).min(multiplicity(&rr, &ss[j])).max(1);
+                out.push(Intersection {
+                    s_float: ss[i].to_f64(),
+                    t_float: ss[j].to_f64(),
+                    point: rational_point(&pts[i]),
+                    point_float: [pts[i][0].to_f64(), pts[i][1].to_f64()],
+                    kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
+                    contact_order: order,
+                    s: ss[i].clone(),
+                    t: ss[j].clone(),
+                });
+            }
+        }
+    }
+    Ok(Intersections { intersections: out, overlaps: vec![] })
+}
+
+/// Shared component: linear reparametrizations of polynomial curves (see [`intersect`]).
+fn overlap(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>, domain: Domain) -> Result<Intersections> {
+    let refuse =
+        |why: &str| Err(Error::InvalidArgument { message: format!("the curves share a component, but {why}") });
+    let polynomial = |c: &RationalBezier<BigRational>| c.weights().iter().all(|w| *w == c.weights()[0]);
+    if !polynomial(a) || !polynomial(b) {
+        return refuse("overlaps of rational curves are not supported yet");
+    }
+    let power = |c: &RationalBezier<BigRational>| -> [Vec<BigRational>; 2] {
+        let w0 = c.weights()[0].clone();
+        let h = c.homogeneous().power_coefficients();
+        [0, 1].map(|k| trim(h.iter().map(|p| p.coords[k].clone() / &w0).collect()))
+    };
+    let (pa, pb) = (power(a), power(b));
+    let deg = |p: &[Vec<BigRational>; 2]| p.iter().map(|c| c.len().saturating_sub(1)).max().unwrap_or(0);
+    let n = deg(&pa);
+    if n == 0 || n != deg(&pb) {
+        return refuse("they are not linear reparametrizations of one another (different real degrees)");
+    }
+    // B(t) = A(αt + β): leading terms give α^n, the next ones β
+    let k = if pa[0].len() == n + 1 { 0 } else { 1 };
+    let (an, bn) = (pa[k][n].clone(), pb[k].get(n).cloned().unwrap_or_else(|| rat(0)));
+    let ratio = bn / &an; // α^n
+    let alpha = [rat(1), rat(-1)].into_iter().flat_map(|sgn| nth_root(&ratio, n).map(|r| r * sgn)).find(|al| {
+        let beta = beta_for(&pa[k], &pb[k], al, n);
+        compose_equals(&pa, &pb, al, &beta)
+    });
+    let Some(alpha) = alpha else { return refuse("they are not linear reparametrizations of one another") };
+    let beta = beta_for(&pa[k], &pb[k], &alpha, n);
+    // s = αt + β for t ∈ [0, 1]: the image interval, intersected with s ∈ [0, 1]
+    let (s0, s1) = (beta.clone(), alpha.clone() + &beta);
+    let (lo, hi) = if s0 <= s1 { (s0, s1) } else { (s1, s0) };
+    let mut overlaps = vec![];
+    let (lo, hi) = match domain {
+        Domain::Unit => (lo.max(rat(0)), hi.min(rat(1))),
+        Domain::All => (lo, hi),
+    };
+    if lo <= hi {
+        let t_of = |s: &BigRational| (s.clone() - &beta) / &alpha;
+        overlaps.push(Overlap { t: [t_of(&lo), t_of(&hi)], s: [lo, hi] });
+    }
+    // isolated common points off the shared arc: where the curve crosses itself
+    let selfs = self_intersect(a, Domain::All)?;
+    let mut out = vec![];
+    let in_dom = |x: &RealAlgebraic| {
+        domain == Domain::All || (*x >= RealAlgebraic::from(rat(0)) && *x <= RealAlgebraic::from(rat(1)))
+    };
+    let on_arc = |x: &RealAlgebraic| {
+        overlaps.iter().any(|o| *x >= RealAlgebraic::from(o.s[0].clone()) && *x <= RealAlgebraic::from(o.s[1].clone()))
+    };
+    for i in &selfs.intersections {
+        for (s, other) in [(&i.s, &i.t), (&i.t, &i.s)] {
+            // A(s) = A(other) = B(t) with other = αt + β
+            let t = other.map_rational(&[-beta.clone() / &alpha, rat(1) / &alpha], &[rat(1)]);
+            if in_dom(s) && in_dom(&t) && !on_arc(s) {
+                out.push(Intersection { s: s.clone(), s_float: s.to_f64(), t_float: t.to_f64(), t, ..i.clone() });
+            }
+        }
+    }
+    out.sort_by(|x, y| x.s.cmp(&y.s).then_with(|| x.t.cmp(&y.t)));
+    Ok(Intersections { intersections: out, overlaps })
+}
+
+/// The rational `n`-th root of `x > 0`, when there is one.
+fn nth_root(x: &BigRational, n: usize) -> Option<BigRational> {
+    use num_traits::Signed;
+    if x.is_negative() {
+        return if n % 2 == 1 { nth_root(&-x.clone(), n).map(|r| -r) } else { None };
+    }
+    let root = |v: &BigInt| -> Option<BigInt> {
+        let r = v.nth_root(n as u32);
+        (num_traits::pow(r.clone(), n) == *v).then_some(r)
+    };
+    Some(BigRational::new(root(x.numer())?, root(x.denom())?))
+}
+
+/// `β` from `b_{n−1} = α^{n−1}(n β a_n + a_{n−1})`.
+fn beta_for(a: &[BigRational], b: &[BigRational], alpha: &BigRational, n: usize) -> BigRational {
+    let get = |p: &[BigRational], i: usize| p.get(i).cloned().unwrap_or_else(|| rat(0));
+    let apow = num_traits::pow(alpha.clone(), n - 1);
+    (get(b, n - 1) / apow - get(a, n - 1)) / (rat(n as i64) * get(a, n))
+}
+
+/// `B(t) ≡ A(αt + β)`, exactly.
+fn compose_equals(
+    a: &[Vec<BigRational>; 2],
+    b: &[Vec<BigRational>; 2],
+    alpha: &BigRational,
+    beta: &BigRational,
+) -> bool {
+    (0..2).all(|k| {
+        // Horner in polynomials of t
+        let mut acc: Vec<BigRational> = vec![];
+        for c in a[k].iter().rev() {
+            let mut next = vec![rat(0); acc.len() + 1];
+            for (i, x) in acc.iter().enumerate() {
+                next[i] = next[i].clone() + x.clone() * beta;
+                next[i + 1] = next[i + 1].clone() + x.clone() * alpha;
+            }
+            next[0] = next[0].clone() + c.clone();
+            acc = next;
+        }
+        trim(acc) == b[k]
+    })
+}

@@ -1,0 +1,188 @@
+//! Exact intersections: constructed cases with known answers (tangencies of order 2 and 3,
+//! endpoint hits, cusps, overlaps reversed / elevated / sub-segment), public failing cases
+//! re-created from their reports, and properties across independent routes (A∩B = B∩A swapped,
+//! the common points lie on both curves exactly, a cubic's self-intersection is `classify`'s
+//! double point).
+
+mod common;
+use casteljau::classify::{NodeType, classify};
+use casteljau::curve::bezier::BezierCurve;
+use casteljau::intersect::{Domain, intersect_polynomial, self_intersect};
+use casteljau::num::parse::{NumberMode, parse_points_in};
+use casteljau::num::point::Point;
+use casteljau::poly::algebraic::RealAlgebraic;
+use casteljau::{RationalBezier, rat};
+use common::{run, stderr, stdout};
+use num_rational::BigRational;
+use proptest::prelude::*;
+
+fn c(s: &str) -> BezierCurve<BigRational> {
+    BezierCurve::new(parse_points_in(s, 2, None, NumberMode::Exact).unwrap()).unwrap()
+}
+
+fn c64(s: &str) -> BezierCurve<BigRational> {
+    BezierCurve::new(parse_points_in(s, 2, None, NumberMode::Binary64).unwrap()).unwrap()
+}
+
+/// `(s, t, contact order)` spelled exactly.
+fn hits(a: &BezierCurve<BigRational>, b: &BezierCurve<BigRational>) -> Vec<(String, String, usize)> {
+    intersect_polynomial(a, b, Domain::Unit)
+        .unwrap()
+        .intersections
+        .iter()
+        .map(|i| (i.s.to_string(), i.t.to_string(), i.contact_order))
+        .collect()
+}
+
+fn h(s: &str, t: &str, k: usize) -> (String, String, usize) {
+    (s.into(), t.into(), k)
+}
+
+#[test]
+fn intersect_tangencies_of_order_two_and_three() {
+    // the parabola's apex touches y = 1
+    assert_eq!(hits(&c("0 0, 1 2, 2 0"), &c("0 1, 2 1")), [h("1/2", "1/2", 2)]);
+    // y = s³ against its inflection tangent y = 0 at an endpoint: order 3
+    assert_eq!(hits(&c("0 0, 1 0, 2 0, 3 1"), &c("0 0, 3 0")), [h("0", "0", 3)]);
+    // the seed cubic's inflection tangent, in the middle
+    assert_eq!(hits(&c("-1 -1, -1/3 1, 1/3 -1, 1 1"), &c("-1 0, 1 0")), [h("1/2", "1/2", 3)]);
+    // two parabolas touching at their apexes
+    assert_eq!(hits(&c("0 0, 1 2, 2 0"), &c("0 2, 1 0, 2 2")), [h("1/2", "1/2", 2)]);
+}
+
+#[test]
+fn intersect_endpoints_irrational_hits_and_cusps() {
+    assert_eq!(hits(&c("0 0, 1 0"), &c("1 0, 2 1")), [h("1", "0", 1)]);
+    assert_eq!(
+        hits(&c("0 0, 1 2, 2 0"), &c("0 1/2, 2 1/2")),
+        [h("1/2 - 1/4*sqrt(2)", "1/2 - 1/4*sqrt(2)", 1), h("1/2 + 1/4*sqrt(2)", "1/2 + 1/4*sqrt(2)", 1)]
+    );
+    // a line through the cusp at t = 0 of a cubic, and through its end point
+    assert_eq!(hits(&c("0 0, 0 0, 1 1, 2 0"), &c("0 0, 2 0")), [h("0", "0", 2), h("1", "1", 1)]);
+    // touching bounding boxes, no intersection
+    assert!(hits(&c("0 0, 1 1, 2 0"), &c("0 1, 1 2, 2 1")).is_empty());
+    // the crunode's double point: a line through it meets the cubic twice there
+    let r = hits(&c("0 0, 2 2, -1 2, 1 0"), &c("0 3/5, 1 3/5"));
+    assert!(r.iter().filter(|x| x.1 == "1/2").count() >= 2, "{r:?}");
+}
+
+#[test]
+fn intersect_overlaps_reversed_elevated_and_sub_segments() {
+    let o = |a: &str, b: &str| {
+        let r = intersect_polynomial(&c(a), &c(b), Domain::Unit).unwrap();
+        r.overlaps
+            .iter()
+            .map(|o| (o.s[0].to_string(), o.s[1].to_string(), o.t[0].to_string(), o.t[1].to_string()))
+            .collect::<Vec<_>>()
+    };
+    let q = |a: &str, b: &str, c: &str, d: &str| vec![(a.to_string(), b.to_string(), c.to_string(), d.to_string())];
+    // reversed copy
+    assert_eq!(o("0 0, 1 2, 2 0", "2 0, 1 2, 0 0"), q("0", "1", "1", "0"));
+    // degree-elevated copy
+    assert_eq!(o("0 0, 1 2, 2 0", "0 0, 2/3 4/3, 4/3 4/3, 2 0"), q("0", "1", "0", "1"));
+    // a sub-segment (the left half, by subdivision)
+    assert_eq!(o("0 0, 1 2, 2 0", "0 0, 1/2 1, 1 1"), q("0", "1/2", "0", "1"));
+    // collinear segments sharing a piece
+    assert_eq!(o("0 0, 1 1, 2 2, 3 3", "1 1, 2 2"), q("1/3", "2/3", "0", "1"));
+    // the same line, disjoint pieces: no overlap in the unit square
+    assert!(o("0 0, 1 1", "2 2, 3 3").is_empty());
+}
+
+#[test]
+fn intersect_public_failing_cases_recreated() {
+    // Pomax/BezierInfo-2 #329: a degenerate (collinear) quadratic p0 (180, 0), p1 (180, 100),
+    // p2 (180, 200) against the line y = 100 — the intersection was not found
+    assert_eq!(hits(&c("180 0, 180 100, 180 200"), &c("0 100, 400 100")), [h("1/2", "9/20", 1)]);
+    // thelonious/kld-intersections #17: two cubic arcs (SVG path data with binary64 numbers)
+    // that visibly cross, reported as not intersecting
+    let a = c64("150 150, 183.33333333333331 216.66666666666663, 233.33333333333337 216.66666666666663, 300 150");
+    let b = c64("100 200, 166.66666666666663 133.33333333333337, 233.33333333333337 133.33333333333337, 300 200");
+    let r = intersect_polynomial(&a, &b, Domain::Unit).unwrap();
+    assert_eq!(r.intersections.len(), 2);
+    assert!(r.intersections.iter().all(|i| i.kind.as_str() == "transversal"));
+    // dhermes/bezier #10 / Paper.js #565 in kind: a tangential touch float code misses — the
+    // circle-like arch and its tangent line at an irrational-free apex
+    assert_eq!(hits(&c("0 0, 0 4, 4 4, 4 0"), &c("0 3, 4 3")), [h("1/2", "1/2", 2)]);
+}
+
+fn cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    prop::collection::vec((-12i64..=12, -12i64..=12), 4)
+        .prop_map(|v| BezierCurve::new(v.into_iter().map(|(x, y)| Point::new(vec![rat(x), rat(y)])).collect()).unwrap())
+}
+
+fn quadratic() -> impl Strategy<Value = BezierCurve<BigRational>> {
+    prop::collection::vec((-12i64..=12, -12i64..=12), 3)
+        .prop_map(|v| BezierCurve::new(v.into_iter().map(|(x, y)| Point::new(vec![rat(x), rat(y)])).collect()).unwrap())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A ∩ B is B ∩ A with the parameters swapped, and every rational common point is on both
+    /// curves exactly.
+    #[test]
+    fn intersect_is_symmetric_and_points_lie_on_both(a in quadratic(), b in cubic()) {
+        let (ab, ba) = match (intersect_polynomial(&a, &b, Domain::Unit), intersect_polynomial(&b, &a, Domain::Unit)) {
+            (Ok(x), Ok(y)) => (x, y),
+            (Err(e), _) | (_, Err(e)) => { prop_assert!(e.to_string().contains("share a component")); return Ok(()); }
+        };
+        let mut left: Vec<(RealAlgebraic, RealAlgebraic)> = ab.intersections.iter().map(|i| (i.s.clone(), i.t.clone())).collect();
+        let mut right: Vec<(RealAlgebraic, RealAlgebraic)> = ba.intersections.iter().map(|i| (i.t.clone(), i.s.clone())).collect();
+        left.sort();
+        right.sort();
+        prop_assert_eq!(left, right);
+        for i in &ab.intersections {
+            if let (Some(s), Some(t), Some(p)) = (i.s.to_rational(), i.t.to_rational(), &i.point) {
+                prop_assert_eq!(&a.eval(s), p);
+                prop_assert_eq!(&b.eval(t), p);
+            }
+        }
+    }
+
+    /// The self-intersection of a cubic is classify's double point (a crunode with both
+    /// parameters on [0, 1]), and nothing else.
+    #[test]
+    fn self_intersection_of_a_cubic_is_the_classified_double_point(a in cubic()) {
+        let k = classify(&a).unwrap();
+        let rb = RationalBezier::new(a.points().to_vec(), vec![rat(1); 4]).unwrap();
+        let r = match self_intersect(&rb, Domain::Unit) {
+            Ok(r) => r,
+            Err(e) => { prop_assert!(k.collinear || k.real_degree < 3, "{}", e); return Ok(()); }
+        };
+        let expected = k.node_type == Some(NodeType::Crunode) && k.segment.has_loop;
+        prop_assert_eq!(r.intersections.len(), usize::from(expected));
+        if expected {
+            let i = &r.intersections[0];
+            prop_assert_eq!(i.s.to_f64(), casteljau::Scalar::to_f64(&k.double_point_parameters[0]));
+            prop_assert_eq!(i.t.to_f64(), casteljau::Scalar::to_f64(&k.double_point_parameters[1]));
+            prop_assert_eq!(i.point.as_ref(), k.double_point.as_ref());
+        }
+    }
+}
+
+#[test]
+fn cli_intersect_text_json_self_and_batch() {
+    let o = run(&["intersect", "0 0, 1 2, 2 0", "0 1, 2 1"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o), "s = 1/2 (≈ 0.5), t = 1/2 (≈ 0.5) at (1, 1): tangent, contact order 2\n");
+    let o = run(&["intersect", "--json", "0 0, 1 2, 2 0", "0 1/2, 2 1/2"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["intersections"][0]["s"], "1/2 - 1/4*sqrt(2)");
+    assert!(v["intersections"][0].get("point").is_none());
+    assert_eq!(v["intersections"][0]["point_float"][1], 0.5);
+    assert_eq!(v["intersections"][0]["kind"], "transversal");
+    assert_eq!(v["overlaps"], serde_json::json!([]));
+    let o = run(&["intersect", "--self", "--json", "0 0, 2 2, -1 2, 1 0"], None);
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["intersections"][0]["point"], serde_json::json!(["1/2", "3/5"]));
+    let o = run(&["intersect", "--json", "--input", "-"], Some("0 0, 1 1 ; 0 1, 1 0\n0 0, 1 0 ; 0 1, 1 1\nbad\n"));
+    assert_eq!(o.status.code(), Some(2));
+    let lines: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines[0]["line"], 1);
+    assert_eq!(lines[0]["intersections"][0]["point"], serde_json::json!(["1/2", "1/2"]));
+    assert_eq!(lines[1]["intersections"], serde_json::json!([]));
+    assert!(lines[2]["error"].as_str().unwrap().contains("A ; B"));
+    // overlaps are reported, never a hang
+    let o = run(&["intersect", "0 0, 1 2, 2 0", "2 0, 1 2, 0 0"], None);
+    assert_eq!(stdout(&o), "overlap: s in [0, 1] with t from 1 to 0\n");
+}
