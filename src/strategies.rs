@@ -143,18 +143,31 @@ pub fn degree_elevated_quadratic() -> impl Strategy<Value = BezierCurve<BigRatio
 
 /// A cubic whose four control points lie on one line (random positions along it).
 pub fn collinear_cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
-    (prop::collection::vec(small_rational(), 4), (-5i64..=5, -5i64..=5), small_rational()).prop_map(
-        |(s, (dx, dy), c)| {
-            let d = if dx == 0 && dy == 0 { (1, 0) } else { (dx, dy) };
-            let pts = s.into_iter().map(|s| Point::new(vec![s.clone() * rat(d.0) + &c, s * rat(d.1)])).collect();
-            BezierCurve::new(pts).unwrap()
-        },
-    )
+    collinear_from(small_rational)
+}
+
+/// Four points `c + s_i·d` on the line through `(c, 0)` with a small integer direction `d`, the
+/// numbers `s_i` and `c` drawn from `numbers`.
+fn collinear_from<S: Strategy<Value = BigRational>>(
+    numbers: impl Fn() -> S,
+) -> impl Strategy<Value = BezierCurve<BigRational>> {
+    (prop::collection::vec(numbers(), 4), (-5i64..=5, -5i64..=5), numbers()).prop_map(|(s, (dx, dy), c)| {
+        let d = if dx == 0 && dy == 0 { (1, 0) } else { (dx, dy) };
+        let pts = s.into_iter().map(|s| Point::new(vec![s.clone() * rat(d.0) + &c, s * rat(d.1)])).collect();
+        BezierCurve::new(pts).unwrap()
+    })
 }
 
 /// A cubic with two coincident control points (P0 = P1, P1 = P2 or P2 = P3).
 pub fn coincident_control_points() -> impl Strategy<Value = BezierCurve<BigRational>> {
-    (cubic(), 0usize..3).prop_map(|(c, i)| {
+    coincident_from(cubic())
+}
+
+/// A cubic from `cubics` with one control point copied onto the next.
+fn coincident_from(
+    cubics: impl Strategy<Value = BezierCurve<BigRational>>,
+) -> impl Strategy<Value = BezierCurve<BigRational>> {
+    (cubics, 0usize..3).prop_map(|(c, i)| {
         let mut pts = c.into_points();
         pts[i + 1] = pts[i].clone();
         BezierCurve::new(pts).unwrap()
@@ -309,20 +322,12 @@ pub mod binary64 {
 
     /// Four dyadic control points on one line.
     pub fn collinear_cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {
-        (prop::collection::vec(dyadic(), 4), (-5i64..=5, -5i64..=5), dyadic()).prop_map(|(s, (dx, dy), c)| {
-            let d = if dx == 0 && dy == 0 { (1, 0) } else { (dx, dy) };
-            let pts = s.into_iter().map(|s| Point::new(vec![s.clone() * rat(d.0) + &c, s * rat(d.1)])).collect();
-            BezierCurve::new(pts).unwrap()
-        })
+        super::collinear_from(dyadic)
     }
 
     /// A dyadic cubic with two coincident control points.
     pub fn coincident_control_points() -> impl Strategy<Value = BezierCurve<BigRational>> {
-        (cubic(), 0usize..3).prop_map(|(c, i)| {
-            let mut pts = c.into_points();
-            pts[i + 1] = pts[i].clone();
-            BezierCurve::new(pts).unwrap()
-        })
+        super::coincident_from(cubic())
     }
 
     /// A near-cusp: the cusp `(0,0) (1,1) (0,1) (1,0)` with `P1.y` moved by `±2^-k`; exactly a

@@ -462,27 +462,8 @@ pub(crate) mod zv {
 
 /// `Res_t(p(t), q(t))` where `q`'s coefficients are polynomials in `v` (Sylvester matrix).
 pub(crate) fn resultant_in_v(p: &[BigInt], q: &[zv::P]) -> zv::P {
-    let (m, n) = (p.len() - 1, q.len() - 1);
-    let size = m + n;
-    let mut rows: Vec<Vec<zv::P>> = vec![];
-    for r in 0..n {
-        let mut row = vec![vec![]; size];
-        for (i, c) in p.iter().rev().enumerate() {
-            row[r + i] = zv::trim(vec![c.clone()]);
-        }
-        rows.push(row);
-    }
-    for r in 0..m {
-        let mut row = vec![vec![]; size];
-        for (i, c) in q.iter().rev().enumerate() {
-            row[r + i] = c.clone();
-        }
-        rows.push(row);
-    }
-    if size == 0 {
-        return vec![BigInt::one()];
-    }
-    zv::det(rows)
+    let constants: Vec<zv::P> = p.iter().map(|c| zv::trim(vec![c.clone()])).collect();
+    resultant_zv(&constants, q)
 }
 
 /// `Res_t(f, g)` where both have coefficients in `Z[v]` (lowest degree in `t` first; no

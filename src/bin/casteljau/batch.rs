@@ -221,13 +221,7 @@ pub fn batch_lines(
         eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
         return 2;
     }
-    let pool = match rayon::ThreadPoolBuilder::new().num_threads(args.threads).build() {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("casteljau: cannot start {} threads: {e}", args.threads);
-            return 2;
-        }
-    };
+    let Some(pool) = thread_pool(args.threads) else { return 2 };
     let sequential = pool.current_num_threads() == 1;
     let answer = |(line, text): &(Option<usize>, std::result::Result<String, String>)| -> Result<Answer> {
         match text {
@@ -349,6 +343,17 @@ pub fn batch_lines(
         eprint!("\r\x1b[K");
     }
     if code == 0 && failed { 1 } else { code }
+}
+
+/// The worker pool of `--threads N` (0: all cores); `None` after saying why on stderr.
+pub fn thread_pool(threads: usize) -> Option<rayon::ThreadPool> {
+    match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+        Ok(p) => Some(p),
+        Err(e) => {
+            eprintln!("casteljau: cannot start {threads} threads: {e}");
+            None
+        }
+    }
 }
 
 /// Lines per chunk of a streamed batch.

@@ -257,13 +257,7 @@ pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
         eprintln!("casteljau: scan needs FILE arguments or --path");
         return 2;
     }
-    let pool = match rayon::ThreadPoolBuilder::new().num_threads(args.threads).build() {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("casteljau: cannot start {} threads: {e}", args.threads);
-            return 2;
-        }
-    };
+    let Some(pool) = crate::batch::thread_pool(args.threads) else { return 2 };
     let variation = match args.variation.as_deref().map(parse_variation).transpose() {
         Ok(v) => v,
         Err(e) => {
