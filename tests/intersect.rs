@@ -186,3 +186,103 @@ fn cli_intersect_text_json_self_and_batch() {
     let o = run(&["intersect", "0 0, 1 2, 2 0", "2 0, 1 2, 0 0"], None);
     assert_eq!(stdout(&o), "overlap: s in [0, 1] with t from 1 to 0\n");
 }
+
+mod winding {
+    use super::*;
+    use casteljau::intersect::winding::{Winding, winding_number};
+
+    fn path(s: &str) -> Vec<BezierCurve<BigRational>> {
+        s.split(';').map(c).collect()
+    }
+
+    fn q(x: BigRational, y: BigRational) -> Point<BigRational> {
+        Point::new(vec![x, y])
+    }
+
+    #[test]
+    fn winding_tangent_rays_joints_and_stretches_on_the_ray() {
+        let lens = path("0 0, 1 2, 2 0 ; 2 0, 0 0");
+        let w = |x: BigRational, y: BigRational| winding_number(&lens, &q(x, y)).unwrap();
+        assert_eq!(w(rat(1), BigRational::new(1.into(), 2.into())), Winding::Inside(-1));
+        // the ray through the apex only touches the parabola
+        assert_eq!(w(rat(-1), rat(1)), Winding::Inside(0));
+        // the ray along the chord (a whole segment on it) and through both joints
+        assert_eq!(w(rat(-1), rat(0)), Winding::Inside(0));
+        assert!(matches!(
+            w(rat(2), rat(0)),
+            Winding::OnBoundary { segment: 0, .. } | Winding::OnBoundary { segment: 1, .. }
+        ));
+        // a figure eight: +1 in one lobe, −1 in the other (a cubic with its own loop closed by a line)
+        let eight = path("0 0, 2 2, -1 2, 1 0 ; 1 0, 0 0");
+        let lobes: Vec<Winding> = [
+            (BigRational::new(1.into(), 2.into()), BigRational::new(3.into(), 4.into())),
+            (BigRational::new(1.into(), 2.into()), BigRational::new(1.into(), 10.into())),
+        ]
+        .into_iter()
+        .map(|(x, y)| winding_number(&eight, &q(x, y)).unwrap())
+        .collect();
+        assert!(lobes.iter().all(|w| matches!(w, Winding::Inside(k) if k.abs() == 1)), "{lobes:?}");
+        assert!(winding_number(&path("0 0, 1 0 ; 2 0, 0 0"), &q(rat(5), rat(5))).is_err());
+    }
+
+    /// The exact crossing-number winding of a polygon (Sunday's rule with rational arithmetic).
+    fn polygon_winding(v: &[(i64, i64)], p: (BigRational, BigRational)) -> Option<i64> {
+        let mut w = 0;
+        for i in 0..v.len() {
+            let (a, b) = (v[i], v[(i + 1) % v.len()]);
+            let (ax, ay, bx, by) = (rat(a.0), rat(a.1), rat(b.0), rat(b.1));
+            let cross = (bx.clone() - &ax) * (p.1.clone() - &ay) - (p.0.clone() - &ax) * (by.clone() - &ay);
+            let within = |u: &BigRational, s: &BigRational, t: &BigRational| (u >= s && u <= t) || (u >= t && u <= s);
+            if cross == rat(0) && within(&p.0, &ax, &bx) && within(&p.1, &ay, &by) {
+                return None; // on the edge
+            }
+            if ay <= p.1 {
+                if by > p.1 && cross > rat(0) {
+                    w += 1;
+                }
+            } else if by <= p.1 && cross < rat(0) {
+                w -= 1;
+            }
+        }
+        Some(w)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        #[test]
+        fn winding_of_polygons_matches_the_crossing_rule(
+            v in prop::collection::vec((-4i64..=4, -4i64..=4), 3..7),
+            px in -8i64..=8, py in -8i64..=8,
+        ) {
+            let segs: Vec<BezierCurve<BigRational>> = (0..v.len())
+                .map(|i| {
+                    let (a, b) = (v[i], v[(i + 1) % v.len()]);
+                    BezierCurve::new(vec![Point::new(vec![rat(a.0), rat(a.1)]), Point::new(vec![rat(b.0), rat(b.1)])]).unwrap()
+                })
+                .collect();
+            // half-integer query points hit vertices' rows and columns often, vertices never
+            let p = (BigRational::new(px.into(), 2.into()), BigRational::new(py.into(), 2.into()));
+            let ours = winding_number(&segs, &q(p.0.clone(), p.1.clone())).unwrap();
+            match polygon_winding(&v, p) {
+                None => {
+                    let on = matches!(ours, Winding::OnBoundary { .. });
+                    prop_assert!(on, "{:?}", ours);
+                }
+                Some(w) => prop_assert_eq!(ours, Winding::Inside(w)),
+            }
+        }
+    }
+
+    #[test]
+    fn cli_winding_text_json_svg() {
+        let o = run(&["winding", "--point", "1 1/2", "0 0, 1 2, 2 0 ; 2 0, 0 0"], None);
+        assert_eq!(stdout(&o), "winding number -1: inside (non-zero rule), inside (even-odd rule)\n");
+        let o = run(&["winding", "--json", "--svg", "--point", "1 0", "M0 0 Q1 2 2 0 Z"], None);
+        let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        assert_eq!(v["on_boundary"]["segment"], 1);
+        let o = run(&["winding", "--point", "0 0", "0 0, 1 1 ; 2 2, 0 0"], None);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(stderr(&o).contains("not closed"), "{}", stderr(&o));
+    }
+}

@@ -28,6 +28,8 @@
 //! assert_eq!(i.kind.as_str(), "tangent");
 //! ```
 
+pub mod winding;
+
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;

@@ -160,6 +160,9 @@ pub enum Command {
     /// as exact algebraic numbers, the point, transversal or tangent with the contact order,
     /// and shared arcs (overlaps).
     Intersect(IntersectArgs),
+    /// The exact winding number of a closed path around a point (or where the point lies on
+    /// the path): segments separated by ';', or SVG path data with --svg.
+    Winding(WindingArgs),
     /// The exact bounding box on [0,1] and the stationary points of each coordinate (roots of
     /// x'(t), y'(t); rational curves too), as exact algebraic numbers.
     Bbox {
@@ -641,6 +644,37 @@ pub struct IntersectArgs {
     #[arg(long, short)]
     pub quiet: bool,
     /// How numbers are read: `exact` or `binary64` (as for the other commands).
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
+}
+
+/// `casteljau winding`.
+#[derive(Args, Debug)]
+pub struct WindingArgs {
+    /// The query point "x y".
+    #[arg(long, allow_hyphen_values = true)]
+    pub point: String,
+    /// The closed path: segments separated by ';' ("0 0, 1 2, 2 0 ; 2 0, 0 0"), or SVG path data
+    /// with --svg. Omit to read --input (one path per line).
+    #[arg(allow_hyphen_values = true)]
+    pub path: Option<String>,
+    /// The path is SVG path data ("M0 0 Q1 2 2 0 Z"); every subpath is closed as SVG fills it and
+    /// the windings add up.
+    #[arg(long)]
+    pub svg: bool,
+    /// A batch file, one path per line ('-' for stdin).
+    #[arg(long, short)]
+    pub input: Option<String>,
+    /// JSON Lines output.
+    #[arg(long)]
+    pub json: bool,
+    /// Threads answering a batch (0: all cores).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No progress line on a terminal.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// How numbers are read: `exact` or `binary64`.
     #[arg(long, value_enum, default_value_t = Numbers::Exact)]
     pub numbers: Numbers,
 }

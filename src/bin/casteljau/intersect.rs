@@ -106,3 +106,89 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
         Ok(Answer { text: text(&r), json: Json::Object(json), failed: false })
     })
 }
+
+/// `casteljau winding --point "x y" PATH`: the winding number of a closed path (segments
+/// separated by `;`, or SVG path data with `--svg`, every subpath closed as SVG fills it) around
+/// the point, or where the point lies on the path. JSON: `winding` (absent on the boundary),
+/// `inside` (non-zero rule), `even_odd`, `on_boundary` (`{"subpath", "segment", "t"}` or
+/// absent).
+pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 {
+    use casteljau::format::{Segment, svg_path};
+    use casteljau::intersect::winding::{Winding, winding_number};
+    let mode: NumberMode = args.numbers.into();
+    let q = match parse_points_in(&args.point, 2, None, mode) {
+        Ok(p) if p.len() == 1 => p.into_iter().next().expect("one point"),
+        Ok(p) => {
+            eprintln!("casteljau: --point takes one point \"x y\", got {}", p.len());
+            return 2;
+        }
+        Err(e) => {
+            eprintln!("casteljau: --point: {e}");
+            return 2;
+        }
+    };
+    let svg = args.svg;
+    let curve_args = CurveArgs {
+        curve: args.path.clone(),
+        input: args.input.clone(),
+        dim: 2,
+        json: args.json,
+        threads: args.threads,
+        quiet: args.quiet,
+        max_work: casteljau::work::DEFAULT_MAX_WORK,
+        numbers: args.numbers,
+    };
+    batch_lines(&curve_args, out, |line, text_line| {
+        let subpaths: Vec<Vec<casteljau::BezierCurve<BigRational>>> = if svg {
+            let contours = svg_path::parse_path(text_line, mode)?;
+            contours
+                .into_iter()
+                .map(|c| {
+                    let mut segs = vec![];
+                    for s in c.segments {
+                        match s {
+                            Segment::Bezier(ps) => segs.push(casteljau::BezierCurve::new(ps)?),
+                            Segment::Skipped { reason, .. } => return Err(Error::InvalidArgument { message: reason }),
+                        }
+                    }
+                    // SVG fills close every subpath with a line
+                    if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
+                        let (a, b) = (last.points()[last.points().len() - 1].clone(), first.points()[0].clone());
+                        if a != b {
+                            segs.push(casteljau::BezierCurve::new(vec![a, b])?);
+                        }
+                    }
+                    Ok(segs)
+                })
+                .filter(|s| !matches!(s, Ok(v) if v.is_empty()))
+                .collect::<Result<_>>()?
+        } else {
+            vec![
+                text_line
+                    .split(';')
+                    .map(|s| parse_points_in(s, 2, line, mode).and_then(casteljau::BezierCurve::new))
+                    .collect::<Result<_>>()?,
+            ]
+        };
+        let mut total = 0i64;
+        for (k, sp) in subpaths.iter().enumerate() {
+            match winding_number(sp, &q)? {
+                Winding::Inside(w) => total += w,
+                Winding::OnBoundary { segment, t } => {
+                    let text = format!("on the path: subpath {k}, segment {segment}, t = {t}");
+                    let json = serde_json::json!({"on_boundary": {"subpath": k, "segment": segment, "t": t.to_string(), "t_float": t.to_f64()}});
+                    return Ok(Answer::from((text, json)));
+                }
+            }
+        }
+        let text = format!(
+            "winding number {total}: {} (non-zero rule), {} (even-odd rule)",
+            if total != 0 { "inside" } else { "outside" },
+            if total % 2 != 0 { "inside" } else { "outside" }
+        );
+        Ok(Answer::from((
+            text,
+            serde_json::json!({"winding": total, "inside": total != 0, "even_odd": total % 2 != 0}),
+        )))
+    })
+}

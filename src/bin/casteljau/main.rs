@@ -117,6 +117,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Scan(args) => scan::run(&args, out),
         Command::Check(args) => check::run(&args, out),
         Command::Intersect(args) => intersect::run(&args, out),
+        Command::Winding(args) => intersect::run_winding(&args, out),
         Command::Bbox { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::bbox(&rational_curve(c, w)?).map(Answer::from))
         }
