@@ -59,24 +59,17 @@ enum Event {
     Zero(bool),
 }
 
-/// A rational strictly between `a < b`.
+/// A rational strictly between `a < b`: the intervals are refined until the upper end of `a`'s
+/// lies below the lower end of `b`'s (or equals it with both irrational: open intervals).
 fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> BigRational {
     let (mut a, mut b) = (a.clone(), b.clone());
     loop {
         let ((_, ah), (bl, _)) = (a.interval(), b.interval());
-        if ah < bl || (ah == bl && a.to_rational().is_none() && b.to_rational().is_none()) {
+        if ah < bl {
             return (ah + bl) / rat(2);
         }
-        if ah == bl {
-            // one end is the rational number itself: step inside the other's interval
-            let (al, _) = a.interval();
-            let (_, bh) = b.interval();
-            if a.to_rational().is_some() && b.to_rational().is_none() {
-                return (ah + bh) / rat(2);
-            }
-            if b.to_rational().is_some() && a.to_rational().is_none() {
-                return (al + bl) / rat(2);
-            }
+        if ah == bl && a.interval().0 != ah && b.interval().1 != bl {
+            return ah; // a < ah = bl < b
         }
         a.bisect();
         b.bisect();

@@ -29,7 +29,7 @@
 //! let r = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)]);
 //! assert_eq!(r.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["-sqrt(2)", "sqrt(2)"]);
 //! let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
-//! assert_eq!(c[0].to_string(), "root 1 of t^3 - 2 in [1, 3/2]");
+//! assert_eq!(c[0].to_string(), "root 1 of t^3 - 2 in [5/4, 41/32]");
 //! assert_eq!(c[0].to_f64(), 2f64.cbrt());
 //! assert!(c[0] < r[1] && r[0] < RealAlgebraic::from(ratio(-1, 1)));
 //! // (2t − 1)(t² − 3): the rational root is a rational
@@ -131,6 +131,30 @@ fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<R
         .collect()
 }
 
+/// `true` when `p` provably has no rational root: `p mod q` has no root for some small prime
+/// `q` not dividing the leading coefficient (a rational root `a/b` has `b | lc`, so `b` is
+/// invertible mod `q` and `a·b⁻¹` would be a root mod `q`). `false` means "not proved"; the
+/// slower exact search of `detect_rational` then decides.
+fn no_rational_roots(p: &[BigInt]) -> bool {
+    const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
+    let Some(lc) = p.last() else { return false };
+    PRIMES.iter().any(|&q| {
+        let qb = BigInt::from(q);
+        if (lc % &qb).is_zero() {
+            return false;
+        }
+        let coeffs: Vec<u64> = p
+            .iter()
+            .map(|c| {
+                let r = c % &qb;
+                let r = if r.is_negative() { r + &qb } else { r };
+                u64::try_from(r).expect("a residue below q")
+            })
+            .collect();
+        (0..q).all(|x| coeffs.iter().rev().fold(0u64, |acc, c| (acc * x + c) % q) != 0)
+    })
+}
+
 /// `1 + max |c_i / c_n|`: every real root lies strictly inside `(−B, B)` (Cauchy).
 fn cauchy_bound(p: &[BigRational]) -> BigRational {
     let lc = p.last().expect("non-zero polynomial").abs();
@@ -197,18 +221,20 @@ impl RealAlgebraic {
             return if sign_at(&ip, lo) == Ordering::Equal { vec![lo.clone().into()] } else { vec![] };
         }
         let sf = square_free_integer(primitive_part(to_integer(&p)));
-        isolate_power(&p, lo, hi)
+        let isolated = isolate_power(&p, lo, hi);
+        let irrational = isolated.iter().any(|r| matches!(r, Root::Isolated(..))) && no_rational_roots(&sf);
+        isolated
             .into_iter()
             .map(|r| match r {
                 Root::Exact(x) => x.into(),
-                Root::Isolated(a, b) => Self::from_isolated(sf.clone(), a, b),
+                Root::Isolated(a, b) => Self::from_isolated(sf.clone(), a, b, irrational),
             })
             .collect()
     }
 
     /// The root of `poly` (square-free, primitive) in `(lo, hi)`, where it changes sign; made
     /// rational when it is.
-    fn from_isolated(poly: Vec<BigInt>, mut lo: BigRational, mut hi: BigRational) -> Self {
+    fn from_isolated(poly: Vec<BigInt>, mut lo: BigRational, mut hi: BigRational, irrational: bool) -> Self {
         // an end may be another root of the polynomial (found exactly at a split point): move it
         // inward. p has exactly one root r in (lo, hi), all roots simple, so just inside a root
         // end p has the sign of p′ there (right of lo) or of −p′ (left of hi); bisecting with
@@ -235,7 +261,9 @@ impl RealAlgebraic {
             }
         }
         let mut x = RealAlgebraic(Repr::Root { poly, lo, hi });
-        x.detect_rational();
+        if !irrational {
+            x.detect_rational();
+        }
         x
     }
 
@@ -732,8 +760,12 @@ fn poly_text(p: &[BigInt]) -> String {
 }
 
 impl fmt::Display for RealAlgebraic {
+    /// A rational, `a + b*sqrt(d)`, or `root k of <poly> in [lo, hi]` with the interval refined
+    /// below width 1/16 (short dyadic ends).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match &self.0 {
+        let mut shown = self.clone();
+        shown.refine(&BigRational::new(1.into(), 16.into()));
+        match &shown.0 {
             Repr::Rational(r) => write!(f, "{r}"),
             Repr::Root { poly, lo, hi } if poly.len() == 3 => {
                 let c: Vec<BigRational> = poly.iter().map(|c| BigRational::from_integer(c.clone())).collect();
@@ -743,11 +775,11 @@ impl fmt::Display for RealAlgebraic {
                 };
                 match quadratic_roots(&c[0], &c[1], &c[2]).into_iter().map(|(x, _)| x).find(inside) {
                     Some(x) => write!(f, "{x}"),
-                    None => write!(f, "root {} of {} in [{lo}, {hi}]", self.root_index(), poly_text(poly)),
+                    None => write!(f, "root {} of {} in [{lo}, {hi}]", shown.root_index(), poly_text(poly)),
                 }
             }
             Repr::Root { poly, lo, hi } => {
-                write!(f, "root {} of {} in [{lo}, {hi}]", self.root_index(), poly_text(poly))
+                write!(f, "root {} of {} in [{lo}, {hi}]", shown.root_index(), poly_text(poly))
             }
         }
     }
@@ -781,7 +813,7 @@ mod tests {
         let b = RealAlgebraic::real_roots(&[rat(-4), rat(0), rat(0), rat(0), rat(1)])[1].clone();
         assert_eq!(a, b);
         // the polynomial is kept as given (square-free, not factored): √2 is spelled as a root of it
-        assert_eq!(b.to_string(), "root 2 of t^4 - 4 in [3/4, 3/2]");
+        assert_eq!(b.to_string(), "root 2 of t^4 - 4 in [45/32, 93/64]");
         let c = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
         assert!(a < c);
         assert_eq!(a.sign(), Ordering::Greater);
