@@ -349,3 +349,132 @@ pub mod binary64 {
         })
     }
 }
+
+/// Hard intersection cases with exact binary64 control points (see [`binary64`]): each strategy
+/// yields the two curves (and what is promised), for float intersection code checked with
+/// [`crate::intersect::check_intersections_f64`].
+pub mod intersections {
+    use super::binary64::{cubic, is_binary64, unit_parameter};
+    use crate::curve::bezier::BezierCurve;
+    use crate::num::point::Point;
+    use crate::num::scalar::{rat, ratio};
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+
+    type Curve = BezierCurve<BigRational>;
+
+    fn exact(c: Curve) -> Option<Curve> {
+        c.points().iter().all(|p| p.coords.iter().all(is_binary64)).then_some(c)
+    }
+
+    /// An invertible integer matrix and offset, applied to points.
+    fn affine() -> impl Strategy<Value = ([i64; 4], [i64; 2])> {
+        (prop::array::uniform4(-4i64..=4), prop::array::uniform2(-40i64..=40))
+            .prop_filter("invertible", |(m, _)| m[0] * m[3] - m[1] * m[2] != 0)
+    }
+
+    fn map(c: &Curve, m: [i64; 4], o: [i64; 2]) -> Curve {
+        let pts = c
+            .points()
+            .iter()
+            .map(|p| {
+                let (x, y) = (&p.coords[0], &p.coords[1]);
+                Point::new(vec![rat(m[0]) * x + rat(m[1]) * y + rat(o[0]), rat(m[2]) * x + rat(m[3]) * y + rat(o[1])])
+            })
+            .collect();
+        BezierCurve::new(pts).expect("points")
+    }
+
+    /// `(u, u^k)` with `u = s − τ` as a Bézier curve of degree `k` on `s ∈ [0, 1]`.
+    fn monomial(k: usize, tau: &BigRational) -> Curve {
+        let mut x = vec![rat(0); k + 1];
+        let mut y = vec![rat(0); k + 1];
+        // u = s − τ; u^k by the binomial theorem
+        x[0] = -tau.clone();
+        x[1] = rat(1);
+        for j in 0..=k {
+            let c = crate::poly::bernstein::binomial_scalar::<BigRational>(k, j);
+            let pow = crate::poly::bernstein::pow(&-tau.clone(), k - j);
+            y[j] = c * pow;
+        }
+        let coeffs: Vec<Point<BigRational>> = (0..=k).map(|j| Point::new(vec![x[j].clone(), y[j].clone()])).collect();
+        BezierCurve::from_power(&coeffs).expect("coefficients")
+    }
+
+    /// The touching line `y = 0` from `(−λ, 0)` to `(μ, 0)`: the touch is at `t = λ/(λ + μ)`.
+    fn axis_line(lambda: i64, mu: i64) -> Curve {
+        BezierCurve::new(vec![Point::new(vec![rat(-lambda), rat(0)]), Point::new(vec![rat(mu), rat(0)])])
+            .expect("points")
+    }
+
+    fn lengths() -> impl Strategy<Value = (i64, i64)> {
+        prop_oneof![Just((1, 1)), Just((1, 3)), Just((3, 1)), Just((1, 7)), Just((2, 2))]
+    }
+
+    /// A tangency of contact order `k` (2: a parabola and its tangent; 3: a cubic and its
+    /// inflection tangent) at `s = τ` (dyadic, endpoints often) and `t = λ/(λ + μ)`. Yields the
+    /// curves and `(τ, t)`.
+    pub fn tangency(k: usize) -> impl Strategy<Value = (Curve, Curve, (BigRational, BigRational))> {
+        (unit_parameter(), lengths(), affine()).prop_filter_map("binary64", move |(tau, (l, m), (mx, o))| {
+            let a = exact(map(&monomial(k, &tau), mx, o))?;
+            let b = exact(map(&axis_line(l, m), mx, o))?;
+            Some((a, b, (tau, ratio(l, l + m))))
+        })
+    }
+
+    /// A line starting exactly on a cubic at `A(τ)` (`τ` dyadic): the hit `(τ, 0)` is at an end
+    /// of the line. Yields the curves and `τ`.
+    pub fn endpoint_hit() -> impl Strategy<Value = (Curve, Curve, BigRational)> {
+        (cubic(), unit_parameter(), (-64i64..=64, -64i64..=64)).prop_filter_map("binary64", |(a, tau, (dx, dy))| {
+            let p = a.eval(&tau);
+            let q = Point::new(vec![p.coords[0].clone() + rat(dx), p.coords[1].clone() + rat(dy)]);
+            if p == q {
+                return None;
+            }
+            let b = exact(BezierCurve::new(vec![p, q]).ok()?)?;
+            Some((a, b, tau))
+        })
+    }
+
+    /// A cubic and its own left piece up to `u ∈ {1/4, 1/2, 3/4}` (de Casteljau keeps dyadic
+    /// numbers dyadic): an overlap on `s ∈ [0, u]`. Yields the curves and `u`.
+    pub fn overlap() -> impl Strategy<Value = (Curve, Curve, BigRational)> {
+        (cubic(), prop_oneof![Just(ratio(1, 4)), Just(ratio(1, 2)), Just(ratio(3, 4))]).prop_filter_map(
+            "binary64 and not a point",
+            |(a, u)| {
+                let left = crate::curve::casteljau::subdivide(&a, &u).0;
+                let genuine = a.points().windows(2).any(|w| w[0] != w[1]);
+                (genuine).then_some(())?;
+                Some((a, exact(left)?, u))
+            },
+        )
+    }
+
+    /// Two arches whose bounding boxes touch along `x = 2` without the curves meeting: the first
+    /// ends at `(2, 0)`, the second starts at `(2, h)`, `h > 0`, and goes right.
+    pub fn touching_boxes() -> impl Strategy<Value = (Curve, Curve)> {
+        (1i64..=8, 1i64..=8, affine()).prop_filter_map("binary64", |(h, k, (m, o))| {
+            let pt = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
+            let a = BezierCurve::new(vec![pt(0, 0), pt(1, k), pt(2, 0)]).ok()?;
+            let b = BezierCurve::new(vec![pt(2, h), pt(3, h + k), pt(4, h)]).ok()?;
+            Some((exact(map(&a, m, o))?, exact(map(&b, m, o))?))
+        })
+    }
+
+    /// A line through the cusp of a cubic (cusp at the dyadic `τ`): they meet at `(τ, 1/2)`.
+    pub fn through_cusp() -> impl Strategy<Value = (Curve, Curve, BigRational)> {
+        (super::binary64::cusp_at(unit_parameter()), (-16i64..=16, -16i64..=16)).prop_filter_map(
+            "binary64 and a direction",
+            |((a, tau), (dx, dy))| {
+                if dx == 0 && dy == 0 {
+                    return None;
+                }
+                let p = a.eval(&tau);
+                let end =
+                    |s: i64| Point::new(vec![p.coords[0].clone() + rat(s * dx), p.coords[1].clone() + rat(s * dy)]);
+                let b = exact(BezierCurve::new(vec![end(-1), end(1)]).ok()?)?;
+                Some((a, b, tau))
+            },
+        )
+    }
+}

@@ -286,3 +286,93 @@ mod winding {
         assert!(stderr(&o).contains("not closed"), "{}", stderr(&o));
     }
 }
+
+mod hard_cases {
+    use super::*;
+    use casteljau::intersect::check_intersections_f64;
+    use casteljau::strategies::{binary64, intersections as hard};
+
+    fn pairs(a: &BezierCurve<BigRational>, b: &BezierCurve<BigRational>) -> Vec<(RealAlgebraic, RealAlgebraic, usize)> {
+        intersect_polynomial(a, b, Domain::Unit)
+            .unwrap()
+            .intersections
+            .into_iter()
+            .map(|i| (i.s, i.t, i.contact_order))
+            .collect()
+    }
+
+    fn r(x: &BigRational) -> RealAlgebraic {
+        RealAlgebraic::from(x.clone())
+    }
+
+    /// The right float answers pass the oracle; answering nothing misses every intersection.
+    fn oracle_round_trip(a: &BezierCurve<BigRational>, b: &BezierCurve<BigRational>) -> Result<(), TestCaseError> {
+        let (fa, fb) = (binary64::points(a), binary64::points(b));
+        let exact = intersect_polynomial(a, b, Domain::Unit).unwrap();
+        let right: Vec<(f64, f64)> = exact.intersections.iter().map(|i| (i.s_float, i.t_float)).collect();
+        prop_assert_eq!(check_intersections_f64(&fa, &fb, &right, 1e-12, Domain::Unit).unwrap(), vec![]);
+        let none = check_intersections_f64(&fa, &fb, &[], 1e-12, Domain::Unit).unwrap();
+        prop_assert_eq!(none.len(), exact.intersections.len());
+        let mut doubled = right.clone();
+        doubled.extend(right.first().copied());
+        doubled.push((7.0, 7.0));
+        let d = check_intersections_f64(&fa, &fb, &doubled, 1e-12, Domain::Unit).unwrap();
+        prop_assert_eq!(d.len(), 1 + usize::from(!right.is_empty()));
+        Ok(())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+
+        #[test]
+        fn hard_parabola_tangents_have_contact_two(case in hard::tangency(2)) {
+            let (a, b, (s, t)) = case;
+            prop_assert_eq!(pairs(&a, &b), vec![(r(&s), r(&t), 2)]);
+            oracle_round_trip(&a, &b)?;
+        }
+
+        #[test]
+        fn hard_inflection_tangents_have_contact_three(case in hard::tangency(3)) {
+            let (a, b, (s, t)) = case;
+            prop_assert_eq!(pairs(&a, &b), vec![(r(&s), r(&t), 3)]);
+            oracle_round_trip(&a, &b)?;
+        }
+
+        #[test]
+        fn hard_endpoint_hits_are_found(case in hard::endpoint_hit()) {
+            let (a, b, tau) = case;
+            let found = pairs(&a, &b);
+            prop_assert!(found.iter().any(|(s, t, _)| *s == r(&tau) && *t == r(&rat(0))), "{:?}", found);
+            oracle_round_trip(&a, &b)?;
+        }
+
+        #[test]
+        fn hard_overlaps_are_reported_as_arcs(case in hard::overlap()) {
+            let (a, b, u) = case;
+            match intersect_polynomial(&a, &b, Domain::Unit) {
+                Ok(x) => {
+                    prop_assert_eq!(x.overlaps.len(), 1);
+                    prop_assert_eq!(&x.overlaps[0].s, &[rat(0), u.clone()]);
+                    prop_assert_eq!(&x.overlaps[0].t, &[rat(0), rat(1)]);
+                }
+                // a cubic traced twice over (a turn-back on a line) is refused, not guessed
+                Err(e) => prop_assert!(e.to_string().contains("share a component"), "{}", e),
+            }
+        }
+
+        #[test]
+        fn hard_touching_boxes_do_not_intersect(case in hard::touching_boxes()) {
+            let (a, b) = case;
+            prop_assert!(pairs(&a, &b).is_empty());
+            oracle_round_trip(&a, &b)?;
+        }
+
+        #[test]
+        fn hard_lines_through_cusps_meet_them_there(case in hard::through_cusp()) {
+            let (a, b, tau) = case;
+            let found = pairs(&a, &b);
+            prop_assert!(found.iter().any(|(s, t, k)| *s == r(&tau) && *t == r(&casteljau::ratio(1, 2)) && *k >= 2), "{:?}", found);
+            oracle_round_trip(&a, &b)?;
+        }
+    }
+}
