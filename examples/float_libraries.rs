@@ -5,7 +5,9 @@
 //! every cubic of the CFF test fonts. Prints the disagreement table and one minimal example per
 //! (library, field, kind).
 //!
-//! `cargo run --release --example float_libraries -- [cases per family, default 2000]`
+//! `cargo run --release --example float_libraries -- [cases per family, default 2000]` (the
+//! intersection table at the end uses a tenth as many cases per family: exact intersection is
+//! slower).
 //!
 //! Settings, stated, not tuned: oracle tolerance `1e-6` in `t` (`--tol` of `casteljau check`),
 //! flo_curves' loop-search accuracy `1e-9`. Cases come from a fixed proptest seed.
@@ -110,6 +112,49 @@ fn run_case(t: &mut Tally, p: &[[f64; 2]], tol: &Tolerances) {
     }
 }
 
+/// flo_curves' cubic–line and cubic–cubic intersections, as `(s, t)` pairs.
+fn flo_intersections(a: &[[f64; 2]], b: &[[f64; 2]]) -> Vec<(f64, f64)> {
+    use flo_curves::BezierCurveFactory;
+    use flo_curves::bezier::{Curve, curve_intersects_curve_clip, curve_intersects_line};
+    let c = |p: &[f64; 2]| flo_curves::Coord2(p[0], p[1]);
+    let cubic = |p: &[[f64; 2]]| Curve::from_points(c(&p[0]), (c(&p[1]), c(&p[2])), c(&p[3]));
+    match b.len() {
+        2 => curve_intersects_line(&cubic(a), &(c(&b[0]), c(&b[1]))).into_iter().map(|(s, t, _)| (s, t)).collect(),
+        _ => curve_intersects_curve_clip(&cubic(a), &cubic(b), 1e-9).into_iter().collect(),
+    }
+}
+
+/// flo_curves' intersections checked by the exact oracle on the hard intersection families
+/// (cubic against line or cubic; control points exact `f64`s): cases with a disagreement.
+fn intersection_table(n: usize, runner: &mut TestRunner) {
+    use casteljau::intersect::{Domain, check_intersections_f64};
+    use casteljau::strategies::intersections as hard;
+    let fams: Vec<(&str, BoxedStrategy<(Curve, Curve)>)> = vec![
+        ("inflection tangent (contact 3)", hard::tangency(3).prop_map(|(a, b, _)| (a, b)).boxed()),
+        ("line starting on the cubic", hard::endpoint_hit().prop_map(|(a, b, _)| (a, b)).boxed()),
+        ("line through a cusp", hard::through_cusp().prop_map(|(a, b, _)| (a, b)).boxed()),
+        ("cubic and its own left piece (overlap)", hard::overlap().prop_map(|(a, b, _)| (a, b)).boxed()),
+        ("random dyadic cubics", (binary64::cubic(), binary64::cubic()).boxed()),
+    ];
+    println!("\n| intersection cases (flo_curves) | n | cases with a disagreement | missed | spurious | duplicate |");
+    println!("| --- | ---: | ---: | ---: | ---: | ---: |");
+    for (name, s) in fams {
+        let (mut wrong, mut kinds) = (0, BTreeMap::<&str, usize>::new());
+        for _ in 0..n {
+            let (a, b) = s.new_tree(runner).expect("strategy").current();
+            let (pa, pb) = (binary64::points(&a), binary64::points(&b));
+            let float = flo_intersections(&pa, &pb);
+            let Ok(d) = check_intersections_f64(&pa, &pb, &float, 1e-6, Domain::Unit) else { continue };
+            wrong += usize::from(!d.is_empty());
+            for x in d {
+                *kinds.entry(x.kind.as_str()).or_default() += 1;
+            }
+        }
+        let k = |s: &str| kinds.get(s).copied().unwrap_or(0);
+        println!("| {name} | {n} | {wrong} | {} | {} | {} |", k("missed"), k("spurious"), k("duplicate"));
+    }
+}
+
 fn main() {
     let n: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(2000);
     let tol = Tolerances { parameter: 1e-6, point: 1e-6 };
@@ -158,4 +203,5 @@ fn main() {
         let (curve, d) = &all.example[k];
         println!("| {} | {} | {} | {count} | `{curve}` | `{}` | `{}` |", k.0, k.1, k.2, d.exact, d.float);
     }
+    intersection_table(n / 10, &mut runner);
 }
