@@ -376,3 +376,23 @@ mod hard_cases {
         }
     }
 }
+
+#[test]
+fn cli_intersect_plot_marks_tangencies_and_overlaps() {
+    let dir = std::env::temp_dir().join(format!("casteljau-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("t.svg");
+    let o = run(&["intersect", "--plot", f.to_str().unwrap(), "0 0, 2 4, -1 4, 3 0", "-1 3, 4 3"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&f).unwrap();
+    assert!(svg.contains("tangent, order 2"), "{svg}");
+    let g = dir.join("o.svg");
+    run(&["intersect", "--plot", g.to_str().unwrap(), "0 0, 1 2, 2 0", "0 0, 1/2 1, 1 1"], None);
+    assert!(std::fs::read_to_string(&g).unwrap().contains("#ff9900"));
+    // one pair only
+    assert_eq!(
+        run(&["intersect", "--plot", f.to_str().unwrap(), "--input", "-"], Some("0 0, 1 1 ; 0 1, 1 0\n")).status.code(),
+        Some(2)
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

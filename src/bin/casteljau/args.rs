@@ -628,6 +628,9 @@ pub struct IntersectArgs {
     /// Weights of the first curve (a rational curve).
     #[arg(long, allow_hyphen_values = true)]
     pub weights_a: Option<String>,
+    /// Also draw the pair with its intersections, tangencies and overlaps into this SVG file.
+    #[arg(long)]
+    pub plot: Option<std::path::PathBuf>,
     /// Weights of the second curve.
     #[arg(long, allow_hyphen_values = true)]
     pub weights_b: Option<String>,

@@ -82,6 +82,16 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
         }
     };
     let domain = if args.all { Domain::All } else { Domain::Unit };
+    if let Some(path) = &args.plot {
+        let Some(pair) = single.as_deref() else {
+            eprintln!("casteljau: --plot draws one pair (give A B, not --input)");
+            return 2;
+        };
+        if let Err(e) = plot(pair, args.self_intersection, mode, &wa, &wb, domain, path) {
+            eprintln!("casteljau: --plot: {e}");
+            return 2;
+        }
+    }
     let curve_args = CurveArgs {
         curve: single,
         input: args.input.clone(),
@@ -191,4 +201,56 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
             serde_json::json!({"winding": total, "inside": total != 0, "even_odd": total % 2 != 0}),
         )))
     })
+}
+
+/// `--plot FILE`: both curves (blue and green), transversal hits as black dots, tangencies as red
+/// dots labelled with their contact order, overlaps as a thick orange band; written atomically.
+fn plot(
+    pair: &str,
+    self_mode: bool,
+    mode: NumberMode,
+    wa: &Option<Vec<BigRational>>,
+    wb: &Option<Vec<BigRational>>,
+    domain: Domain,
+    path: &std::path::Path,
+) -> Result<()> {
+    use casteljau::plot::{Figure, draw_rational, write_atomically};
+    let (a, b) = if self_mode {
+        let a = curve(pair, None, mode, wa)?;
+        (a, None)
+    } else {
+        let (x, y) = pair.split_once(';').expect("a pair");
+        (curve(x, None, mode, wa)?, Some(curve(y, None, mode, wb)?))
+    };
+    let r = match &b {
+        Some(b) => intersect(&a, b, domain)?,
+        None => self_intersect(&a, domain)?,
+    };
+    let mut fig = Figure::new().title(if self_mode { "self-intersections" } else { "intersections" });
+    draw_rational(&mut fig, &a, "#1f5fbf", false);
+    if let Some(b) = &b {
+        draw_rational(&mut fig, b, "#2e8b57", false);
+    }
+    for o in &r.overlaps {
+        let n = 64;
+        let pts: Vec<(f64, f64)> = (0..=n)
+            .filter_map(|k| {
+                let s = o.s[0].clone() + (o.s[1].clone() - &o.s[0]) * BigRational::new(k.into(), n.into());
+                let p = a.eval(&s).ok()?.to_f64();
+                Some((p.coords[0], p.coords[1]))
+            })
+            .collect();
+        fig.polyline(pts, "#ff9900", 7.0, false);
+    }
+    for i in &r.intersections {
+        let at = (i.point_float[0], i.point_float[1]);
+        if i.contact_order > 1 {
+            fig.dot(at, 5.0, "#d62728");
+            fig.label(at, &format!("tangent, order {}", i.contact_order), "#d62728");
+        } else {
+            fig.dot(at, 4.0, "#000000");
+        }
+    }
+    write_atomically(path, fig.to_svg(640).as_bytes())
+        .map_err(|e| Error::InvalidArgument { message: format!("cannot write {}: {e}", path.display()) })
 }
