@@ -170,6 +170,18 @@ pub fn root_isolation(n: usize, beta: u64) -> f64 {
     250.0 * nf * nf * limbs(beta.saturating_add(n as u64))
 }
 
+/// Exact intersection of a degree-`n` and a degree-`m` planar curve with `beta`-bit
+/// coefficients: a Sylvester determinant of size `2m` over polynomials of degree up to `nm`,
+/// whose resultant (degree `d = nm`, about `2·max(n, m)·(beta + 4)` bits) is isolated and whose
+/// roots are mapped and compared: `1330·d⁴·limbs²`, calibrated on font-like pairs (3 × 3:
+/// 35 ms estimated 35 ms; 5 × 5: 5.8 s measured, 4.7 s estimated).
+pub fn intersection(n: usize, m: usize, beta: u64) -> f64 {
+    let d = (n.max(1) * m.max(1)) as f64;
+    let bits = 2 * n.max(m) as u64 * beta.saturating_add(4);
+    let l = limbs(bits);
+    1330.0 * d * d * d * d * l * l
+}
+
 /// One subdivision step of root isolation (degree `n`, `beta`-bit coefficients).
 pub fn root_split(n: usize, beta: u64) -> f64 {
     let nf = n as f64;

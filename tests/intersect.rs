@@ -396,3 +396,18 @@ fn cli_intersect_plot_marks_tangencies_and_overlaps() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn cli_intersect_refuses_work_beyond_the_budget_naming_the_option() {
+    let pts = |n: i64| (0..n).map(|i| format!("{} {}", i * 37 % 101, i * i % 53)).collect::<Vec<_>>().join(", ");
+    let o = run(&["intersect", &pts(11), &pts(11)], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--max-work"), "{}", stderr(&o));
+    // huge coordinates: refused before any work
+    let big = format!("0 0, 1{} 1, 2 0, 3 1", "0".repeat(990));
+    let o = run(&["intersect", &big, "0 1, 1 0, 2 1, 3 0"], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("estimated work"), "{}", stderr(&o));
+    // and the library without a budget still answers small cases
+    assert_eq!(run(&["intersect", "--max-work", "1e9", "0 0, 1 1", "0 1, 1 0"], None).status.code(), Some(0));
+}

@@ -236,8 +236,28 @@ pub fn intersect(
     b: &RationalBezier<BigRational>,
     domain: Domain,
 ) -> Result<Intersections> {
+    intersect_within(a, b, domain, &crate::work::Budget::unlimited())
+}
+
+/// The estimated work of intersecting `a` with `b` ([`crate::work::intersection`]).
+fn estimate(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>) -> f64 {
+    let beta = |c: &RationalBezier<BigRational>| crate::work::max_bits(c.homogeneous().points());
+    crate::work::intersection(a.degree(), b.degree(), beta(a).max(beta(b)))
+}
+
+/// [`intersect`] within a work budget, checked before any work starts.
+///
+/// # Errors
+/// As [`intersect`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+pub fn intersect_within(
+    a: &RationalBezier<BigRational>,
+    b: &RationalBezier<BigRational>,
+    domain: Domain,
+    budget: &crate::work::Budget,
+) -> Result<Intersections> {
     check(a, domain)?;
     check(b, domain)?;
+    budget.check(format!("intersecting degree {} with degree {}", a.degree(), b.degree()), estimate(a, b))?;
     let (fa, fb) = (integer_forms(a), integer_forms(b));
     let r = {
         let f = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]);
@@ -305,7 +325,20 @@ fn divided_difference(f: &[BigInt], w: &[BigInt]) -> Vec<zv::P> {
 /// As [`intersect`]; [`Error::InvalidArgument`] when the curve traces itself more than once
 /// (every point is a self-intersection).
 pub fn self_intersect(a: &RationalBezier<BigRational>, domain: Domain) -> Result<Intersections> {
+    self_intersect_within(a, domain, &crate::work::Budget::unlimited())
+}
+
+/// [`self_intersect`] within a work budget, checked before any work starts.
+///
+/// # Errors
+/// As [`self_intersect`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+pub fn self_intersect_within(
+    a: &RationalBezier<BigRational>,
+    domain: Domain,
+    budget: &crate::work::Budget,
+) -> Result<Intersections> {
     check(a, domain)?;
+    budget.check(format!("self-intersecting degree {}", a.degree()), estimate(a, a))?;
     let fa = integer_forms(a);
     let dx = divided_difference(&fa[0], &fa[2]);
     let dy = divided_difference(&fa[1], &fa[2]);

@@ -631,6 +631,10 @@ pub struct IntersectArgs {
     /// Also draw the pair with its intersections, tangencies and overlaps into this SVG file.
     #[arg(long)]
     pub plot: Option<std::path::PathBuf>,
+    /// Work budget per pair, in work units (about 1 ns each): a pair whose estimated cost exceeds
+    /// it is refused (exit 2) before any work starts.
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
     /// Weights of the second curve.
     #[arg(long, allow_hyphen_values = true)]
     pub weights_b: Option<String>,

@@ -5,7 +5,7 @@
 use crate::args::{CurveArgs, IntersectArgs};
 use crate::batch::{Answer, Json, batch_lines, numbers_in};
 use casteljau::error::{Error, Result};
-use casteljau::intersect::{Domain, Intersections, intersect, self_intersect};
+use casteljau::intersect::{Domain, Intersections, intersect, intersect_within, self_intersect, self_intersect_within};
 use casteljau::num::parse::{NumberMode, parse_points_in};
 use casteljau::num::scalar::rat;
 use casteljau::rational::RationalBezier;
@@ -103,14 +103,15 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
         numbers: args.numbers,
     };
     let self_mode = args.self_intersection;
+    let budget = casteljau::work::Budget::new(args.max_work, "--max-work");
     batch_lines(&curve_args, out, |line, text_line| {
         let r = if self_mode {
-            self_intersect(&curve(text_line, line, mode, &wa)?, domain)?
+            self_intersect_within(&curve(text_line, line, mode, &wa)?, domain, &budget)?
         } else {
             let (a, b) = text_line
                 .split_once(';')
                 .ok_or_else(|| Error::InvalidArgument { message: "a pair of curves is written \"A ; B\"".into() })?;
-            intersect(&curve(a, line, mode, &wa)?, &curve(b, line, mode, &wb)?, domain)?
+            intersect_within(&curve(a, line, mode, &wa)?, &curve(b, line, mode, &wb)?, domain, &budget)?
         };
         let json = serde_json::to_string(&r).expect("exact strings and finite floats serialize");
         Ok(Answer { text: text(&r), json: Json::Object(json), failed: false })
