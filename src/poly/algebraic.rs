@@ -116,10 +116,33 @@ fn shifted(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<BigRati
 /// The distinct real roots of `p` (power form) in the closed interval `[lo, hi]`, ascending, as
 /// exact rationals or isolating open intervals of the square-free part.
 fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Root> {
-    let q = shifted(p, lo, hi);
-    let n = q.len() - 1;
-    let m = power_to_bernstein_matrix(n);
-    let b: Vec<BigRational> = (0..=n).map(|i| (0..=n).fold(rat(0), |acc, k| acc + &m[i][k] * &q[k])).collect();
+    // in integers: with lo = L/D and hi − lo = V/D, D^n·p(lo + (hi − lo)s) has integer
+    // coefficients (a positive multiple: the same roots and signs), by homogeneous Horner
+    let c = to_integer(p);
+    let n = c.len() - 1;
+    let w = hi.clone() - lo;
+    let d = num_integer::Integer::lcm(lo.denom(), w.denom());
+    let l = lo.numer() * (&d / lo.denom());
+    let v = w.numer() * (&d / w.denom());
+    let mut dpow = vec![BigInt::one()];
+    for _ in 0..n {
+        let last = dpow[dpow.len() - 1].clone();
+        dpow.push(last * &d);
+    }
+    let mut q: Vec<BigInt> = vec![];
+    for k in (0..=n).rev() {
+        // q ← q·(l + v s) + c_k·D^(n−k)
+        let mut next = vec![BigInt::zero(); q.len() + 1];
+        for (i, a) in q.iter().enumerate() {
+            next[i] += a * &l;
+            next[i + 1] += a * &v;
+        }
+        next[0] += &c[k] * &dpow[n - k];
+        q = next;
+    }
+    q.truncate(n + 1);
+    let b: Vec<BigRational> =
+        crate::poly::roots::power_to_bernstein_integer(&q).into_iter().map(BigRational::from_integer).collect();
     let map = |s: BigRational| lo.clone() + (hi.clone() - lo) * s;
     isolate_bernstein(&b)
         .unwrap_or_default()

@@ -171,7 +171,7 @@ fn bernstein_to_power_integer(b: &[BigInt]) -> Vec<BigInt> {
 /// A positive multiple of the Bernstein coefficients of `Σ c_k t^k` (degree `n`), on
 /// integers: `b_i = Σ_{k≤i} C(i,k)/C(n,k) c_k = Σ_{k≤i} C(n−k, i−k) c_k / C(n,i)`, scaled by
 /// `L = lcm_i C(n,i)`.
-fn power_to_bernstein_integer(c: &[BigInt]) -> Vec<BigInt> {
+pub(crate) fn power_to_bernstein_integer(c: &[BigInt]) -> Vec<BigInt> {
     let n = c.len() - 1;
     let rows = binomial_rows(n);
     let l = rows[n].iter().fold(BigInt::from(1), |acc, x| acc.lcm(x));
