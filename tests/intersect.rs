@@ -411,3 +411,17 @@ fn cli_intersect_refuses_work_beyond_the_budget_naming_the_option() {
     // and the library without a budget still answers small cases
     assert_eq!(run(&["intersect", "--max-work", "1e9", "0 0, 1 1", "0 1, 1 0"], None).status.code(), Some(0));
 }
+
+#[test]
+fn intersect_all_parameters_skips_common_points_at_infinity() {
+    // both weights (1, −1, 1) vanish at t = 1/2: the curves meet only at infinity there; with
+    // every real parameter allowed that is not an intersection in the plane (it used to panic)
+    let o = run(
+        &["intersect", "--all", "--weights-a", "1 -1 1", "--weights-b", "1 -1 1", "0 0, 1 1, 2 0", "0 1, 1 2, 2 1"],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o), "no intersections\n");
+    let o = run(&["intersect", "--self", "--all", "--weights-a", "1 -1 1", "0 0, 1 1, 2 0"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}

@@ -171,6 +171,13 @@ fn roots(r: &[BigInt], domain: Domain) -> Vec<RealAlgebraic> {
     }
 }
 
+/// The roots where the curve's weight does not vanish (with every real parameter allowed, a
+/// root where it does is a common point at infinity, not an intersection in the plane).
+fn finite_roots(roots: Vec<RealAlgebraic>, f: &[Vec<BigInt>; 3]) -> Vec<RealAlgebraic> {
+    let w = to_rational(&f[2]);
+    roots.into_iter().filter(|x| x.sign_of(&w) != Ordering::Equal).collect()
+}
+
 /// The multiplicity of `x` as a root of `r`.
 fn multiplicity(r: &[BigRational], x: &RealAlgebraic) -> usize {
     let mut p = r.to_vec();
@@ -272,7 +279,10 @@ pub fn intersect_within(
         let g = cross_system(&fb[1], &fb[2], &fa[1], &fa[2]);
         resultant_zv(&f, &g)
     };
-    let (ss, ts) = (roots(&r, domain), roots(&t_poly, domain));
+    // with every real parameter allowed, a root where a weight vanishes is a common point at
+    // infinity, not an intersection in the plane
+    let ss = finite_roots(roots(&r, domain), &fa);
+    let ts = finite_roots(roots(&t_poly, domain), &fb);
     let (rr, tr) = (to_rational(&r), to_rational(&t_poly));
     let pa: Vec<[RealAlgebraic; 2]> = ss.iter().map(|s| point_at(&fa, s)).collect();
     let pb: Vec<[RealAlgebraic; 2]> = ts.iter().map(|t| point_at(&fb, t)).collect();
@@ -357,7 +367,7 @@ pub fn self_intersect_within(
                 .into(),
         });
     }
-    let ss = roots(&r, domain);
+    let ss = finite_roots(roots(&r, domain), &fa);
     let rr = to_rational(&r);
     let pts: Vec<[RealAlgebraic; 2]> = ss.iter().map(|s| point_at(&fa, s)).collect();
     let mut out = vec![];
