@@ -389,9 +389,11 @@ fn cli_intersect_plot_marks_tangencies_and_overlaps() {
     let g = dir.join("o.svg");
     run(&["intersect", "--plot", g.to_str().unwrap(), "0 0, 1 2, 2 0", "0 0, 1/2 1, 1 1"], None);
     assert!(std::fs::read_to_string(&g).unwrap().contains("#ff9900"));
-    // one pair only
+    // one pair only (a file, not stdin: the command refuses before reading)
+    let batch = dir.join("pairs.txt");
+    std::fs::write(&batch, "0 0, 1 1 ; 0 1, 1 0\n").unwrap();
     assert_eq!(
-        run(&["intersect", "--plot", f.to_str().unwrap(), "--input", "-"], Some("0 0, 1 1 ; 0 1, 1 0\n")).status.code(),
+        run(&["intersect", "--plot", f.to_str().unwrap(), "--input", batch.to_str().unwrap()], None).status.code(),
         Some(2)
     );
     std::fs::remove_dir_all(&dir).unwrap();
