@@ -147,16 +147,19 @@ proptest! {
 
 #[test]
 fn oracle_decides_the_tolerance_exactly() {
-    // loop at t = 1/2 ± √15/10: the printed f64s are the nearest ones, within 1e-16 of the exact
-    // parameters but not equal to them (irrational), so tolerance 1e-16 passes and 0 fails
+    // loop at t = 1/2 ± √15/10 (irrational). The correctly rounded f64s agree even with tolerance
+    // 0 (a tolerance is never tighter than one ulp); the f64 four steps below the nearest one of
+    // the first parameter is more than an ulp away: it needs tolerance 1e-16
     let pts = [[0.0, 0.0], [2.0, 2.0], [-1.0, 2.0], [1.0, 0.0]];
-    let a = FloatAnswers {
-        self_intersection_parameters: Some(vec![0.1127016653792583, 0.8872983346207417]),
+    let answers = |s0: f64| FloatAnswers {
+        self_intersection_parameters: Some(vec![s0, 0.8872983346207417]),
         ..Default::default()
     };
     let tol = |t: f64| Tolerances { parameter: t, point: 0.0 };
+    assert!(check_f64(&pts, &answers(0.11270166537925831), &tol(0.0)).unwrap().is_empty());
+    let a = answers(f64::from_bits(0.11270166537925831f64.to_bits() - 4));
     assert!(check_f64(&pts, &a, &tol(1e-16)).unwrap().is_empty());
-    assert_eq!(check_f64(&pts, &a, &tol(0.0)).unwrap().len(), 4); // two spurious, two missed
+    assert_eq!(check_f64(&pts, &a, &tol(0.0)).unwrap().len(), 2); // one spurious, one missed
     assert!(check_f64(&pts, &a, &tol(-1.0)).is_err());
     assert!(check_f64(&[[f64::NAN, 0.0], [1.0, 1.0]], &a, &tol(0.0)).is_err());
 }

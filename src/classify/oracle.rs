@@ -20,7 +20,9 @@
 //! An exact parameter on `[0, 1]` matched by no float parameter is **missed**; a float parameter
 //! matching no exact parameter of the curve (on `[0, 1]` or not) is **spurious**; a second float
 //! parameter matching an exact parameter already matched is a **duplicate**. Points: the distance
-//! in each coordinate is at most `point_tol`, exactly.
+//! in each coordinate is at most `point_tol`, exactly. A tolerance is never tighter than the
+//! spacing of `f64`s at the float value (one ulp), so the correctly rounded exact answer always
+//! agrees — a coordinate near 2·10⁷ cannot be written within 1e-9 in binary64.
 //!
 //! # Example
 //! ```
@@ -244,9 +246,17 @@ pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> 
     out
 }
 
+/// `tol`, but never tighter than one ulp at the float value `p`: the correctly rounded exact
+/// answer always agrees.
+fn effective_tolerance(p: &BigRational, tol: f64) -> BigRational {
+    let f = crate::num::scalar::ratio_to_f64(p).abs();
+    let ulp = if f.is_finite() { f.next_up() - f } else { 0.0 };
+    BigRational::from_float(tol.max(ulp)).expect("finite tolerance")
+}
+
 /// `|e − p| ≤ tol`, exactly.
 fn within(e: &Parameter, p: &BigRational, tol: f64) -> bool {
-    let tol = BigRational::from_float(tol).expect("finite tolerance");
+    let tol = effective_tolerance(p, tol);
     let lo = e.clone() - QuadraticExt::from_base(p.clone() + &tol);
     let hi = e.clone() - QuadraticExt::from_base(p.clone() - &tol);
     lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less
@@ -264,7 +274,6 @@ fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[P
     let mut matched = vec![false; exact.len()];
     let mut sorted: Vec<f64> = float.to_vec();
     sorted.sort_by(f64::total_cmp);
-    let tol_q = BigRational::from_float(tol).expect("finite tolerance");
     let mut j = 0;
     for p in sorted {
         let Some(q) = BigRational::from_float(p) else {
@@ -278,7 +287,7 @@ fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[P
             continue;
         };
         // exact parameters below p − tol can match no later float
-        let low = QuadraticExt::from_base(q.clone() - &tol_q);
+        let low = QuadraticExt::from_base(q.clone() - effective_tolerance(&q, tol));
         while j < exact.len() && (exact[j].clone() - low.clone()).sign() == Ordering::Less {
             j += 1;
         }

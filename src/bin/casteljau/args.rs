@@ -638,7 +638,15 @@ pub struct IntersectArgs {
     /// Weights of the second curve.
     #[arg(long, allow_hyphen_values = true)]
     pub weights_b: Option<String>,
-    /// A batch file: one pair "A ; B" per line (one curve with --self); '-' for stdin.
+    /// Batch input ("A ; B" per line, one curve with --self), output form, threads, numbers.
+    #[command(flatten)]
+    pub batch: BatchOptions,
+}
+
+/// The batch options of commands whose lines are not single curves (`intersect`, `winding`).
+#[derive(Args, Debug)]
+pub struct BatchOptions {
+    /// A batch file, one question per line ('-' for stdin).
     #[arg(long, short)]
     pub input: Option<String>,
     /// JSON Lines output with exact strings.
@@ -655,6 +663,22 @@ pub struct IntersectArgs {
     pub numbers: Numbers,
 }
 
+impl BatchOptions {
+    /// The batch reader's arguments, with `line` as the single question (or `--input`).
+    pub fn curve_args(&self, line: Option<String>) -> CurveArgs {
+        CurveArgs {
+            curve: line,
+            input: self.input.clone(),
+            dim: 2,
+            json: self.json,
+            threads: self.threads,
+            quiet: self.quiet,
+            max_work: casteljau::work::DEFAULT_MAX_WORK,
+            numbers: self.numbers,
+        }
+    }
+}
+
 /// `casteljau winding`.
 #[derive(Args, Debug)]
 pub struct WindingArgs {
@@ -669,19 +693,7 @@ pub struct WindingArgs {
     /// the windings add up.
     #[arg(long)]
     pub svg: bool,
-    /// A batch file, one path per line ('-' for stdin).
-    #[arg(long, short)]
-    pub input: Option<String>,
-    /// JSON Lines output.
-    #[arg(long)]
-    pub json: bool,
-    /// Threads answering a batch (0: all cores).
-    #[arg(long, default_value_t = 0)]
-    pub threads: usize,
-    /// No progress line on a terminal.
-    #[arg(long, short)]
-    pub quiet: bool,
-    /// How numbers are read: `exact` or `binary64`.
-    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
-    pub numbers: Numbers,
+    /// Batch input (one path per line), output form, threads, numbers.
+    #[command(flatten)]
+    pub batch: BatchOptions,
 }

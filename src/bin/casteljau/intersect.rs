@@ -2,7 +2,7 @@
 //! (`casteljau::intersect`), one answer per pair; batch lines hold `A ; B` (or one curve with
 //! `--self`).
 
-use crate::args::{CurveArgs, IntersectArgs};
+use crate::args::IntersectArgs;
 use crate::batch::{Answer, Json, batch_lines, numbers_in};
 use casteljau::error::{Error, Result};
 use casteljau::intersect::{Domain, Intersections, intersect, intersect_within, self_intersect, self_intersect_within};
@@ -59,7 +59,7 @@ fn text(r: &Intersections) -> String {
 
 /// Runs `intersect`; returns the exit code.
 pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
-    let mode: NumberMode = args.numbers.into();
+    let mode: NumberMode = args.batch.numbers.into();
     let parse_w = |w: &Option<String>, name: &str| w.as_deref().map(|w| numbers_in(name, w, mode)).transpose();
     let (wa, wb) = match (parse_w(&args.weights_a, "--weights-a"), parse_w(&args.weights_b, "--weights-b")) {
         (Ok(a), Ok(b)) => (a, b),
@@ -92,16 +92,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
             return 2;
         }
     }
-    let curve_args = CurveArgs {
-        curve: single,
-        input: args.input.clone(),
-        dim: 2,
-        json: args.json,
-        threads: args.threads,
-        quiet: args.quiet,
-        max_work: casteljau::work::DEFAULT_MAX_WORK,
-        numbers: args.numbers,
-    };
+    let curve_args = args.batch.curve_args(single);
     let self_mode = args.self_intersection;
     let budget = casteljau::work::Budget::new(args.max_work, "--max-work");
     batch_lines(&curve_args, out, |line, text_line| {
@@ -126,7 +117,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
 pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 {
     use casteljau::format::{Segment, svg_path};
     use casteljau::intersect::winding::{Winding, winding_number};
-    let mode: NumberMode = args.numbers.into();
+    let mode: NumberMode = args.batch.numbers.into();
     let q = match parse_points_in(&args.point, 2, None, mode) {
         Ok(p) if p.len() == 1 => p.into_iter().next().expect("one point"),
         Ok(p) => {
@@ -139,16 +130,7 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
         }
     };
     let svg = args.svg;
-    let curve_args = CurveArgs {
-        curve: args.path.clone(),
-        input: args.input.clone(),
-        dim: 2,
-        json: args.json,
-        threads: args.threads,
-        quiet: args.quiet,
-        max_work: casteljau::work::DEFAULT_MAX_WORK,
-        numbers: args.numbers,
-    };
+    let curve_args = args.batch.curve_args(args.path.clone());
     batch_lines(&curve_args, out, |line, text_line| {
         let subpaths: Vec<Vec<casteljau::BezierCurve<BigRational>>> = if svg {
             let contours = svg_path::parse_path(text_line, mode)?;
