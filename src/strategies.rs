@@ -177,8 +177,16 @@ fn coincident_from(
 /// A near-cusp: the exact cusp `(0,0) (1,1) (0,1) (1,0)` (cusp at t = 1/2) with `P1.y` moved by
 /// `±10^-k`, `k` from `exponents`. Exactly a crunode or an acnode, never a cusp.
 pub fn near_cusp(exponents: std::ops::RangeInclusive<u32>) -> impl Strategy<Value = (BezierCurve<BigRational>, u32)> {
-    (exponents, prop_oneof![Just(1i64), Just(-1i64)]).prop_map(|(k, sign)| {
-        let eps = BigRational::new(BigInt::from(sign), BigInt::from(10).pow(k));
+    near_cusp_in_base(exponents, 10)
+}
+
+/// The cusp `(0,0) (1,1) (0,1) (1,0)` with `P1.y` moved by `±base^-k`.
+fn near_cusp_in_base(
+    exponents: std::ops::RangeInclusive<u32>,
+    base: u32,
+) -> impl Strategy<Value = (BezierCurve<BigRational>, u32)> {
+    (exponents, prop_oneof![Just(1i64), Just(-1i64)]).prop_map(move |(k, sign)| {
+        let eps = BigRational::new(BigInt::from(sign), BigInt::from(base).pow(k));
         let pts = [(0, 0), (1, 1), (0, 1), (1, 0)]
             .iter()
             .enumerate()
@@ -208,7 +216,6 @@ pub mod binary64 {
     use crate::curve::bezier::BezierCurve;
     use crate::num::point::Point;
     use crate::num::scalar::{rat, ratio};
-    use num_bigint::BigInt;
     use num_rational::BigRational;
     use proptest::prelude::*;
 
@@ -336,17 +343,8 @@ pub mod binary64 {
     pub fn near_cusp(
         exponents: std::ops::RangeInclusive<u32>,
     ) -> impl Strategy<Value = (BezierCurve<BigRational>, u32)> {
-        let (lo, hi) = (*exponents.start(), (*exponents.end()).min(52));
-        (lo..=hi.max(lo), prop_oneof![Just(1i64), Just(-1i64)]).prop_map(|(k, sign)| {
-            let k = k.min(52);
-            let eps = BigRational::new(BigInt::from(sign), BigInt::from(2).pow(k));
-            let pts = [(0, 0), (1, 1), (0, 1), (1, 0)]
-                .iter()
-                .enumerate()
-                .map(|(i, &(x, y))| Point::new(vec![rat(x), if i == 1 { rat(y) + &eps } else { rat(y) }]))
-                .collect();
-            (BezierCurve::new(pts).unwrap(), k)
-        })
+        let (lo, hi) = (*exponents.start().min(&52), (*exponents.end()).min(52));
+        super::near_cusp_in_base(lo..=hi.max(lo), 2)
     }
 }
 

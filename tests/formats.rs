@@ -173,10 +173,11 @@ fn svg_document_shapes_in_order_with_transforms_applied() {
     assert_eq!(ok(3), v(&[&["(0, 0)", "(3, 4)"]]));
     assert_eq!(ok(4).len(), 2);
     assert_eq!(ok(5), v(&[&["(0, 0)", "(4, 0)"], &["(4, 0)", "(4, 3)"], &["(4, 3)", "(0, 0)"]]));
-    assert!(shapes[6].contours.as_ref().unwrap_err().contains("not a polynomial Bézier"));
-    assert!(shapes[7].contours.as_ref().unwrap_err().contains("irrational"));
-    assert!(shapes[8].contours.as_ref().unwrap_err().contains("1em"));
-    assert!(shapes[9].contours.as_ref().unwrap_err().contains("column"));
+    let problem = |i: usize| shapes[i].contours.as_ref().unwrap_err();
+    assert!(problem(6).is_skipped() && problem(6).to_string().contains("not a polynomial Bézier"));
+    assert!(problem(7).is_skipped() && problem(7).to_string().contains("irrational"));
+    assert!(!problem(8).is_skipped() && problem(8).to_string().contains("1em"));
+    assert!(!problem(9).is_skipped() && problem(9).to_string().contains("column"));
     assert_eq!(shapes[9].line, 17);
 }
 

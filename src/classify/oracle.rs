@@ -40,7 +40,7 @@ use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::quadratic_field::QuadraticExt;
-use crate::num::scalar::{Exact, Scalar, rat};
+use crate::num::scalar::{Exact, Scalar};
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
@@ -262,10 +262,6 @@ fn within(e: &Parameter, p: &BigRational, tol: f64) -> bool {
     lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less
 }
 
-fn in_unit(e: &Parameter) -> bool {
-    e.sign() != Ordering::Less && (QuadraticExt::from_base(rat(1)) - e.clone()).sign() != Ordering::Less
-}
-
 /// Matches float parameters to the exact ones (ascending) so that as many as possible agree: in
 /// ascending order each float takes the smallest unmatched exact parameter within `tol` (optimal
 /// for matching points to intervals of one width); what is left over is spurious, duplicate or
@@ -314,7 +310,7 @@ fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[P
         }
     }
     for (e, m) in exact.iter().zip(matched) {
-        if !m && in_unit(e) {
+        if !m && super::in_unit_interval(e) {
             out.push(Disagreement {
                 field,
                 kind: Kind::Missed,

@@ -46,10 +46,51 @@ pub struct SvgShape {
     pub tag: String,
     /// 1-based line of the element in the file.
     pub line: usize,
-    /// The subpaths in user space (all transforms applied), or why the element could not be
-    /// read exactly (bad path data, a non-rational transform, a circle or ellipse).
-    pub contours: std::result::Result<Vec<Contour>, String>,
+    /// The subpaths in user space (all transforms applied), or why the element is not read:
+    /// skipped (a circle or ellipse, a non-rational transform) or invalid (bad path data, a unit).
+    pub contours: std::result::Result<Vec<Contour>, ShapeProblem>,
 }
+
+/// Why a shape element gives no contours.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ShapeProblem {
+    /// Not a polynomial Bézier shape, or under a transform that is not rational: left out on
+    /// purpose, never approximated (not an error of the file).
+    Skipped(String),
+    /// Malformed: bad numbers or path data, unsupported units or transforms.
+    Invalid(String),
+}
+
+impl ShapeProblem {
+    /// `true` for [`ShapeProblem::Skipped`].
+    pub fn is_skipped(&self) -> bool {
+        matches!(self, ShapeProblem::Skipped(_))
+    }
+
+    /// The same kind of problem with `prefix` before its text.
+    fn within(self, prefix: &str) -> Self {
+        match self {
+            ShapeProblem::Skipped(m) => ShapeProblem::Skipped(format!("{prefix}{m}")),
+            ShapeProblem::Invalid(m) => ShapeProblem::Invalid(format!("{prefix}{m}")),
+        }
+    }
+}
+
+impl From<String> for ShapeProblem {
+    fn from(m: String) -> Self {
+        ShapeProblem::Invalid(m)
+    }
+}
+
+impl std::fmt::Display for ShapeProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ShapeProblem::Skipped(m) | ShapeProblem::Invalid(m) => f.write_str(m),
+        }
+    }
+}
+
+type ShapeResult<T> = std::result::Result<T, ShapeProblem>;
 
 /// The shape elements of an SVG document (see the module documentation).
 ///
@@ -95,13 +136,13 @@ fn pt(x: BigRational, y: BigRational) -> P {
 }
 
 /// The element's own contours in its user space.
-fn shape(node: roxmltree::Node<'_, '_>, tag: &str, mode: NumberMode) -> std::result::Result<Vec<Contour>, String> {
+fn shape(node: roxmltree::Node<'_, '_>, tag: &str, mode: NumberMode) -> ShapeResult<Vec<Contour>> {
     let len = |name: &str| length(node, name, mode);
     let line = |a: P, b: P| Segment::Bezier(vec![a, b]);
     match tag {
         "path" => match node.attribute("d") {
             None => Ok(vec![]),
-            Some(d) => svg_path::parse_path(d, mode).map_err(|e| format!("d: {e}")),
+            Some(d) => svg_path::parse_path(d, mode).map_err(|e| format!("d: {e}").into()),
         },
         "line" => Ok(vec![Contour {
             segments: vec![line(pt(len("x1")?, len("y1")?), pt(len("x2")?, len("y2")?))],
@@ -130,13 +171,15 @@ fn shape(node: roxmltree::Node<'_, '_>, tag: &str, mode: NumberMode) -> std::res
             Ok(if segments.is_empty() { vec![] } else { vec![Contour { segments, closed }] })
         }
         "rect" => rect(node, mode),
-        _ => Err(format!("<{tag}> is not a polynomial Bézier curve (a conic); not approximated")),
+        _ => {
+            Err(ShapeProblem::Skipped(format!("<{tag}> is not a polynomial Bézier curve (a conic); not approximated")))
+        }
     }
 }
 
 /// `<rect>`: four sides, and with `rx`/`ry` the straight parts plus four skipped corner arcs
 /// (SVG 2 §10.2 for the radius rules).
-fn rect(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> std::result::Result<Vec<Contour>, String> {
+fn rect(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> ShapeResult<Vec<Contour>> {
     let len = |name: &str| length(node, name, mode);
     let (x, y, w, h) = (len("x")?, len("y")?, len("width")?, len("height")?);
     if w.sign() != Ordering::Greater || h.sign() != Ordering::Greater {
@@ -198,13 +241,13 @@ fn length(node: roxmltree::Node<'_, '_>, name: &str, mode: NumberMode) -> std::r
 }
 
 /// The product of the `transform`s of the element and its ancestors (outermost first).
-fn transform_of(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> std::result::Result<Affine, String> {
+fn transform_of(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> ShapeResult<Affine> {
     let mut chain: Vec<roxmltree::Node<'_, '_>> = node.ancestors().filter(|n| n.is_element()).collect();
     chain.reverse();
     let mut m = Affine::identity();
     for n in chain {
         if let Some(t) = n.attribute("transform") {
-            let own = parse_transform(t, mode).map_err(|e| format!("transform=\"{t}\": {e}"))?;
+            let own = parse_transform(t, mode).map_err(|e| e.within(&format!("transform=\"{t}\": ")))?;
             m = m.compose(&own);
         }
     }
@@ -214,15 +257,15 @@ fn transform_of(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> std::result:
 /// An SVG transform list, exactly.
 ///
 /// # Errors
-/// A message for malformed lists and for rotations and skews whose sine/cosine/tangent are not
-/// rational.
-pub fn parse_transform(text: &str, mode: NumberMode) -> std::result::Result<Affine, String> {
+/// [`ShapeProblem::Invalid`] for malformed lists, [`ShapeProblem::Skipped`] for rotations and
+/// skews whose sine/cosine/tangent are not rational.
+pub fn parse_transform(text: &str, mode: NumberMode) -> ShapeResult<Affine> {
     let mut m = Affine::identity();
     let mut rest = text.trim_start_matches(|c: char| c.is_whitespace() || c == ',');
     while !rest.is_empty() {
-        let open = rest.find('(').ok_or("expected name(numbers)")?;
+        let open = rest.find('(').ok_or_else(|| ShapeProblem::Invalid("expected name(numbers)".into()))?;
         let name = rest[..open].trim();
-        let close = rest[open..].find(')').ok_or("missing )")? + open;
+        let close = rest[open..].find(')').ok_or_else(|| ShapeProblem::Invalid("missing )".into()))? + open;
         let args = &rest[open + 1..close];
         let nums: Vec<BigRational> = args
             .split(|c: char| c.is_whitespace() || c == ',')
@@ -257,7 +300,10 @@ pub fn parse_transform(text: &str, mode: NumberMode) -> std::result::Result<Affi
             "rotate" => {
                 arity(&[1, 3])?;
                 let (c, s) = right_angle(&n(0)).ok_or_else(|| {
-                    format!("rotate({}) is not a multiple of 90°: its sine and cosine are irrational", n(0))
+                    ShapeProblem::Skipped(format!(
+                        "rotate({}) is not a multiple of 90°: its sine and cosine are irrational",
+                        n(0)
+                    ))
                 })?;
                 let r = Affine([rat(c), rat(s), rat(-s), rat(c), z.clone(), z.clone()]);
                 if nums.len() == 3 {
@@ -271,7 +317,10 @@ pub fn parse_transform(text: &str, mode: NumberMode) -> std::result::Result<Affi
             "skewX" | "skewY" => {
                 arity(&[1])?;
                 let t = tan_exact(&n(0)).ok_or_else(|| {
-                    format!("{name}({}): the tangent is irrational (only 0° and ±45° are exact)", n(0))
+                    ShapeProblem::Skipped(format!(
+                        "{name}({}): the tangent is irrational (only 0° and ±45° are exact)",
+                        n(0)
+                    ))
                 })?;
                 if name == "skewX" {
                     Affine([o.clone(), z.clone(), rat(t), o, z.clone(), z])
@@ -279,7 +328,7 @@ pub fn parse_transform(text: &str, mode: NumberMode) -> std::result::Result<Affi
                     Affine([o.clone(), rat(t), z.clone(), o, z.clone(), z])
                 }
             }
-            _ => return Err(format!("unknown transform {name:?}")),
+            _ => return Err(format!("unknown transform {name:?}").into()),
         };
         m = m.compose(&own);
         rest = rest[close + 1..].trim_start_matches(|c: char| c.is_whitespace() || c == ',');

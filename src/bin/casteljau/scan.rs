@@ -386,8 +386,9 @@ fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<
                         Provenance { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
                     match &s.contours {
                         Ok(contours) => sc.render(&at, contours, Unit::Element),
-                        Err(e) if e.contains("not a polynomial Bézier curve") || e.contains("irrational") => {
+                        Err(e) if e.is_skipped() => {
                             // not an error of the file: listed as skipped
+                            let reason = e.to_string();
                             let mut r = Rendered { lines: vec![], tally: Tally::default() };
                             r.tally.skipped += 1;
                             if sc.keep(None, &[], true, false) {
@@ -397,7 +398,7 @@ fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<
                                     classification: None,
                                     points: None,
                                     flags: None,
-                                    skipped: Some(e),
+                                    skipped: Some(&reason),
                                     from: None,
                                     to: None,
                                     error: None,
