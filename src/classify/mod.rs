@@ -21,6 +21,7 @@
 pub mod canonical;
 pub mod certified;
 pub mod evidence;
+pub mod integer;
 pub mod moving_line;
 pub mod oracle;
 pub mod rational_cubic;
@@ -483,7 +484,7 @@ fn genuine_cubic<K: Radical>(out: &mut Classification<K>, a: &[Vector<K>; 4], bi
     if Scalar::is_zero(big_a) {
         out.class = CurveClass::Cubic(NodeType::Explicit);
         out.node_type = Some(NodeType::Explicit);
-        out.reason = "A = a2×a3 = 0: double point at infinity (affine image of y = x³)".into();
+        out.reason = EXPLICIT_REASON.into();
         let t = -big_c.clone() / (rat(3) * big_b);
         out.inflection_parameters = vec![Parameter::from_base(t)];
         return;
@@ -501,23 +502,38 @@ fn genuine_cubic<K: Radical>(out: &mut Classification<K>, a: &[Vector<K>; 4], bi
     };
     out.node_type = Some(node);
     out.class = CurveClass::Cubic(node);
+    write_node_reason(&mut out.reason, node, &d, &te).expect("writing to a String");
     match node {
         NodeType::Crunode => {
-            out.reason = format!("d = {d} > 0: self-intersection at t_E ± √d, t_E = {te}");
             out.double_point_parameters = center_plus_minus_sqrt(&te, &d).to_vec();
         }
         NodeType::Cusp => {
-            out.reason = format!("d = 0: cusp at t_E = {te}");
             out.double_point_parameters = vec![Parameter::from_base(te.clone())];
             out.cusp_parameters = vec![Parameter::from_base(te.clone())];
         }
         _ => {
-            out.reason = format!("d = {d} < 0: isolated double point; inflections at t_E ± √(−d/3), t_E = {te}");
             let r = -d.clone() / rat(3);
             out.inflection_parameters = center_plus_minus_sqrt(&te, &r).to_vec();
         }
     }
     out.t_e_and_d = Some((te, d));
+}
+
+/// The `reason` of a genuine cubic with `A = 0`.
+pub(crate) const EXPLICIT_REASON: &str = "A = a2×a3 = 0: double point at infinity (affine image of y = x³)";
+
+/// Writes the `reason` of a genuine cubic with `A ≠ 0` (one wording for every route).
+pub(crate) fn write_node_reason(
+    out: &mut impl fmt::Write,
+    node: NodeType,
+    d: &dyn fmt::Display,
+    te: &dyn fmt::Display,
+) -> fmt::Result {
+    match node {
+        NodeType::Crunode => write!(out, "d = {d} > 0: self-intersection at t_E ± √d, t_E = {te}"),
+        NodeType::Cusp => write!(out, "d = 0: cusp at t_E = {te}"),
+        _ => write!(out, "d = {d} < 0: isolated double point; inflections at t_E ± √(−d/3), t_E = {te}"),
+    }
 }
 
 /// `[sign c, sign(c² − r), sign(1 − c), sign((1 − c)² − r)]` for the parameters `c ± √r` of a

@@ -364,6 +364,86 @@ pub fn parse_points_small_in(
     group_points(&toks, values, dim, line).ok()
 }
 
+/// The planar cubic of a batch line written with plain integers, the common case of font
+/// data: `x y, x y, x y, x y` (or the eight numbers separated by spaces only, or by commas
+/// only; spaces and tabs, an optional trailing comma), each `[+-]?` and at most 18 digits.
+/// The points [`parse_points`] reads from such a line; `None` for anything else (which
+/// [`parse_points`] then reads or reports). Allocates nothing.
+///
+/// # Example
+/// ```
+/// use casteljau::num::parse::integer_cubic;
+/// assert_eq!(integer_cubic("0 0, 1 -2, +3 4, 5 6"), Some([[0, 0], [1, -2], [3, 4], [5, 6]]));
+/// assert_eq!(integer_cubic("0,0,1,2,3,4,5,6,"), Some([[0, 0], [1, 2], [3, 4], [5, 6]]));
+/// assert_eq!(integer_cubic("0 0, 1/2 2, 3 4, 5 6"), None); // a fraction: parse_points reads it
+/// assert_eq!(integer_cubic("0 0 1, 2 3 4, 5 6"), None); // grouped wrongly: parse_points reports it
+/// ```
+pub fn integer_cubic(text: &str) -> Option<[[i64; 2]; 4]> {
+    let b = text.as_bytes();
+    let mut values = [0i64; 8];
+    // commas[k]: a comma between value k and value k + 1
+    let mut commas = [false; 8];
+    let (mut i, mut k) = (0, 0);
+    let blank = |c: u8| c == b' ' || c == b'\t';
+    while i < b.len() && blank(b[i]) {
+        i += 1;
+    }
+    while k < 8 {
+        let negative = match b.get(i)? {
+            b'-' => {
+                i += 1;
+                true
+            }
+            b'+' => {
+                i += 1;
+                false
+            }
+            _ => false,
+        };
+        let start = i;
+        let mut v: i64 = 0;
+        while i < b.len() && b[i].is_ascii_digit() {
+            v = v * 10 + i64::from(b[i] - b'0');
+            i += 1;
+            if i - start > 18 {
+                return None;
+            }
+        }
+        if i == start {
+            return None;
+        }
+        values[k] = if negative { -v } else { v };
+        // separator: blanks, at most one comma, blanks
+        let sep_start = i;
+        while i < b.len() && blank(b[i]) {
+            i += 1;
+        }
+        if i < b.len() && b[i] == b',' {
+            commas[k] = true;
+            i += 1;
+            while i < b.len() && blank(b[i]) {
+                i += 1;
+            }
+        }
+        k += 1;
+        if i == sep_start && i < b.len() {
+            return None; // a number runs into something else
+        }
+    }
+    if i != b.len() {
+        return None;
+    }
+    // grouping as `group_points` reads it: commas after points, none, or after every number
+    let inner = [commas[0], commas[2], commas[4], commas[6]];
+    let between = [commas[1], commas[3], commas[5]];
+    let grouped = inner.iter().all(|c| !c) && between.iter().all(|&c| c);
+    let flat = commas[..7].iter().all(|c| !c) || commas[..7].iter().all(|&c| c);
+    if !grouped && !flat {
+        return None;
+    }
+    Some([[values[0], values[1]], [values[2], values[3]], [values[4], values[5]], [values[6], values[7]]])
+}
+
 /// Largest digit count per part that [`small_number`] takes (`10^36 < 2^120`).
 const SMALL_DIGITS: usize = 36;
 

@@ -79,6 +79,11 @@ fn gcd(a: u128, b: u128) -> u128 {
     if a >> 64 == 0 && b >> 64 == 0 {
         return gcd64(a as u64, b as u64) as u128;
     }
+    // one word-sized argument: one remainder brings the other down to a word
+    if a >> 64 == 0 || b >> 64 == 0 {
+        let (big, word) = if a >> 64 == 0 { (b, a as u64) } else { (a, b as u64) };
+        return gcd64(word, (big % word as u128) as u64) as u128;
+    }
     let shift = (a | b).trailing_zeros();
     let (mut a, mut b) = (a >> a.trailing_zeros(), b);
     loop {
@@ -101,17 +106,15 @@ fn gcd64(a: u64, b: u64) -> u64 {
         return a | b;
     }
     let shift = (a | b).trailing_zeros();
-    let (mut a, mut b) = (a >> a.trailing_zeros(), b);
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
+    let (mut a, mut b) = (a >> a.trailing_zeros(), b >> b.trailing_zeros());
+    // both odd; min/max instead of a branch on the comparison (which mispredicts half the time)
+    while a != b {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let diff = hi - lo;
+        a = lo;
+        b = diff >> diff.trailing_zeros();
     }
+    a << shift
 }
 
 impl SmallRational {
@@ -166,13 +169,54 @@ impl SmallRational {
     }
 }
 
+impl SmallRational {
+    /// Appends the number as [`Display`](fmt::Display) spells it (`n` or `n/d`), without the
+    /// formatting machinery: the hot path of batch output.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::num::small::SmallRational;
+    /// let mut out = b"x = ".to_vec();
+    /// SmallRational::new(-6, 4).unwrap().push_to(&mut out);
+    /// assert_eq!(out, b"x = -3/2");
+    /// ```
+    pub fn push_to(&self, out: &mut Vec<u8>) {
+        let mut buf = itoa::Buffer::new();
+        out.extend_from_slice(
+            match i64::try_from(self.num) {
+                Ok(n) => buf.format(n),
+                Err(_) => buf.format(self.num),
+            }
+            .as_bytes(),
+        );
+        if self.den != 1 {
+            out.push(b'/');
+            out.extend_from_slice(
+                match u64::try_from(self.den) {
+                    Ok(d) => buf.format(d),
+                    Err(_) => buf.format(self.den),
+                }
+                .as_bytes(),
+            );
+        }
+    }
+}
+
 impl fmt::Display for SmallRational {
     /// As [`BigRational`]: `n` or `n/d`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(itoa::Buffer::new().format(self.num))?;
+        // word-sized numbers format without 128-bit divisions
+        let mut buf = itoa::Buffer::new();
+        f.write_str(match i64::try_from(self.num) {
+            Ok(n) => buf.format(n),
+            Err(_) => buf.format(self.num),
+        })?;
         if self.den != 1 {
             f.write_str("/")?;
-            f.write_str(itoa::Buffer::new().format(self.den))?;
+            f.write_str(match u64::try_from(self.den) {
+                Ok(d) => buf.format(d),
+                Err(_) => buf.format(self.den),
+            })?;
         }
         Ok(())
     }
@@ -375,7 +419,6 @@ by_value!(Add add, Sub sub, Mul mul, Div div);
 /// multiplication per prime, no division).
 struct OddPrime {
     p: u128,
-    square: u128,
     inv: u128,
     limit: u128,
     inv64: u64,
@@ -383,7 +426,7 @@ struct OddPrime {
 }
 
 const ODD_PRIMES: [OddPrime; 167] = {
-    let mut out = [const { OddPrime { p: 0, square: 0, inv: 0, limit: 0, inv64: 0, limit64: 0 } }; 167];
+    let mut out = [const { OddPrime { p: 0, inv: 0, limit: 0, inv64: 0, limit64: 0 } }; 167];
     let mut n = 3u128;
     let mut k = 0;
     while k < 167 {
@@ -406,7 +449,6 @@ const ODD_PRIMES: [OddPrime; 167] = {
             }
             out[k] = OddPrime {
                 p: n,
-                square: n * n,
                 inv,
                 limit: u128::MAX / n,
                 inv64: inv as u64,
@@ -415,6 +457,18 @@ const ODD_PRIMES: [OddPrime; 167] = {
             k += 1;
         }
         n += 2;
+    }
+    out
+};
+
+/// The odd primes below 1000 (as [`ODD_PRIMES`]) with their inverses mod 2^64 and
+/// `u64::MAX / p`, packed for the word-sized loop of [`extract_small_squares`].
+const ODD_PRIMES64: [(u64, u64, u64); 167] = {
+    let mut out = [(0u64, 0u64, 0u64); 167];
+    let mut k = 0;
+    while k < 167 {
+        out[k] = (ODD_PRIMES[k].p as u64, ODD_PRIMES[k].inv64, ODD_PRIMES[k].limit64);
+        k += 1;
     }
     out
 };
@@ -430,26 +484,10 @@ fn extract_small_squares(mut n: u128) -> (u128, u128) {
     let twos = n.trailing_zeros();
     k <<= twos / 2;
     n >>= twos - twos % 2;
-    for op in &ODD_PRIMES {
-        if n < op.square {
-            break;
-        }
+    for (j, op) in ODD_PRIMES.iter().enumerate() {
         if n >> 64 == 0 {
-            let mut m = n as u64;
-            loop {
-                let q = m.wrapping_mul(op.inv64);
-                if q > op.limit64 {
-                    break;
-                }
-                let q2 = q.wrapping_mul(op.inv64);
-                if q2 > op.limit64 {
-                    break;
-                }
-                m = q2;
-                k *= op.p;
-            }
-            n = m as u128;
-            continue;
+            let (k64, m) = extract_small_squares64(n as u64, j);
+            return (k * k64, m as u128);
         }
         loop {
             let q = n.wrapping_mul(op.inv);
@@ -463,6 +501,32 @@ fn extract_small_squares(mut n: u128) -> (u128, u128) {
             }
             n = q2;
             k *= op.p;
+        }
+    }
+    (k, n)
+}
+
+/// [`extract_small_squares`] of a word from the `from`-th odd prime on: one multiplication and
+/// one comparison per prime while no prime divides `n` (the common case).
+fn extract_small_squares64(mut n: u64, from: usize) -> (u128, u64) {
+    let mut k = 1u128;
+    for &(p, inv, limit) in &ODD_PRIMES64[from..] {
+        let q = n.wrapping_mul(inv);
+        if q <= limit {
+            // p | n: divide out p² while it divides
+            let mut q = q;
+            loop {
+                let q2 = q.wrapping_mul(inv);
+                if q2 > limit {
+                    break;
+                }
+                n = q2;
+                k *= p as u128;
+                q = n.wrapping_mul(inv);
+                if q > limit {
+                    break;
+                }
+            }
         }
     }
     (k, n)

@@ -170,6 +170,12 @@ struct FloatApproximations {
     double_point: Option<Vec<f64>>,
 }
 
+/// The direct route of `classify --json` for a line of integer cubic control points
+/// ([`casteljau::classify::integer`]); false when it does not take the line.
+pub(crate) fn classify_integer_json(text: &str, out: &mut Vec<u8>) -> bool {
+    casteljau::num::parse::integer_cubic(text).is_some_and(|p| casteljau::classify::integer::classify_json(&p, out))
+}
+
 /// `classify` of a polynomial curve: the fast route (fixed-width exact arithmetic, when every
 /// number fits) and otherwise the big-number route; with `full` (always big numbers) the cubic's
 /// evidence too. Only the output asked for (`json` or text) is rendered.

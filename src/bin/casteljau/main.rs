@@ -164,7 +164,10 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
             if rational.weights.is_none() && !rational.homogeneous {
                 let (dim, json, full) = (curve.dim, curve.json, detail == args::Detail::Full);
                 let mode = curve.numbers.into();
-                return batch::batch_lines(&curve, out, |line, text| {
+                let direct = |text: &str, out: &mut Vec<u8>| {
+                    dim == 2 && !full && !float && answers::classify_integer_json(text, out)
+                };
+                return batch::batch_lines_with(&curve, out, &direct, |line, text| {
                     answers::classify(text, dim, mode, line, float, full, json)
                 });
             }
