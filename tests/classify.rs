@@ -456,3 +456,117 @@ fn classify_fixed_width_route_on_seed_kinds_and_boundaries() {
     // i128::MAX as a coordinate: the fixed-width route reports overflow, the big route answers
     assert_eq!(routes_agree(&curve("170141183460469231731687303715884105727 0, 1 1, 0 1, 1 0")).ok(), Some(false));
 }
+
+/// The direct JSON route of integer cubics against serde's JSON of [`classify`]: byte for byte
+/// when it answers; `Some(true)` when it did.
+fn integer_route_agrees(p: &[[i64; 2]; 4]) -> Result<bool, TestCaseError> {
+    let mut out = vec![];
+    if !casteljau::classify::integer::classify_json(p, &mut out) {
+        prop_assert!(out.is_empty());
+        return Ok(false);
+    }
+    let generic = serde_json::to_string(&classify(&to_curve(p)).unwrap()).unwrap();
+    prop_assert_eq!(String::from_utf8(out).unwrap(), generic, "{:?}", p);
+    Ok(true)
+}
+
+/// A strategy curve with its coordinates scaled to integers (by the lcm of the denominators).
+fn scaled_to_integers(c: &BezierCurve<BigRational>) -> Option<[[i64; 2]; 4]> {
+    use num_integer::Integer;
+    use num_traits::ToPrimitive;
+    let l = c.points().iter().flat_map(|q| q.coords.iter()).fold(num_bigint::BigInt::from(1), |l, x| l.lcm(x.denom()));
+    let v: Vec<i64> = c
+        .points()
+        .iter()
+        .flat_map(|q| q.coords.iter())
+        .map(|x| (x * BigRational::from_integer(l.clone())).to_integer().to_i64())
+        .collect::<Option<_>>()?;
+    (v.len() == 8).then(|| [[v[0], v[1]], [v[2], v[3]], [v[4], v[5]], [v[6], v[7]]])
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn integer_json_route_equals_serde_json_on_random_integers(p in int_cubic(), tiny in prop::array::uniform4(prop::array::uniform2(-3i64..=3)), shift in 0u32..=30, pick in 0u8..3) {
+        // font-like (|coordinates| ≤ 2048: no number outgrows 128 bits), tiny (degenerate classes, exact cusps) and wide (up
+        // to 2^46: overflow, refusal)
+        let p = match pick { 0 => tiny, 1 => p.map(|q| q.map(|v| v >> 5)), _ => p.map(|q| q.map(|v| v << shift)) };
+        let taken = integer_route_agrees(&p)?;
+        if pick == 1 {
+            // a font-like genuine cubic or elevated quadratic is always taken
+            let k = classify(&to_curve(&p)).unwrap();
+            prop_assert_eq!(taken, k.node_type.is_some() || k.class == CurveClass::CubicReallyQuadratic);
+        }
+    }
+
+    #[test]
+    fn integer_json_route_equals_serde_json_on_edge_case_strategies(
+        c in prop_oneof![
+            casteljau::strategies::cusp_at(casteljau::strategies::unit_parameter()).prop_map(|(c, _)| c),
+            casteljau::strategies::loop_between().prop_map(|(c, _)| c),
+            casteljau::strategies::inflection_at_endpoint().prop_map(|(c, _)| c),
+            casteljau::strategies::degree_elevated_quadratic(),
+            casteljau::strategies::collinear_cubic(),
+            casteljau::strategies::coincident_control_points(),
+            casteljau::strategies::near_cusp(1..=12).prop_map(|(c, _)| c),
+            cubic(),
+        ]
+    ) {
+        if let Some(p) = scaled_to_integers(&c) {
+            integer_route_agrees(&p)?;
+        }
+    }
+}
+
+#[test]
+fn integer_json_route_on_every_node_type_and_the_refusals() {
+    let taken = |s: &str| {
+        let c = curve(s);
+        let p = scaled_to_integers(&c).unwrap();
+        integer_route_agrees(&p).unwrap()
+    };
+    for s in [
+        "0 0, 0 1, 1 1, 1 0",  // crunode, loop outside [0, 1]
+        "0 0, 2 2, -1 2, 1 0", // loop
+        "0 0, 3 3, 0 3, 3 0",  // cusp at 1/2
+        "0 0, 0 0, 1 1, 2 0",  // cusp at 0
+        "0 0, 1 1, 2 -1, 3 0", // acnode, one inflection
+        "0 0, 1 0, 2 0, 3 3",  // explicit
+        "0 0, 1 0, 2 1, 3 3",  // degree-elevated quadratic
+        "0 0, 30 40, -20 40, 10 0",
+    ] {
+        assert!(taken(s), "{s}");
+    }
+    // collinear, lower degree: the generic route answers
+    for s in ["0 0, 1 1, 2 2, 3 3", "0 0, 2 2, 1 1, 3 3", "1 1, 1 1, 1 1, 1 1", "0 0, 1 1, 2 2, 3 3"] {
+        assert!(!taken(s), "{s}");
+    }
+    // beyond 2^40: refused, the generic route answers
+    assert!(!casteljau::classify::integer::classify_json(&[[1 << 41, 0], [0, 1], [1, 1], [1, 0]], &mut vec![]));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// The integer line reader reads what the general parser reads, or leaves the line to it.
+    #[test]
+    fn integer_cubic_reader_agrees_with_parse_points(
+        v in prop::array::uniform8(-100_000i64..100_000),
+        seps in prop::array::uniform8(prop::sample::select(vec![" ", ", ", ",", "  ", "\t", " ,", ",,", "", " x", "/2 "])),
+        trailing in prop::sample::select(vec!["", ",", " ", " , ", ",,"]),
+    ) {
+        let mut text = String::new();
+        for (k, x) in v.iter().enumerate() {
+            text += &x.to_string();
+            if k < 7 { text += seps[k]; }
+        }
+        text += trailing;
+        if let Some(p) = casteljau::num::parse::integer_cubic(&text) {
+            let parsed = parse_points(&text, 2, None);
+            prop_assert!(parsed.is_ok(), "{}", text);
+            let (ours, theirs) = (to_curve(&p), parsed.unwrap());
+            prop_assert_eq!(ours.points(), theirs.as_slice(), "{}", text);
+        }
+    }
+}

@@ -314,3 +314,46 @@ fn robustness_an_over_long_line_is_an_error_for_that_line_only() {
 fn robustness_plot_of_degree_10000_refuses_by_estimate() {
     refused_for_work(&["plot", &polygon(10_000)]);
 }
+
+#[test]
+fn robustness_line_numbers_survive_block_boundaries_with_every_line_end() {
+    // ~100 KB of lines (several input blocks) ending in \n, \r\n or a lone \r, with blank,
+    // comment and bad lines: every answer names its line, on 1 and 2 threads alike
+    let ends = ["\n", "\r\n", "\r", "\n", "\r\n"];
+    let mut input = String::new();
+    let mut expected = vec![];
+    for k in 0..4000usize {
+        let n = k + 1;
+        match k % 13 {
+            3 => input += "   ",
+            7 => input += "# a comment",
+            11 => {
+                input += "0 0, 1 x";
+                expected.push((n, true));
+            }
+            _ => {
+                input += &format!("{} {}, {} {}, {} {}, {} {}", k, 2 * k, k + 1, 7, 3, k % 5, 9, 1);
+                expected.push((n, false));
+            }
+        }
+        if k + 1 < 4000 {
+            input += ends[(k * 7 + k / 3) % ends.len()];
+        }
+    }
+    let path = std::env::temp_dir().join(format!("casteljau-blocks-{}.txt", std::process::id()));
+    std::fs::write(&path, &input).unwrap();
+    let outputs: Vec<String> = ["1", "2"]
+        .iter()
+        .map(|threads| {
+            let o = run(&["classify", "--json", "--threads", threads, "--input", path.to_str().unwrap()], None);
+            assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+            common::stdout(&o)
+        })
+        .collect();
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(outputs[0], outputs[1]);
+    let lines: Vec<serde_json::Value> = outputs[0].lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let got: Vec<(usize, bool)> =
+        lines.iter().map(|v| (v["line"].as_u64().unwrap() as usize, v.get("error").is_some())).collect();
+    assert_eq!(got, expected);
+}

@@ -23,9 +23,9 @@
 use crate::classify::certified::decide;
 use crate::classify::{CurveClass, EXPLICIT_REASON, NodeType, SegmentFeatures, write_node_reason};
 use crate::num::quadratic_field::QuadraticExt;
+use crate::num::scalar::{Exact, Scalar};
 use crate::num::small::{SmallRational, checked};
 use crate::poly::polynomial::center_plus_minus_sqrt;
-use crate::num::scalar::{Exact, Scalar};
 
 /// Largest coordinate magnitude taken (`2^40`): every product below then fits or is checked.
 pub const MAX_COORDINATE: i64 = 1 << 40;
@@ -243,12 +243,12 @@ mod tests {
     #[test]
     fn integer_route_writes_the_generic_json_on_every_node_type() {
         let cases = [
-            [[0, 0], [0, 1], [1, 1], [1, 0]],     // crunode, loop outside
-            [[0, 0], [3, 3], [0, 3], [3, 0]],     // cusp at 1/2
-            [[0, 0], [2, 2], [-1, 2], [1, 0]],    // loop
-            [[0, 0], [1, 0], [2, 1], [3, 3]],     // degree-elevated quadratic
-            [[0, 0], [1, 1], [2, -1], [3, 0]],    // inflection
-            [[0, 0], [1, 0], [2, 0], [3, 1]],     // explicit?
+            [[0, 0], [0, 1], [1, 1], [1, 0]],  // crunode, loop outside
+            [[0, 0], [3, 3], [0, 3], [3, 0]],  // cusp at 1/2
+            [[0, 0], [2, 2], [-1, 2], [1, 0]], // loop
+            [[0, 0], [1, 0], [2, 1], [3, 3]],  // degree-elevated quadratic
+            [[0, 0], [1, 1], [2, -1], [3, 0]], // inflection
+            [[0, 0], [1, 0], [2, 0], [3, 1]],  // explicit?
             [[-1769, 146], [-1769, 146], [692, -206], [-564, -1592]],
         ];
         for p in &cases {

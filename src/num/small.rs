@@ -447,13 +447,7 @@ const ODD_PRIMES: [OddPrime; 167] = {
                 inv = inv.wrapping_mul(2u128.wrapping_sub(n.wrapping_mul(inv)));
                 i += 1;
             }
-            out[k] = OddPrime {
-                p: n,
-                inv,
-                limit: u128::MAX / n,
-                inv64: inv as u64,
-                limit64: u64::MAX / n as u64,
-            };
+            out[k] = OddPrime { p: n, inv, limit: u128::MAX / n, inv64: inv as u64, limit64: u64::MAX / n as u64 };
             k += 1;
         }
         n += 2;
