@@ -1,13 +1,16 @@
 //! End-to-end batch classification, in one run: the `casteljau classify --json --input FILE`
 //! command line on 1 and 2 threads, the same exact pipeline in process (parse → classify →
 //! JSON Lines), and a plain `f64` pipeline that parses the same text and writes the same JSON
-//! fields (floats instead of exact strings) for the ratio. Inputs: 32,768 font-like integer
-//! cubics (|coordinates| ≤ 2048, a tenth with a cusp at t = 0) and 4,096 cubics with small
-//! rational coordinates. `cargo bench --bench batch`.
+//! fields (floats instead of exact strings) for the ratio, and the generic exact route (fixed-width
+//! rationals, serde) for the gain of the integer route. Inputs: 32,768 font-like integer
+//! cubics (|coordinates| ≤ 2048, a tenth with a cusp at t = 0), 4,096 cubics with small
+//! rational coordinates, and 31 copies of the first (1,015,808 lines, command line only).
+//! `cargo bench --bench batch`.
 
 use casteljau::BezierCurve;
-use casteljau::classify::classify_in;
-use casteljau::num::parse::parse_points_small;
+use casteljau::classify::{classify, classify_in};
+use casteljau::classify::integer::classify_json;
+use casteljau::num::parse::{integer_cubic, parse_points, parse_points_small};
 use casteljau::num::small::checked;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -77,14 +80,38 @@ fn cli(path: &PathBuf, threads: usize) {
     assert!(status.success());
 }
 
-/// The exact pipeline in process: the command's fast route on one thread.
+/// The exact pipeline in process, as the command runs it on one thread: integer cubics straight
+/// to JSON (`classify::integer`), anything else by the generic route.
 fn exact_pipeline(text: &str, out: &mut Vec<u8>) {
     for line in text.lines() {
-        let pts = parse_points_small(line, 2, None).expect("small numbers");
-        let k = checked(|| classify_in(&BezierCurve::new(pts).unwrap()).unwrap()).expect("fits");
-        serde_json::to_writer(&mut *out, &k).unwrap();
-        out.push(b'\n');
+        if let Some(p) = integer_cubic(line)
+            && classify_json(&p, out)
+        {
+            out.push(b'\n');
+            continue;
+        }
+        generic_line(line, out);
     }
+}
+
+/// The generic route in process (the same answers): fixed-width rationals, then serde.
+fn generic_pipeline(text: &str, out: &mut Vec<u8>) {
+    for line in text.lines() {
+        generic_line(line, out);
+    }
+}
+
+/// One line by the generic route: fixed-width rationals, or big ones when a number outgrows them.
+fn generic_line(line: &str, out: &mut Vec<u8>) {
+    let pts = parse_points_small(line, 2, None).expect("small numbers");
+    match checked(|| classify_in(&BezierCurve::new(pts).unwrap()).unwrap()) {
+        Some(k) => serde_json::to_writer(&mut *out, &k).unwrap(),
+        None => {
+            let c = BezierCurve::new(parse_points(line, 2, None).unwrap()).unwrap();
+            serde_json::to_writer(&mut *out, &classify(&c).unwrap()).unwrap()
+        }
+    }
+    out.push(b'\n');
 }
 
 /// The f64 fields of `classify --json`, computed in floating point.
@@ -204,7 +231,11 @@ fn f64_pipeline(text: &str, out: &mut Vec<u8>) {
         for (slot, tok) in
             v.iter_mut().zip(line.split(|c: char| c == ',' || c.is_whitespace()).filter(|t| !t.is_empty()))
         {
-            *slot = tok.parse().unwrap();
+            // a fraction `p/q` as a float library would read it: p / q rounded
+            *slot = match tok.split_once('/') {
+                Some((p, q)) => p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap(),
+                None => tok.parse().unwrap(),
+            };
         }
         let p = [[v[0], v[1]], [v[2], v[3]], [v[4], v[5]], [v[6], v[7]]];
         serde_json::to_writer(&mut *out, &classify_f64(&p)).unwrap();
@@ -218,9 +249,12 @@ fn batch(c: &mut Criterion) {
     let font_file = write_input("fonts.txt", &fonts);
     let rational_file = write_input("rationals.txt", &rationals);
     let mut sink = Vec::with_capacity(64 << 20);
-    // sanity: the exact pipeline answers every line on the fast route
+    // sanity: both exact pipelines answer every line, alike
     exact_pipeline(&fonts, &mut sink);
     assert_eq!(sink.iter().filter(|&&b| b == b'\n').count(), 32_768);
+    let mut generic = Vec::new();
+    generic_pipeline(&fonts, &mut generic);
+    assert!(sink == generic, "the integer route and the generic route differ");
 
     for (name, text, path, n) in [
         ("font_like_32768", &fonts, &font_file, 32_768u64),
@@ -243,10 +277,27 @@ fn batch(c: &mut Criterion) {
                 exact_pipeline(black_box(text), &mut sink);
             })
         });
+        g.bench_function("generic_pipeline_in_process", |b| {
+            b.iter(|| {
+                sink.clear();
+                generic_pipeline(black_box(text), &mut sink);
+            })
+        });
         g.bench_function("cli_1_thread", |b| b.iter(|| cli(path, 1)));
         g.bench_function("cli_2_threads", |b| b.iter(|| cli(path, 2)));
         g.finish();
     }
+    // a font library's worth: 31 copies of the font-like file, 1,015,808 lines, end to end
+    let million = write_input("fonts_1m.txt", &fonts.repeat(31));
+    let mut g = c.benchmark_group("batch_font_like_1015808");
+    g.throughput(Throughput::Elements(32_768 * 31));
+    g.sample_size(10);
+    g.warm_up_time(Duration::from_millis(500));
+    g.measurement_time(Duration::from_secs(15));
+    g.bench_function("cli_1_thread", |b| b.iter(|| cli(&million, 1)));
+    g.bench_function("cli_2_threads", |b| b.iter(|| cli(&million, 2)));
+    g.finish();
+    let _ = std::fs::remove_file(million);
     let _ = std::fs::remove_file(font_file);
     let _ = std::fs::remove_file(rational_file);
 }
