@@ -8,8 +8,8 @@
 //! `cargo bench --bench batch`.
 
 use casteljau::BezierCurve;
-use casteljau::classify::{classify, classify_in};
 use casteljau::classify::integer::classify_json;
+use casteljau::classify::{classify, classify_in};
 use casteljau::num::parse::{integer_cubic, parse_points, parse_points_small};
 use casteljau::num::small::checked;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};

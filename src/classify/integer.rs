@@ -3,7 +3,7 @@
 //!
 //! The answer is [`classify`](crate::classify::classify)'s, byte for byte as its serde JSON
 //! (a test compares both on every property strategy): the decisions come from
-//! [`certified::decide`] over checked `i128`, and each exact number is built **once** from
+//! [`certified::decide`](crate::classify::certified::decide) over checked `i128`, and each exact number is built **once** from
 //! integers and reduced once, with the formulas of the [module](crate::classify):
 //!
 //! * `a1 = 3(P1 − P0)`, `a2 = 3(P2 − 2P1 + P0)`, `a3 = P3 − 3P2 + 3P1 − P0`,
