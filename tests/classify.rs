@@ -570,3 +570,82 @@ proptest! {
         }
     }
 }
+
+/// `classify_json_scaled` on the curve's integer numerators over their common denominator,
+/// against serde's JSON of [`classify`] on the rational curve: byte for byte when it answers.
+fn scaled_route_agrees(c: &BezierCurve<BigRational>) -> Result<bool, TestCaseError> {
+    use num_integer::Integer;
+    let l = c.points().iter().flat_map(|q| q.coords.iter()).fold(num_bigint::BigInt::from(1), |l, x| l.lcm(x.denom()));
+    let int = |x: &BigRational| (x * BigRational::from_integer(l.clone())).to_integer();
+    let p: [[num_bigint::BigInt; 2]; 4] =
+        std::array::from_fn(|i| [int(&c.points()[i].coords[0]), int(&c.points()[i].coords[1])]);
+    let mut out = vec![];
+    if !casteljau::classify::integer::classify_json_scaled(&p, &l, &mut out) {
+        prop_assert!(out.is_empty());
+        return Ok(false);
+    }
+    let generic = serde_json::to_string(&classify(c).unwrap()).unwrap();
+    prop_assert_eq!(String::from_utf8(out).unwrap(), generic);
+    Ok(true)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn scaled_json_route_equals_serde_json_on_rational_curves(
+        c in prop_oneof![
+            cubic(),
+            casteljau::strategies::cubic(),
+            casteljau::strategies::cusp_at(casteljau::strategies::unit_parameter()).prop_map(|(c, _)| c),
+            casteljau::strategies::loop_between().prop_map(|(c, _)| c),
+            casteljau::strategies::inflection_at_endpoint().prop_map(|(c, _)| c),
+            casteljau::strategies::degree_elevated_quadratic(),
+            casteljau::strategies::near_cusp(1..=12).prop_map(|(c, _)| c),
+        ]
+    ) {
+        scaled_route_agrees(&c)?;
+    }
+
+    /// The fixed-width line reader reads what the general parser reads, or leaves the line to it.
+    #[test]
+    fn small_cubic_reader_agrees_with_parse_points(
+        v in prop::array::uniform8((-100_000i64..100_000, 1i64..60, 0u8..4)),
+        seps in prop::array::uniform8(prop::sample::select(vec![" ", ", ", ",", "\t", " ,", ",,", "", " x"])),
+    ) {
+        let mut text = String::new();
+        for (k, &(n, d, form)) in v.iter().enumerate() {
+            text += &match form {
+                0 => n.to_string(),
+                1 => format!("{n}/{d}"),
+                2 => format!("{}.{:03}", n / 1000, (n % 1000).abs()),
+                _ => format!("{n}/0"),
+            };
+            if k < 7 { text += seps[k]; }
+        }
+        if let Some(p) = casteljau::num::parse::small_cubic(&text, casteljau::num::parse::NumberMode::Exact) {
+            let parsed = parse_points(&text, 2, None);
+            prop_assert!(parsed.is_ok(), "{}", text);
+            let theirs = parsed.unwrap();
+            for (i, q) in p.iter().enumerate() {
+                prop_assert_eq!(&q.map(|x| x.to_big()).to_vec(), &theirs[i].coords, "{}", text);
+            }
+        }
+    }
+}
+
+#[test]
+fn scaled_json_route_on_constructed_rational_cubics() {
+    let mut taken = 0;
+    for s in [
+        "0 0, 1/2 1/2, 0 1/2, 1/2 0",
+        "1/3 1/7, 5/2 -1/8, 1000 7, 0 0",
+        "0 0, 0 1/3, 1/3 1/3, 1/3 0",
+        "-1 -1, -1/3 1, 1/3 -1, 1 1",
+        "0 0, 1/5 0, 2/5 0, 3/5 1/7",
+        "0 0, 1/2 0, 1 1/2, 3/2 3/2",
+    ] {
+        taken += usize::from(scaled_route_agrees(&curve(s)).unwrap());
+    }
+    assert_eq!(taken, 6);
+}

@@ -364,6 +364,50 @@ pub fn parse_points_small_in(
     group_points(&toks, values, dim, line).ok()
 }
 
+/// The eight number tokens of a planar cubic written `x y, x y, x y, x y` (or separated by
+/// spaces only, or by commas only; spaces and tabs, an optional trailing comma): what
+/// [`parse_points`] groups into four points, or `None` for any other layout. Allocates nothing.
+fn eight_tokens(text: &str) -> Option<[&str; 8]> {
+    let b = text.as_bytes();
+    let mut tokens = [""; 8];
+    // commas[k]: a comma between token k and token k + 1
+    let mut commas = [false; 8];
+    let blank = |c: u8| c == b' ' || c == b'\t';
+    let mut i = 0;
+    while i < b.len() && blank(b[i]) {
+        i += 1;
+    }
+    for k in 0..8 {
+        let start = i;
+        while i < b.len() && !blank(b[i]) && b[i] != b',' {
+            i += 1;
+        }
+        if i == start {
+            return None;
+        }
+        tokens[k] = &text[start..i];
+        while i < b.len() && blank(b[i]) {
+            i += 1;
+        }
+        if i < b.len() && b[i] == b',' {
+            commas[k] = true;
+            i += 1;
+            while i < b.len() && blank(b[i]) {
+                i += 1;
+            }
+        }
+    }
+    if i != b.len() {
+        return None;
+    }
+    // grouping as `group_points` reads it: commas after points, none, or after every number
+    let inner = [commas[0], commas[2], commas[4], commas[6]];
+    let between = [commas[1], commas[3], commas[5]];
+    let grouped = inner.iter().all(|c| !c) && between.iter().all(|&c| c);
+    let flat = commas[..7].iter().all(|c| !c) || commas[..7].iter().all(|&c| c);
+    (grouped || flat).then_some(tokens)
+}
+
 /// The planar cubic of a batch line written with plain integers, the common case of font
 /// data: `x y, x y, x y, x y` (or the eight numbers separated by spaces only, or by commas
 /// only; spaces and tabs, an optional trailing comma), each `[+-]?` and at most 18 digits.
@@ -442,6 +486,26 @@ pub fn integer_cubic(text: &str) -> Option<[[i64; 2]; 4]> {
         return None;
     }
     Some([[values[0], values[1]], [values[2], values[3]], [values[4], values[5]], [values[6], values[7]]])
+}
+
+/// [`integer_cubic`] for numbers that fit [`SmallRational`]: integers, `p/q` and decimals
+/// without exponent as [`parse_points_small_in`] reads them (in binary64 mode only values that
+/// are binary64 already). `None` for anything else. Allocates nothing.
+///
+/// # Example
+/// ```
+/// use casteljau::num::parse::{NumberMode, small_cubic};
+/// let p = small_cubic("0 0, 1/2 -2.5, 3 4, 5 6", NumberMode::Exact).unwrap();
+/// assert_eq!(p[1][1].to_string(), "-5/2");
+/// assert!(small_cubic("0 0, 0.1 0, 1 1, 2 2", NumberMode::Binary64).is_none()); // 0.1 rounds
+/// ```
+pub fn small_cubic(text: &str, mode: NumberMode) -> Option<[[SmallRational; 2]; 4]> {
+    let t = eight_tokens(text)?;
+    let exact_binary64 = |x: &SmallRational| {
+        (x.denom() as u128).is_power_of_two() && x.numer().unsigned_abs() <= 1 << 53 && x.denom() <= 1 << 100
+    };
+    let v = |s: &str| small_number(s).filter(|x| mode == NumberMode::Exact || exact_binary64(x));
+    Some([[v(t[0])?, v(t[1])?], [v(t[2])?, v(t[3])?], [v(t[4])?, v(t[5])?], [v(t[6])?, v(t[7])?]])
 }
 
 /// Largest digit count per part that [`small_number`] takes (`10^36 < 2^120`).

@@ -21,7 +21,7 @@ use crate::num::scalar::{Exact, Scalar, rat};
 use num_bigint::BigInt;
 
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Signed;
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -144,17 +144,17 @@ impl QuadraticExt<BigRational> {
         }
         // √(p/q) = √(p·q)/q, then pull out square factors k² of p·q.
         let q = d.denom().clone();
-        let mut m = d.numer() * &q;
-        let mut b = BigRational::new(BigInt::from(1), q);
-        let mut k = 2u32;
-        while k < 1000 {
-            let kk = BigInt::from(k * k);
-            while (&m % &kk).is_zero() {
-                m /= &kk;
-                b *= BigRational::from_integer(BigInt::from(k));
+        let (k, m) = crate::num::small::extract_small_squares_big((d.numer() * &q).magnitude());
+        let m = BigInt::from(m);
+        // b = k/q reduced; k (a product of primes below 1000) is usually a word: one remainder
+        let b = match num_traits::ToPrimitive::to_u128(&k) {
+            Some(w) => {
+                let r = num_traits::ToPrimitive::to_u128(&(q.magnitude() % w)).expect("below a u128");
+                let g = BigInt::from(crate::num::small::gcd_u128(w, r));
+                BigRational::new_raw(BigInt::from(k) / &g, q / g)
             }
-            k += if k == 2 { 1 } else { 2 };
-        }
+            None => BigRational::new(BigInt::from(k), q),
+        };
         if let Some(r) = int_sqrt(&m) {
             return QuadraticExt::from_ratio(&(b * BigRational::from_integer(r)));
         }

@@ -173,6 +173,15 @@ pub fn integer_sqrt(n: &BigInt) -> Option<BigInt> {
     if Signed::is_negative(n) {
         return None;
     }
+    // squares are 0, 1, 4 or 9 mod 16 and a square mod 63: most non-squares stop here
+    let low = n.iter_u64_digits().next().unwrap_or(0);
+    if (0x0213u32 >> (low & 15)) & 1 == 0 {
+        return None;
+    }
+    let r63 = (n.magnitude() % 63u32).iter_u32_digits().next().unwrap_or(0);
+    if !(0..63u32).any(|x| x * x % 63 == r63) {
+        return None;
+    }
     let r = n.sqrt();
     (&r * &r == *n).then_some(r)
 }

@@ -69,6 +69,11 @@ pub struct SmallRational {
 }
 
 /// `gcd(a, b)` of non-negative numbers (binary; word-sized when both fit 64 bits).
+pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
+    gcd(a, b)
+}
+
+/// `gcd(a, b)` of non-negative numbers (binary; word-sized when both fit 64 bits).
 fn gcd(a: u128, b: u128) -> u128 {
     if a == 0 || b == 0 {
         return a | b;
@@ -478,7 +483,14 @@ fn extract_small_squares(mut n: u128) -> (u128, u128) {
     let twos = n.trailing_zeros();
     k <<= twos / 2;
     n >>= twos - twos % 2;
-    for (j, op) in ODD_PRIMES.iter().enumerate() {
+    let (k2, m) = extract_small_squares_from(n, 0);
+    (k * k2, m)
+}
+
+/// The odd part of [`extract_small_squares`], from the `from`-th odd prime on.
+fn extract_small_squares_from(mut n: u128, from: usize) -> (u128, u128) {
+    let mut k = 1u128;
+    for (j, op) in ODD_PRIMES.iter().enumerate().skip(from) {
         if n >> 64 == 0 {
             let (k64, m) = extract_small_squares64(n as u64, j);
             return (k * k64, m as u128);
@@ -498,6 +510,75 @@ fn extract_small_squares(mut n: u128) -> (u128, u128) {
         }
     }
     (k, n)
+}
+
+/// Products of consecutive odd primes below 1000, each below 2^32, with the index range of its
+/// primes in [`ODD_PRIMES`]: one remainder of a big number per group, then word arithmetic.
+const PRIME_GROUPS: ([(u64, usize, usize); 167], usize) = {
+    let mut out = [(0u64, 0usize, 0usize); 167];
+    let (mut g, mut k) = (0, 0);
+    while k < 167 {
+        let (mut prod, start) = (1u64, k);
+        while k < 167 && prod * (ODD_PRIMES[k].p as u64) < 1 << 32 {
+            prod *= ODD_PRIMES[k].p as u64;
+            k += 1;
+        }
+        out[g] = (prod, start, k);
+        g += 1;
+    }
+    (out, g)
+};
+
+/// `n mod m` for `m < 2^32`, from the 64-bit digits (most significant first), without allocating.
+fn rem_u32(n: &num_bigint::BigUint, m: u64) -> u64 {
+    n.iter_u64_digits().rev().fold(0u64, |r, d| {
+        let r = ((r << 32) | (d >> 32)) % m;
+        ((r << 32) | (d & 0xFFFF_FFFF)) % m
+    })
+}
+
+/// [`extract_small_squares`] of a big number: `(k, m)` with `n = k²·m` and `m` free of the
+/// squares of primes below 1000 (the rule of [`QuadraticExt::sqrt`](crate::QuadraticExt)).
+/// Divisibility is read from one remainder per group of primes ([`PRIME_GROUPS`]), not one big
+/// division per prime.
+pub(crate) fn extract_small_squares_big(n: &num_bigint::BigUint) -> (num_bigint::BigUint, num_bigint::BigUint) {
+    use num_bigint::BigUint;
+    use num_traits::{ToPrimitive, Zero};
+    if let Some(w) = n.to_u128() {
+        let (k, m) = extract_small_squares(w);
+        return (BigUint::from(k), BigUint::from(m));
+    }
+    let mut m = n.clone();
+    let mut k = BigUint::from(1u32);
+    if m.is_zero() {
+        return (k, m);
+    }
+    let twos = m.trailing_zeros().unwrap_or(0);
+    k <<= twos / 2;
+    m >>= twos - twos % 2;
+    let (groups, count) = PRIME_GROUPS;
+    for &(prod, start, end) in &groups[..count] {
+        let r = rem_u32(&m, prod);
+        for op in &ODD_PRIMES[start..end] {
+            let p = op.p as u64;
+            if !r.is_multiple_of(p) {
+                continue;
+            }
+            // p | m: divide out p² while it divides (m changes, so test on m itself)
+            let square = BigUint::from(p * p);
+            while rem_u32(&m, p * p) == 0 {
+                m /= &square;
+                k *= p;
+            }
+            if let Some(w) = m.to_u128() {
+                // the rest fits a word: finish there, from the next prime on
+                let next = ODD_PRIMES.iter().position(|o| o.p as u64 > p).unwrap_or(167);
+                let (k2, m2) = extract_small_squares_from(w, next);
+                return (k * BigUint::from(k2), BigUint::from(m2));
+            }
+        }
+    }
+    (k, m)
 }
 
 /// [`extract_small_squares`] of a word from the `from`-th odd prime on: one multiplication and
@@ -606,5 +687,52 @@ mod tests {
         {
             assert_eq!(extract_small_squares(n), (k, m), "{n}");
         }
+    }
+}
+
+#[cfg(test)]
+mod big_square_tests {
+    use super::*;
+    use num_bigint::BigUint;
+    use num_traits::{One, Zero};
+
+    /// The rule as first written: divide out k² for every k from 2 to 999.
+    fn naive(n: &BigUint) -> (BigUint, BigUint) {
+        let (mut k, mut m) = (BigUint::one(), n.clone());
+        if m.is_zero() {
+            return (k, m);
+        }
+        for j in 2u32..1000 {
+            let jj = BigUint::from(j * j);
+            while (&m % &jj).is_zero() {
+                m /= &jj;
+                k *= j;
+            }
+        }
+        (k, m)
+    }
+
+    #[test]
+    fn big_square_extraction_equals_the_naive_rule() {
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..300 {
+            // products of small primes (some squared), a large prime-ish part, powers of two
+            let mut n = BigUint::from(next() | 1) * BigUint::from(next());
+            for _ in 0..(next() % 6) {
+                let p = [3u64, 5, 7, 11, 997, 991, 2, 9, 25][(next() % 9) as usize];
+                n *= p * p;
+            }
+            if next() % 3 == 0 {
+                n *= BigUint::from(next()) * BigUint::from(next());
+            }
+            assert_eq!(extract_small_squares_big(&n), naive(&n), "{n}");
+        }
+        assert_eq!(extract_small_squares_big(&BigUint::zero()), (BigUint::one(), BigUint::zero()));
     }
 }

@@ -165,7 +165,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
                 let (dim, json, full) = (curve.dim, curve.json, detail == args::Detail::Full);
                 let mode = curve.numbers.into();
                 let direct = |text: &str, out: &mut Vec<u8>| {
-                    dim == 2 && !full && !float && answers::classify_integer_json(text, out)
+                    dim == 2 && !full && !float && answers::classify_direct_json(text, mode, out)
                 };
                 return batch::batch_lines_with(&curve, out, &direct, |line, text| {
                     answers::classify(text, dim, mode, line, float, full, json)
