@@ -281,12 +281,33 @@ fn values_big(p: &[[BigInt; 2]; 4], scale: &BigInt) -> Option<Values<BigRational
         None => decide(p)?,
     };
     let node = node_of(class)?;
-    let v = |f: &dyn Fn(usize) -> BigInt| [f(0), f(1)];
-    let a1 = v(&|i| 3 * (&p[1][i] - &p[0][i]));
-    let a2 = v(&|i| 3 * (&p[2][i] - 2 * &p[1][i] + &p[0][i]));
-    let a3 = v(&|i| &p[3][i] - 3 * &p[2][i] + 3 * &p[1][i] - &p[0][i]);
-    let cross = |u: &[BigInt; 2], w: &[BigInt; 2]| &u[0] * &w[1] - &u[1] * &w[0];
-    let (a, b, c) = (cross(&a2, &a3), cross(&a1, &a3), cross(&a1, &a2));
+    let small: Option<[[i128; 2]; 4]> = p
+        .iter()
+        .flatten()
+        .map(|x| x.to_i128().filter(|v| v.unsigned_abs() <= MAX_COORDINATE as u128))
+        .collect::<Option<Vec<i128>>>()
+        .map(|v| [[v[0], v[1]], [v[2], v[3]], [v[4], v[5]], [v[6], v[7]]]);
+    let ([a2, a3], [a, b, c]) = match small {
+        // coordinates ≤ 2^40: the power form and A, B, C (≤ 2^88) in words, then big
+        Some(q) => {
+            let v = |f: &dyn Fn(usize) -> i128| [f(0), f(1)];
+            let a1 = v(&|i| 3 * (q[1][i] - q[0][i]));
+            let a2 = v(&|i| 3 * (q[2][i] - 2 * q[1][i] + q[0][i]));
+            let a3 = v(&|i| q[3][i] - 3 * q[2][i] + 3 * q[1][i] - q[0][i]);
+            let cross = |u: [i128; 2], w: [i128; 2]| u[0] * w[1] - u[1] * w[0];
+            let big = |u: [i128; 2]| u.map(BigInt::from);
+            ([big(a2), big(a3)], [cross(a2, a3), cross(a1, a3), cross(a1, a2)].map(BigInt::from))
+        }
+        None => {
+            let v = |f: &dyn Fn(usize) -> BigInt| [f(0), f(1)];
+            let a1 = v(&|i| 3 * (&p[1][i] - &p[0][i]));
+            let a2 = v(&|i| 3 * (&p[2][i] - 2 * &p[1][i] + &p[0][i]));
+            let a3 = v(&|i| &p[3][i] - 3 * &p[2][i] + 3 * &p[1][i] - &p[0][i]);
+            let cross = |u: &[BigInt; 2], w: &[BigInt; 2]| &u[0] * &w[1] - &u[1] * &w[0];
+            let abc = [cross(&a2, &a3), cross(&a1, &a3), cross(&a1, &a2)];
+            ([a2, a3], abc)
+        }
+    };
     // the words every reduction is taken against
     let scale2 = (scale * scale).to_u128()?;
     let word = |x: &BigInt| x.magnitude().to_u128().filter(|&w| w != 0);

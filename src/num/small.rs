@@ -512,14 +512,14 @@ fn extract_small_squares_from(mut n: u128, from: usize) -> (u128, u128) {
     (k, n)
 }
 
-/// Products of consecutive odd primes below 1000, each below 2^32, with the index range of its
+/// Products of consecutive odd primes below 1000, each below 2^63, with the index range of its
 /// primes in [`ODD_PRIMES`]: one remainder of a big number per group, then word arithmetic.
 const PRIME_GROUPS: ([(u64, usize, usize); 167], usize) = {
     let mut out = [(0u64, 0usize, 0usize); 167];
     let (mut g, mut k) = (0, 0);
     while k < 167 {
         let (mut prod, start) = (1u64, k);
-        while k < 167 && prod * (ODD_PRIMES[k].p as u64) < 1 << 32 {
+        while k < 167 && (prod as u128) * ODD_PRIMES[k].p < 1 << 63 {
             prod *= ODD_PRIMES[k].p as u64;
             k += 1;
         }
@@ -529,12 +529,9 @@ const PRIME_GROUPS: ([(u64, usize, usize); 167], usize) = {
     (out, g)
 };
 
-/// `n mod m` for `m < 2^32`, from the 64-bit digits (most significant first), without allocating.
-fn rem_u32(n: &num_bigint::BigUint, m: u64) -> u64 {
-    n.iter_u64_digits().rev().fold(0u64, |r, d| {
-        let r = ((r << 32) | (d >> 32)) % m;
-        ((r << 32) | (d & 0xFFFF_FFFF)) % m
-    })
+/// `n mod m` for `m < 2^64`, from the 64-bit digits (most significant first), without allocating.
+fn rem_u64(n: &num_bigint::BigUint, m: u64) -> u64 {
+    n.iter_u64_digits().rev().fold(0u64, |r, d| ((u128::from(r) << 64 | u128::from(d)) % u128::from(m)) as u64)
 }
 
 /// [`extract_small_squares`] of a big number: `(k, m)` with `n = k²·m` and `m` free of the
@@ -558,7 +555,7 @@ pub(crate) fn extract_small_squares_big(n: &num_bigint::BigUint) -> (num_bigint:
     m >>= twos - twos % 2;
     let (groups, count) = PRIME_GROUPS;
     for &(prod, start, end) in &groups[..count] {
-        let r = rem_u32(&m, prod);
+        let r = rem_u64(&m, prod);
         for op in &ODD_PRIMES[start..end] {
             let p = op.p as u64;
             if !r.is_multiple_of(p) {
@@ -566,7 +563,7 @@ pub(crate) fn extract_small_squares_big(n: &num_bigint::BigUint) -> (num_bigint:
             }
             // p | m: divide out p² while it divides (m changes, so test on m itself)
             let square = BigUint::from(p * p);
-            while rem_u32(&m, p * p) == 0 {
+            while rem_u64(&m, p * p) == 0 {
                 m /= &square;
                 k *= p;
             }
