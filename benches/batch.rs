@@ -90,6 +90,16 @@ fn exact_pipeline(text: &str, out: &mut Vec<u8>) {
             out.push(b'\n');
             continue;
         }
+        // other numbers that fit: integers over their common denominator, in big integers
+        if let Some(p) = small_cubic(line, NumberMode::Exact) {
+            let scale =
+                p.iter().flatten().fold(1i128, |l, x| l / num_integer::Integer::gcd(&l, &x.denom()) * x.denom());
+            let ints = p.map(|q| q.map(|x| BigInt::from(x.numer()) * (scale / x.denom())));
+            if classify_json_scaled(&ints, &BigInt::from(scale), out) {
+                out.push(b'\n');
+                continue;
+            }
+        }
         generic_line(line, out);
     }
 }
@@ -255,6 +265,10 @@ fn batch(c: &mut Criterion) {
     let mut generic = Vec::new();
     generic_pipeline(&fonts, &mut generic);
     assert!(sink == generic, "the integer route and the generic route differ");
+    let (mut exact, mut generic) = (Vec::new(), Vec::new());
+    exact_pipeline(&rationals, &mut exact);
+    generic_pipeline(&rationals, &mut generic);
+    assert!(exact == generic, "the scaled route and the generic route differ");
 
     for (name, text, path, n) in [
         ("font_like_32768", &fonts, &font_file, 32_768u64),

@@ -427,3 +427,30 @@ fn intersect_all_parameters_skips_common_points_at_infinity() {
     let o = run(&["intersect", "--self", "--all", "--weights-a", "1 -1 1", "0 0, 1 1, 2 0"], None);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
+
+#[test]
+fn cli_bbox_and_winding_refuse_work_beyond_the_budget_naming_the_option() {
+    // degree 20 with 60-bit coordinates: about 20 s of work, refused up front
+    let pts = (0..21i128).map(|i| format!("{} {}", (i * 7919 + 1) << 50, (i * i * 31 + 5) << 48)).collect::<Vec<_>>();
+    let o = run(&["bbox", &pts.join(", ")], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("bounding box of degree 20") && stderr(&o).contains("--max-work"), "{}", stderr(&o));
+    // a small curve is answered, and a raised budget is honoured
+    assert_eq!(run(&["bbox", "0 0, 1 2, 2 0"], None).status.code(), Some(0));
+    let small = (0..6).map(|i| format!("{} {}", i * 3, (i * i) % 7)).collect::<Vec<_>>().join(", ");
+    assert_eq!(run(&["bbox", "--max-work", "1e12", &small], None).status.code(), Some(0));
+    // a closed path of four degree-200 segments: refused, naming the option
+    let seg = |a: (i64, i64), b: (i64, i64)| {
+        let mut p = vec![format!("{} {}", a.0, a.1)];
+        p.extend((1..200).map(|i| format!("{} {}", (i * 37) % 101, (i * 53) % 97)));
+        p.push(format!("{} {}", b.0, b.1));
+        p.join(", ")
+    };
+    let path = [seg((0, 0), (10, 0)), seg((10, 0), (10, 10)), seg((10, 10), (0, 10)), seg((0, 10), (0, 0))].join(" ; ");
+    let o = run(&["winding", "--point", "5 5", &path], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("winding number of a path of 4 segments"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--max-work"), "{}", stderr(&o));
+    let o = run(&["winding", "--max-work", "1e9", "--point", "1 1", "0 0, 4 0 ; 4 0, 0 4 ; 0 4, 0 0"], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}

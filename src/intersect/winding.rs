@@ -76,6 +76,32 @@ fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> BigRational {
     }
 }
 
+/// [`winding_number_rational`] within a work budget ([`crate::work::winding_segment`] summed over
+/// the segments), checked before any work starts.
+///
+/// # Errors
+/// As [`winding_number_rational`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+pub fn winding_number_within(
+    path: &[RationalBezier<BigRational>],
+    q: &Point<BigRational>,
+    budget: &crate::work::Budget,
+) -> Result<Winding> {
+    if path.len() > MAX_PATH_SEGMENTS {
+        return Err(Error::TooLarge { what: "segments in a path", value: path.len(), limit: MAX_PATH_SEGMENTS });
+    }
+    budget.check(format!("the winding number of a path of {} segments", path.len()), winding_estimate(path, q))?;
+    winding_number_rational(path, q)
+}
+
+/// The estimated work of [`winding_number_rational`]: [`crate::work::winding_segment`] summed
+/// over the segments (the query point's bits counted in each).
+pub fn winding_estimate(path: &[RationalBezier<BigRational>], q: &Point<BigRational>) -> f64 {
+    let qb = q.coords.iter().map(crate::work::bits).sum::<u64>();
+    path.iter()
+        .map(|s| crate::work::winding_segment(s.degree(), crate::work::max_bits(s.homogeneous().points()) + qb))
+        .sum()
+}
+
 /// [`winding_number_rational`] of polynomial segments.
 ///
 /// # Errors

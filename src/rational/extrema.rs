@@ -90,6 +90,21 @@ pub fn bounding_box_polynomial(curve: &BezierCurve<BigRational>) -> Result<Bound
     bounding_box(&RationalBezier::new(curve.points().to_vec(), w)?)
 }
 
+/// [`bounding_box`] within a work budget ([`crate::work::extrema`]), checked before any work
+/// starts.
+///
+/// # Errors
+/// As [`bounding_box`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+pub fn bounding_box_within(curve: &RationalBezier<BigRational>, budget: &crate::work::Budget) -> Result<BoundingBox> {
+    let n = curve.degree();
+    if n > MAX_EXTREMA_DEGREE {
+        return Err(Error::TooLarge { what: "degree for extrema", value: n, limit: MAX_EXTREMA_DEGREE });
+    }
+    let beta = crate::work::max_bits(curve.homogeneous().points());
+    budget.check(format!("the bounding box of degree {n}"), crate::work::extrema(n, beta))?;
+    bounding_box(curve)
+}
+
 /// The exact bounding box and stationary points of a rational curve on `[0, 1]`.
 ///
 /// # Errors

@@ -357,8 +357,8 @@ pub(crate) fn elevate_rational(c: &RationalBezier<BigRational>, by: usize) -> Re
 }
 
 /// `bbox`: the exact box and stationary points ([`casteljau::rational::extrema::BoundingBox`]).
-pub(crate) fn bbox(c: &RationalBezier<BigRational>) -> Result<(String, Value)> {
-    let b = casteljau::rational::extrema::bounding_box(c)?;
+pub(crate) fn bbox(c: &RationalBezier<BigRational>, budget: &casteljau::work::Budget) -> Result<(String, Value)> {
+    let b = casteljau::rational::extrema::bounding_box_within(c, budget)?;
     let names = ["x", "y", "z"];
     let name = |k: usize| names.get(k).map(|s| s.to_string()).unwrap_or(format!("x{k}"));
     let mut lines: Vec<String> = (0..b.min.len())

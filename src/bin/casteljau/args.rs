@@ -693,6 +693,10 @@ pub struct WindingArgs {
     /// the windings add up.
     #[arg(long)]
     pub svg: bool,
+    /// Work budget per path, in work units (about 1 ns each): a path whose estimated cost exceeds
+    /// it is refused (exit 2) before any work starts.
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
     /// Batch input (one path per line), output form, threads, numbers.
     #[command(flatten)]
     pub batch: BatchOptions,

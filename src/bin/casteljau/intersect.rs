@@ -116,7 +116,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
 /// absent).
 pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 {
     use casteljau::format::{Segment, svg_path};
-    use casteljau::intersect::winding::{Winding, winding_number};
+    use casteljau::intersect::winding::{Winding, winding_estimate, winding_number_rational};
     let mode: NumberMode = args.batch.numbers.into();
     let q = match parse_points_in(&args.point, 2, None, mode) {
         Ok(p) if p.len() == 1 => p.into_iter().next().expect("one point"),
@@ -130,6 +130,7 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
         }
     };
     let svg = args.svg;
+    let budget = casteljau::work::Budget::new(args.max_work, "--max-work");
     let curve_args = args.batch.curve_args(args.path.clone());
     batch_lines(&curve_args, out, |line, text_line| {
         let subpaths: Vec<Vec<casteljau::BezierCurve<BigRational>>> = if svg {
@@ -163,9 +164,22 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
                     .collect::<Result<_>>()?,
             ]
         };
+        let unit = |c: &casteljau::BezierCurve<BigRational>| {
+            casteljau::RationalBezier::new(
+                c.points().to_vec(),
+                vec![BigRational::from_integer(1.into()); c.points().len()],
+            )
+        };
+        let subpaths: Vec<Vec<casteljau::RationalBezier<BigRational>>> =
+            subpaths.iter().map(|sp| sp.iter().map(unit).collect()).collect::<Result<_>>()?;
+        let segments: usize = subpaths.iter().map(Vec::len).sum();
+        budget.check(
+            format!("the winding number of a path of {segments} segments"),
+            subpaths.iter().map(|sp| winding_estimate(sp, &q)).sum(),
+        )?;
         let mut total = 0i64;
         for (k, sp) in subpaths.iter().enumerate() {
-            match winding_number(sp, &q)? {
+            match winding_number_rational(sp, &q)? {
                 Winding::Inside(w) => total += w,
                 Winding::OnBoundary { segment, t } => {
                     let text = format!("on the path: subpath {k}, segment {segment}, t = {t}");

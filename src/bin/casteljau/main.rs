@@ -119,7 +119,10 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Intersect(args) => intersect::run(&args, out),
         Command::Winding(args) => intersect::run_winding(&args, out),
         Command::Bbox { rational, curve } => {
-            rational_batch(&rational, curve, out, move |c, w| answers::bbox(&rational_curve(c, w)?).map(Answer::from))
+            let budget = curve.budget();
+            rational_batch(&rational, curve, out, move |c, w| {
+                answers::bbox(&rational_curve(c, w)?, &budget).map(Answer::from)
+            })
         }
         Command::Conic { rational, curve } => {
             rational_batch(&rational, curve, out, move |c, w| answers::conic(&rational_curve(c, w)?).map(Answer::from))
