@@ -8,11 +8,12 @@
 //! `cargo bench --bench batch`.
 
 use casteljau::BezierCurve;
-use casteljau::classify::integer::classify_json;
+use casteljau::classify::integer::{classify_json, classify_json_scaled};
 use casteljau::classify::{classify, classify_in};
-use casteljau::num::parse::{integer_cubic, parse_points, parse_points_small};
+use casteljau::num::parse::{NumberMode, integer_cubic, parse_points, parse_points_small, small_cubic};
 use casteljau::num::small::checked;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use num_bigint::BigInt;
 use std::hint::black_box;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
