@@ -284,17 +284,27 @@ pub fn intersect_within(
     let ss = finite_roots(roots(&r, domain), &fa);
     let ts = finite_roots(roots(&t_poly, domain), &fb);
     let (rr, tr) = (to_rational(&r), to_rational(&t_poly));
-    let pa: Vec<[RealAlgebraic; 2]> = ss.iter().map(|s| point_at(&fa, s)).collect();
-    let pb: Vec<[RealAlgebraic; 2]> = ts.iter().map(|t| point_at(&fb, t)).collect();
+    // exact points only for pairs whose enclosures cannot be told apart (most pairs are not
+    // intersections, and mapping a root to its point is the costly step)
+    let mut pa: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ss.len()];
+    let mut pb: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ts.len()];
     let mut out = vec![];
-    for (s, p) in ss.iter().zip(&pa) {
-        for (t, q) in ts.iter().zip(&pb) {
-            if p[0] == q[0] && p[1] == q[1] {
+    for (i, s) in ss.iter().enumerate() {
+        for (j, t) in ts.iter().enumerate() {
+            if apart(&fa, s, &fb, t) {
+                continue;
+            }
+            let p = pa[i].get_or_insert_with(|| point_at(&fa, s)).clone();
+            let same = proved_common(&fa, s, &fb, t) || {
+                let q = pb[j].get_or_insert_with(|| point_at(&fb, t));
+                p[0] == q[0] && p[1] == q[1]
+            };
+            if same {
                 let order = multiplicity(&rr, s).min(multiplicity(&tr, t)).max(1);
                 out.push(Intersection {
                     s_float: s.to_f64(),
                     t_float: t.to_f64(),
-                    point: rational_point(p),
+                    point: rational_point(&p),
                     point_float: [p[0].to_f64(), p[1].to_f64()],
                     kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
                     contact_order: order,
@@ -305,6 +315,197 @@ pub fn intersect_within(
         }
     }
     Ok(Intersections { intersections: out, overlaps: vec![] })
+}
+
+/// A closed `f64` interval whose ends are rounded outwards after every operation, so it holds
+/// the exact value: a certified filter (a disjointness it shows is a proof; `inf` and `NaN`
+/// only ever make it show nothing).
+#[derive(Clone, Copy, Debug)]
+struct Enclosure(f64, f64);
+
+impl Enclosure {
+    /// An integer: `to_f64` is within an ulp, widened by two.
+    fn of_integer(c: &BigInt) -> Self {
+        let f = num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN);
+        Enclosure(f.next_down().next_down(), f.next_up().next_up())
+    }
+    fn add(self, o: Self) -> Self {
+        Enclosure((self.0 + o.0).next_down(), (self.1 + o.1).next_up())
+    }
+    fn mul(self, o: Self) -> Self {
+        let p = [self.0 * o.0, self.0 * o.1, self.1 * o.0, self.1 * o.1];
+        if p.iter().any(|x| x.is_nan()) {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Enclosure(lo.next_down(), hi.next_up())
+    }
+    /// `self / o` when `o` keeps away from 0 (else nothing is known).
+    fn div(self, o: Self) -> Self {
+        if !(o.0 > 0.0 || o.1 < 0.0) {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        let q = [self.0 / o.0, self.0 / o.1, self.1 / o.0, self.1 / o.1];
+        if q.iter().any(|x| x.is_nan()) {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        let lo = q.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = q.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Enclosure(lo.next_down(), hi.next_up())
+    }
+    fn neg(self) -> Self {
+        Enclosure(-self.1, -self.0)
+    }
+    /// Provably no common point (false whenever an end is `NaN`).
+    fn apart(self, o: Self) -> bool {
+        self.1 < o.0 || o.1 < self.0
+    }
+}
+
+/// An enclosure of the power form `p` (integer coefficients) over the interval `x`: Horner.
+fn enclose(p: &[BigInt], x: Enclosure) -> Enclosure {
+    p.iter().rev().fold(Enclosure(0.0, 0.0), |acc, c| acc.mul(x).add(Enclosure::of_integer(c)))
+}
+
+/// The point of `f` over the isolating interval of `x`.
+fn enclose_point(f: &[Vec<BigInt>; 3], x: &RealAlgebraic) -> [Enclosure; 2] {
+    let (lo, hi) = x.interval();
+    let (lo, hi) = (crate::num::scalar::ratio_to_f64(&lo), crate::num::scalar::ratio_to_f64(&hi));
+    let x = Enclosure(lo.next_down(), hi.next_up());
+    let w = enclose(&f[2], x);
+    [enclose(&f[0], x).div(w), enclose(&f[1], x).div(w)]
+}
+
+/// `A(s) ≠ B(t)`, proved by enclosures of both points, the isolating intervals narrowed (on
+/// copies: the roots keep their intervals) a few times while the enclosures overlap; false when
+/// that does not separate them (the exact comparison decides then).
+fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>; 3], t: &RealAlgebraic) -> bool {
+    let (mut s, mut t) = (s.clone(), t.clone());
+    for round in 0..6 {
+        let (p, q) = (enclose_point(fa, &s), enclose_point(fb, &t));
+        if p[0].apart(q[0]) || p[1].apart(q[1]) {
+            return true;
+        }
+        if round < 5 {
+            for _ in 0..4 {
+                s.bisect();
+                t.bisect();
+            }
+        }
+    }
+    false
+}
+
+/// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator (interval Newton) on
+/// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` over a small box around an
+/// `f64` Newton solution inside the isolating intervals of `s` and `t`: when the operator maps
+/// the box into its interior, `F` has exactly one zero `(σ*, τ*)` there; then `σ*` is a root of
+/// the resultant in `s`'s isolating interval, so `σ* = s`, and likewise `τ* = t`. False when that
+/// does not succeed (a tangency, rational curves, a box outside the intervals): the exact
+/// comparison decides then. Every decision it makes is a proof; `f64` only proposes the box.
+fn proved_common(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>; 3], t: &RealAlgebraic) -> bool {
+    use num_traits::ToPrimitive;
+    if fa[2].len() != 1 || fb[2].len() != 1 {
+        return false;
+    }
+    let (wa, wb) = (&fa[2][0], &fb[2][0]);
+    let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
+    let deriv = |p: &[BigInt]| -> Vec<BigInt> { p.iter().enumerate().skip(1).map(|(k, c)| c * k).collect() };
+    // F's coordinates as polynomials in σ (first curve) and τ (second curve)
+    let (xa, ya, xb, yb) = (scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa));
+    let (dxa, dya, dxb, dyb) = (deriv(&xa), deriv(&ya), deriv(&xb), deriv(&yb));
+    let floats =
+        |p: &[BigInt]| -> Option<Vec<f64>> { p.iter().map(|c| c.to_f64().filter(|x| x.is_finite())).collect() };
+    let (Some(fxa), Some(fya), Some(fxb), Some(fyb)) = (floats(&xa), floats(&ya), floats(&xb), floats(&yb)) else {
+        return false;
+    };
+    let (Some(fdxa), Some(fdya), Some(fdxb), Some(fdyb)) = (floats(&dxa), floats(&dya), floats(&dxb), floats(&dyb))
+    else {
+        return false;
+    };
+    let horner = |p: &[f64], x: f64| p.iter().rev().fold(0.0, |acc, c| acc * x + c);
+    let mid = |x: &RealAlgebraic| {
+        let (lo, hi) = x.interval();
+        crate::num::scalar::ratio_to_f64(&((lo + hi) / BigRational::from_integer(2.into())))
+    };
+    // Newton in f64 from the middle of the isolating intervals
+    let (mut u, mut v) = (mid(s), mid(t));
+    for _ in 0..12 {
+        let (f1, f2) = (horner(&fxa, u) - horner(&fxb, v), horner(&fya, u) - horner(&fyb, v));
+        let (a, b, c, d) = (horner(&fdxa, u), -horner(&fdxb, v), horner(&fdya, u), -horner(&fdyb, v));
+        let det = a * d - b * c;
+        if det == 0.0 || !det.is_finite() {
+            return false;
+        }
+        u -= (d * f1 - b * f2) / det;
+        v -= (a * f2 - c * f1) / det;
+    }
+    if !u.is_finite() || !v.is_finite() {
+        return false;
+    }
+    // the box: some hundreds of ulps around the Newton point (wider if that fails), inside both
+    // isolating intervals
+    [256.0, 65536.0, 1.6e7]
+        .iter()
+        .any(|&ulps| krawczyk(&[&xa, &ya, &xb, &yb], &[&dxa, &dya, &dxb, &dyb], s, t, u, v, ulps))
+}
+
+/// The Krawczyk test of [`proved_common`] on the box of `ulps` around `(u, v)`: polynomials
+/// `[X_A, Y_A, X_B, Y_B]` (scaled) and their derivatives.
+fn krawczyk(
+    polys: &[&Vec<BigInt>; 4],
+    derivs: &[&Vec<BigInt>; 4],
+    s: &RealAlgebraic,
+    t: &RealAlgebraic,
+    u: f64,
+    v: f64,
+    ulps: f64,
+) -> bool {
+    let [xa, ya, xb, yb] = *polys;
+    let [dxa, dya, dxb, dyb] = *derivs;
+    let radius = |x: f64| ulps * f64::EPSILON * x.abs().max(1.0);
+    let (su, sv) = (Enclosure(u - radius(u), u + radius(u)), Enclosure(v - radius(v), v + radius(v)));
+    let inside = |e: Enclosure, x: &RealAlgebraic| {
+        let (lo, hi) = x.interval();
+        match (BigRational::from_float(e.0), BigRational::from_float(e.1)) {
+            (Some(a), Some(b)) => lo <= a && b <= hi,
+            _ => false,
+        }
+    };
+    if !inside(su, s) || !inside(sv, t) {
+        return false;
+    }
+    let point = |x: f64| Enclosure(x, x);
+    let (mu, mv) = (point(u), point(v));
+    // F(m) and J(box), enclosed
+    let f1 = enclose(xa, mu).add(enclose(xb, mv).neg());
+    let f2 = enclose(ya, mu).add(enclose(yb, mv).neg());
+    let j = [[enclose(dxa, su), enclose(dxb, sv).neg()], [enclose(dya, su), enclose(dyb, sv).neg()]];
+    // Y ≈ J(m)⁻¹ (any matrix will do; the proof holds for it as given)
+    let mid = |e: Enclosure| (e.0 + e.1) / 2.0;
+    let (a, b, c, d) = (mid(enclose(dxa, mu)), -mid(enclose(dxb, mv)), mid(enclose(dya, mu)), -mid(enclose(dyb, mv)));
+    let det = a * d - b * c;
+    let y = [[d / det, -b / det], [-c / det, a / det]];
+    if y.iter().flatten().any(|x| !x.is_finite()) {
+        return false;
+    }
+    let yk = |r: usize, k: usize| point(y[r][k]);
+    let dx = [su.add(mu.neg()), sv.add(mv.neg())];
+    let m = [mu, mv];
+    let f = [f1, f2];
+    let bx = [su, sv];
+    (0..2).all(|r| {
+        // K_r = m_r − (Y F(m))_r + Σ_k (δ_rk − (Y J)_rk)(X_k − m_k)
+        let yf = yk(r, 0).mul(f[0]).add(yk(r, 1).mul(f[1]));
+        let mut k_r = m[r].add(yf.neg());
+        for k in 0..2 {
+            let yj = yk(r, 0).mul(j[0][k]).add(yk(r, 1).mul(j[1][k]));
+            let delta = if r == k { Enclosure(1.0, 1.0) } else { Enclosure(0.0, 0.0) };
+            k_r = k_r.add(delta.add(yj.neg()).mul(dx[k]));
+        }
+        k_r.0 > bx[r].0 && k_r.1 < bx[r].1
+    })
 }
 
 /// `(F(s)W(t) − F(t)W(s)) / (s − t)` as a polynomial in `t` with coefficients in `Z[s]`.
@@ -369,17 +570,23 @@ pub fn self_intersect_within(
     }
     let ss = finite_roots(roots(&r, domain), &fa);
     let rr = to_rational(&r);
-    let pts: Vec<[RealAlgebraic; 2]> = ss.iter().map(|s| point_at(&fa, s)).collect();
+    // exact points only for pairs whose enclosures cannot be told apart (see `intersect_within`)
+    let mut pts: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ss.len()];
     let mut out = vec![];
     for i in 0..ss.len() {
         for j in i + 1..ss.len() {
-            if pts[i][0] == pts[j][0] && pts[i][1] == pts[j][1] {
+            if apart(&fa, &ss[i], &fa, &ss[j]) {
+                continue;
+            }
+            let p = pts[i].get_or_insert_with(|| point_at(&fa, &ss[i])).clone();
+            let q = pts[j].get_or_insert_with(|| point_at(&fa, &ss[j]));
+            if p[0] == q[0] && p[1] == q[1] {
                 let order = multiplicity(&rr, &ss[i]).min(multiplicity(&rr, &ss[j])).max(1);
                 out.push(Intersection {
                     s_float: ss[i].to_f64(),
                     t_float: ss[j].to_f64(),
-                    point: rational_point(&pts[i]),
-                    point_float: [pts[i][0].to_f64(), pts[i][1].to_f64()],
+                    point: rational_point(&p),
+                    point_float: [p[0].to_f64(), p[1].to_f64()],
                     kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
                     contact_order: order,
                     s: ss[i].clone(),
@@ -611,5 +818,83 @@ impl IntersectionDisagreement {
             float: Some((s, t)),
             exact_float: None,
         }
+    }
+}
+
+#[cfg(test)]
+mod filter_tests {
+    use super::*;
+    use crate::num::scalar::rat;
+
+    fn cubic(v: [i64; 8]) -> RationalBezier<BigRational> {
+        let pts = (0..4).map(|i| Point::new(vec![rat(v[2 * i]), rat(v[2 * i + 1])])).collect();
+        RationalBezier::new(pts, vec![rat(1); 4]).unwrap()
+    }
+
+    /// Every decision of the enclosure filter and of the Krawczyk proof, checked exactly on every
+    /// root pair of random font-like cubic pairs: `apart` only for different points,
+    /// `proved_common` only for equal ones, and the proof succeeds on most crossings.
+    #[test]
+    fn enclosure_filter_and_krawczyk_proof_agree_with_exact_points() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % 4097) as i64 - 2048
+        };
+        let (mut proved, mut crossings) = (0, 0);
+        for _ in 0..12 {
+            let (a, b) = (cubic(std::array::from_fn(|_| next())), cubic(std::array::from_fn(|_| next())));
+            let (fa, fb) = (integer_forms(&a), integer_forms(&b));
+            let r = resultant_zv(
+                &cross_system(&fa[0], &fa[2], &fb[0], &fb[2]),
+                &cross_system(&fa[1], &fa[2], &fb[1], &fb[2]),
+            );
+            let t_poly = resultant_zv(
+                &cross_system(&fb[0], &fb[2], &fa[0], &fa[2]),
+                &cross_system(&fb[1], &fb[2], &fa[1], &fa[2]),
+            );
+            for s in roots(&r, Domain::Unit) {
+                for t in roots(&t_poly, Domain::Unit) {
+                    let (p, q) = (point_at(&fa, &s), point_at(&fb, &t));
+                    let equal = p[0] == q[0] && p[1] == q[1];
+                    if apart(&fa, &s, &fb, &t) {
+                        assert!(!equal, "apart, but A(s) = B(t)");
+                    }
+                    if proved_common(&fa, &s, &fb, &t) {
+                        assert!(equal, "proved common, but A(s) ≠ B(t)");
+                        proved += 1;
+                    }
+                    crossings += usize::from(equal);
+                }
+            }
+        }
+        // the proof may decline a crossing (the exact comparison then decides), but not most
+        assert!(crossings > 0 && 4 * proved >= 3 * crossings, "{proved} of {crossings} crossings proved");
+    }
+
+    #[test]
+    fn krawczyk_proof_declines_a_tangency() {
+        // y = x² at its vertex against the x-axis: a tangency, left to the exact comparison
+        let para = RationalBezier::new(
+            vec![
+                Point::new(vec![rat(-1), rat(1)]),
+                Point::new(vec![rat(0), rat(-1)]),
+                Point::new(vec![rat(1), rat(1)]),
+            ],
+            vec![rat(1); 3],
+        )
+        .unwrap();
+        let line = RationalBezier::new(
+            vec![Point::new(vec![rat(-2), rat(0)]), Point::new(vec![rat(2), rat(0)])],
+            vec![rat(1); 2],
+        )
+        .unwrap();
+        let (fa, fb) = (integer_forms(&para), integer_forms(&line));
+        let k = intersect(&para, &line, Domain::Unit).unwrap();
+        assert_eq!(k.intersections.len(), 1);
+        assert_eq!(k.intersections[0].kind, Kind::Tangent);
+        assert!(!proved_common(&fa, &k.intersections[0].s, &fb, &k.intersections[0].t));
     }
 }
