@@ -8,12 +8,11 @@
 //! `cargo bench --bench batch`.
 
 use casteljau::BezierCurve;
-use casteljau::classify::integer::{classify_json, classify_json_scaled};
+use casteljau::classify::integer::{classify_json, classify_json_small};
 use casteljau::classify::{classify, classify_in};
 use casteljau::num::parse::{NumberMode, integer_cubic, parse_points, parse_points_small, small_cubic};
 use casteljau::num::small::checked;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use num_bigint::BigInt;
 use std::hint::black_box;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
@@ -92,14 +91,11 @@ fn exact_pipeline(text: &str, out: &mut Vec<u8>) {
             continue;
         }
         // other numbers that fit: integers over their common denominator, in big integers
-        if let Some(p) = small_cubic(line, NumberMode::Exact) {
-            let scale =
-                p.iter().flatten().fold(1i128, |l, x| l / num_integer::Integer::gcd(&l, &x.denom()) * x.denom());
-            let ints = p.map(|q| q.map(|x| BigInt::from(x.numer()) * (scale / x.denom())));
-            if classify_json_scaled(&ints, &BigInt::from(scale), out) {
-                out.push(b'\n');
-                continue;
-            }
+        if let Some(p) = small_cubic(line, NumberMode::Exact)
+            && classify_json_small(&p, out)
+        {
+            out.push(b'\n');
+            continue;
         }
         generic_line(line, out);
     }

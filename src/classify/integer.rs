@@ -181,28 +181,33 @@ fn parameters<K: Radical>(
     ([QuadraticExt::new(te.clone(), -b.clone(), m.clone()), QuadraticExt::new(te.clone(), b.clone(), m.clone())], 2)
 }
 
-fn values_i128(p: &[[i64; 2]; 4]) -> Option<Values<SmallRational>> {
-    let q: [[i128; 2]; 4] = p.map(|c| c.map(i128::from));
-    let (class, seg) = decide(&q)?;
-    let node = node_of(class)?;
+impl<K: Radical> Values<K> {
+    /// The values before the node type's numbers are filled in.
+    fn new(class: CurveClass, node: Option<NodeType>, seg: SegmentFeatures, invariants: [K; 3]) -> Self {
+        let zero = || QuadraticExt::from_base(K::zero());
+        Values { class, node, seg, invariants, double_point: None, params: [zero(), zero()], count: 0, te_d: None }
+    }
+}
+
+/// `[a2, a3]` and `[A, B, C]` of integer control points `|q| ≤ 2^40` (so every product is checked
+/// and fits): the power form and its invariants in words.
+fn power_form_words(q: &[[i128; 2]; 4]) -> Option<([[i128; 2]; 2], [i128; 3])> {
     let v = |f: &dyn Fn(usize) -> i128| [f(0), f(1)];
     let a1 = v(&|i| 3 * (q[1][i] - q[0][i]));
     let a2 = v(&|i| 3 * (q[2][i] - 2 * q[1][i] + q[0][i]));
     let a3 = v(&|i| q[3][i] - 3 * q[2][i] + 3 * q[1][i] - q[0][i]);
     let cross = |u: [i128; 2], w: [i128; 2]| u[0].checked_mul(w[1])?.checked_sub(u[1].checked_mul(w[0])?);
-    let (a, b, c) = (cross(a2, a3)?, cross(a1, a3)?, cross(a1, a2)?);
+    Some(([a2, a3], [cross(a2, a3)?, cross(a1, a3)?, cross(a1, a2)?]))
+}
+
+fn values_i128(p: &[[i64; 2]; 4]) -> Option<Values<SmallRational>> {
+    let q: [[i128; 2]; 4] = p.map(|c| c.map(i128::from));
+    let (class, seg) = decide(&q)?;
+    let node = node_of(class)?;
+    let ([a2, a3], [a, b, c]) = power_form_words(&q)?;
     let zero = || QuadraticExt::from_base(SmallRational::zero());
     let integer = SmallRational::integer;
-    let mut out = Values {
-        class,
-        node,
-        seg,
-        invariants: [integer(a), integer(b), integer(c)],
-        double_point: None,
-        params: [zero(), zero()],
-        count: 0,
-        te_d: None,
-    };
+    let mut out = Values::new(class, node, seg, [integer(a), integer(b), integer(c)]);
     match node {
         None => {}
         Some(NodeType::Explicit) => {
@@ -290,13 +295,8 @@ fn values_big(p: &[[BigInt; 2]; 4], scale: &BigInt) -> Option<Values<BigRational
     let ([a2, a3], [a, b, c]) = match small {
         // coordinates ≤ 2^40: the power form and A, B, C (≤ 2^88) in words, then big
         Some(q) => {
-            let v = |f: &dyn Fn(usize) -> i128| [f(0), f(1)];
-            let a1 = v(&|i| 3 * (q[1][i] - q[0][i]));
-            let a2 = v(&|i| 3 * (q[2][i] - 2 * q[1][i] + q[0][i]));
-            let a3 = v(&|i| q[3][i] - 3 * q[2][i] + 3 * q[1][i] - q[0][i]);
-            let cross = |u: [i128; 2], w: [i128; 2]| u[0] * w[1] - u[1] * w[0];
-            let big = |u: [i128; 2]| u.map(BigInt::from);
-            ([big(a2), big(a3)], [cross(a2, a3), cross(a1, a3), cross(a1, a2)].map(BigInt::from))
+            let (a23, abc) = power_form_words(&q)?;
+            (a23.map(|u| u.map(BigInt::from)), abc.map(BigInt::from))
         }
         None => {
             let v = |f: &dyn Fn(usize) -> BigInt| [f(0), f(1)];
@@ -315,16 +315,7 @@ fn values_big(p: &[[BigInt; 2]; 4], scale: &BigInt) -> Option<Values<BigRational
     // the invariants of p/scale are A/scale², …
     let invariant = |x: &BigInt| reduced_by(x.clone(), BigInt::from(scale2), &BigInt::from(gcd_word(x, scale2)));
     let zero = || QuadraticExt::from_base(<BigRational as Scalar>::zero());
-    let mut out = Values {
-        class,
-        node,
-        seg,
-        invariants: [invariant(&a), invariant(&b), invariant(&c)],
-        double_point: None,
-        params: [zero(), zero()],
-        count: 0,
-        te_d: None,
-    };
+    let mut out = Values::new(class, node, seg, [invariant(&a), invariant(&b), invariant(&c)]);
     match node {
         None => {}
         Some(NodeType::Explicit) => {
@@ -421,6 +412,26 @@ impl std::fmt::Display for Rendered<'_> {
 thread_local! {
     /// Scratch space for the digits of `t_E` and `d` (reused: no allocation per curve).
     static SCRATCH: std::cell::RefCell<(Vec<u8>, Vec<u8>)> = const { std::cell::RefCell::new((Vec::new(), Vec::new())) };
+}
+
+/// [`classify_json_scaled`] of a cubic with fixed-width rational control points (as
+/// [`small_cubic`](crate::num::parse::small_cubic) reads them): scaled by the lcm of the
+/// denominators; `false` when that scale does not fit `i128` or the route does not take the curve.
+///
+/// # Example
+/// ```
+/// use casteljau::classify::integer::classify_json_small;
+/// use casteljau::num::parse::{NumberMode, small_cubic};
+/// let p = small_cubic("0 0, 1/2 1/2, 0 1/2, 1/2 0", NumberMode::Exact).unwrap();
+/// let mut out = vec![];
+/// assert!(classify_json_small(&p, &mut out));
+/// assert!(String::from_utf8(out).unwrap().contains(r#""double_point":["1/4","3/8"]"#));
+/// ```
+pub fn classify_json_small(p: &[[SmallRational; 2]; 4], out: &mut Vec<u8>) -> bool {
+    let lcm = |l: i128, d: i128| l.checked_mul(d / num_integer::Integer::gcd(&l, &d));
+    let Some(scale) = p.iter().flatten().try_fold(1i128, |l, x| lcm(l, x.denom())) else { return false };
+    let ints = p.map(|q| q.map(|x| BigInt::from(x.numer()) * (scale / x.denom())));
+    classify_json_scaled(&ints, &BigInt::from(scale), out)
 }
 
 fn write_values<K: Digits>(v: &Values<K>, out: &mut Vec<u8>) {

@@ -364,6 +364,31 @@ pub fn parse_points_small_in(
     group_points(&toks, values, dim, line).ok()
 }
 
+/// Skips blanks, at most one comma and blanks from `i`; whether there was a comma.
+fn skip_separator(b: &[u8], i: &mut usize) -> bool {
+    let blank = |c: u8| c == b' ' || c == b'\t';
+    while *i < b.len() && blank(b[*i]) {
+        *i += 1;
+    }
+    if *i < b.len() && b[*i] == b',' {
+        *i += 1;
+        while *i < b.len() && blank(b[*i]) {
+            *i += 1;
+        }
+        return true;
+    }
+    false
+}
+
+/// Eight numbers with `commas[k]` after number `k` form four points as `group_points` reads
+/// them: commas after points, none, or after every number.
+fn four_points(commas: &[bool; 8]) -> bool {
+    let inner = [commas[0], commas[2], commas[4], commas[6]];
+    let between = [commas[1], commas[3], commas[5]];
+    let grouped = inner.iter().all(|c| !c) && between.iter().all(|&c| c);
+    grouped || commas[..7].iter().all(|c| !c) || commas[..7].iter().all(|&c| c)
+}
+
 /// The eight number tokens of a planar cubic written `x y, x y, x y, x y` (or separated by
 /// spaces only, or by commas only; spaces and tabs, an optional trailing comma): what
 /// [`parse_points`] groups into four points, or `None` for any other layout. Allocates nothing.
@@ -386,26 +411,9 @@ fn eight_tokens(text: &str) -> Option<[&str; 8]> {
             return None;
         }
         tokens[k] = &text[start..i];
-        while i < b.len() && blank(b[i]) {
-            i += 1;
-        }
-        if i < b.len() && b[i] == b',' {
-            commas[k] = true;
-            i += 1;
-            while i < b.len() && blank(b[i]) {
-                i += 1;
-            }
-        }
+        commas[k] = skip_separator(b, &mut i);
     }
-    if i != b.len() {
-        return None;
-    }
-    // grouping as `group_points` reads it: commas after points, none, or after every number
-    let inner = [commas[0], commas[2], commas[4], commas[6]];
-    let between = [commas[1], commas[3], commas[5]];
-    let grouped = inner.iter().all(|c| !c) && between.iter().all(|&c| c);
-    let flat = commas[..7].iter().all(|c| !c) || commas[..7].iter().all(|&c| c);
-    (grouped || flat).then_some(tokens)
+    (i == b.len() && four_points(&commas)).then_some(tokens)
 }
 
 /// The planar cubic of a batch line written with plain integers, the common case of font
@@ -457,32 +465,14 @@ pub fn integer_cubic(text: &str) -> Option<[[i64; 2]; 4]> {
             return None;
         }
         values[k] = if negative { -v } else { v };
-        // separator: blanks, at most one comma, blanks
         let sep_start = i;
-        while i < b.len() && blank(b[i]) {
-            i += 1;
-        }
-        if i < b.len() && b[i] == b',' {
-            commas[k] = true;
-            i += 1;
-            while i < b.len() && blank(b[i]) {
-                i += 1;
-            }
-        }
+        commas[k] = skip_separator(b, &mut i);
         k += 1;
         if i == sep_start && i < b.len() {
             return None; // a number runs into something else
         }
     }
-    if i != b.len() {
-        return None;
-    }
-    // grouping as `group_points` reads it: commas after points, none, or after every number
-    let inner = [commas[0], commas[2], commas[4], commas[6]];
-    let between = [commas[1], commas[3], commas[5]];
-    let grouped = inner.iter().all(|c| !c) && between.iter().all(|&c| c);
-    let flat = commas[..7].iter().all(|c| !c) || commas[..7].iter().all(|&c| c);
-    if !grouped && !flat {
+    if i != b.len() || !four_points(&commas) {
         return None;
     }
     Some([[values[0], values[1]], [values[2], values[3]], [values[4], values[5]], [values[6], values[7]]])

@@ -174,19 +174,11 @@ struct FloatApproximations {
 /// plain integers in `i128`; other numbers that fit a fixed-width rational over their common
 /// denominator (below 2^64) in big integers; false when it does not take the line.
 pub(crate) fn classify_direct_json(text: &str, mode: casteljau::num::parse::NumberMode, out: &mut Vec<u8>) -> bool {
-    use casteljau::classify::integer::{classify_json, classify_json_scaled};
-    use num_bigint::BigInt;
-    if let Some(p) = casteljau::num::parse::integer_cubic(text) {
-        return classify_json(&p, out);
+    use casteljau::classify::integer::{classify_json, classify_json_small};
+    match casteljau::num::parse::integer_cubic(text) {
+        Some(p) => classify_json(&p, out),
+        None => casteljau::num::parse::small_cubic(text, mode).is_some_and(|p| classify_json_small(&p, out)),
     }
-    let Some(points) = casteljau::num::parse::small_cubic(text, mode) else { return false };
-    let mut denominators = points.iter().flatten().map(|x| x.denom());
-    let Some(scale) = denominators.try_fold(1i128, |l, d| l.checked_mul(d / num_integer::Integer::gcd(&l, &d))) else {
-        return false;
-    };
-    let integer = |x: &casteljau::num::small::SmallRational| BigInt::from(x.numer()) * (scale / x.denom());
-    let p: [[BigInt; 2]; 4] = points.map(|q| q.map(|x| integer(&x)));
-    classify_json_scaled(&p, &BigInt::from(scale), out)
 }
 
 /// `classify` of a polynomial curve: the fast route (fixed-width exact arithmetic, when every
