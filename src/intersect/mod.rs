@@ -199,6 +199,81 @@ fn rational_point(p: &[RealAlgebraic; 2]) -> Option<Point<BigRational>> {
     Some(Point::new(vec![p[0].to_rational()?.clone(), p[1].to_rational()?.clone()]))
 }
 
+/// The point `(X/W, Y/W)` at a rational parameter.
+fn point_at_rational(f: &[Vec<BigInt>; 3], x: &BigRational) -> Point<BigRational> {
+    let eval = |p: &[BigInt]| p.iter().rev().fold(rat(0), |acc, c| acc * x + BigRational::from_integer(c.clone()));
+    let w = eval(&f[2]);
+    Point::new(vec![eval(&f[0]) / &w, eval(&f[1]) / &w])
+}
+
+/// One curve's forms with what the exact-point decision needs about them, computed once.
+struct Side<'a> {
+    f: &'a [Vec<BigInt>; 3],
+    /// The degree of the homogeneous form.
+    degree: usize,
+    /// `X/W` or `Y/W` is not constant.
+    moves: bool,
+    /// [`RealAlgebraic::degree_lower_bound`] of the parameters' polynomial (shared by every
+    /// irrational root of one resultant), computed on first use.
+    bound: std::cell::OnceCell<usize>,
+}
+
+impl<'a> Side<'a> {
+    fn new(f: &'a [Vec<BigInt>; 3]) -> Self {
+        let get = |p: &[BigInt], i: usize| p.get(i).cloned().unwrap_or_default();
+        let n = f.iter().map(Vec::len).max().unwrap_or(1);
+        let proportional =
+            |a: &[BigInt], w: &[BigInt]| (0..n).all(|i| (0..n).all(|j| get(a, i) * get(w, j) == get(a, j) * get(w, i)));
+        Side {
+            f,
+            degree: n.saturating_sub(1),
+            moves: !proportional(&f[0], &f[2]) || !proportional(&f[1], &f[2]),
+            bound: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// The point at `x` is provably irrational: a moving coordinate `X/W = r` (rational) would
+    /// make `x` a root of `X − rW`, a non-zero polynomial of degree ≤ the curve's, so a
+    /// parameter of higher degree over `Q` has an irrational image.
+    fn irrational_at(&self, x: &RealAlgebraic) -> bool {
+        x.to_rational().is_none()
+            && self.moves
+            && *self.bound.get_or_init(|| x.degree_lower_bound(self.degree + 1)) > self.degree
+    }
+
+    /// The point at `x`, correctly rounded.
+    fn point_float(&self, x: &RealAlgebraic) -> [f64; 2] {
+        [x.map_rational_to_f64(&self.f[0], &self.f[2]), x.map_rational_to_f64(&self.f[1], &self.f[2])]
+    }
+}
+
+/// The common point `A(s) = B(t)` when it is rational, by the cheapest route that decides: a
+/// rational parameter, an irrationality proof ([`Side::irrational_at`]), or the exact point
+/// (computed once per root, `cached`).
+fn common_point(
+    a: &Side,
+    s: &RealAlgebraic,
+    b: &Side,
+    t: &RealAlgebraic,
+    cached: &mut Option<[RealAlgebraic; 2]>,
+) -> Option<Point<BigRational>> {
+    if let Some(x) = s.to_rational() {
+        return Some(point_at_rational(a.f, x));
+    }
+    if let Some(x) = t.to_rational() {
+        return Some(point_at_rational(b.f, x));
+    }
+    if a.irrational_at(s) || b.irrational_at(t) {
+        return None;
+    }
+    rational_point(cached.get_or_insert_with(|| point_at(a.f, s)))
+}
+
+/// The integer polynomial has no repeated factor.
+fn is_square_free(r: &[BigInt]) -> bool {
+    crate::poly::polynomial::square_free_integer(r.to_vec()).len() == r.len()
+}
+
 /// [`intersect`] of two polynomial curves.
 ///
 /// # Errors
@@ -284,28 +359,40 @@ pub fn intersect_within(
     let ss = finite_roots(roots(&r, domain), &fa);
     let ts = finite_roots(roots(&t_poly, domain), &fb);
     let (rr, tr) = (to_rational(&r), to_rational(&t_poly));
-    // exact points only for pairs whose enclosures cannot be told apart (most pairs are not
-    // intersections, and mapping a root to its point is the costly step)
+    // a square-free resultant: every root simple, every contact order 1
+    let simple = is_square_free(&r) || is_square_free(&t_poly);
+    let (side_a, side_b) = (Side::new(&fa), Side::new(&fb));
+    // exact points only for pairs that neither the enclosures nor the Krawczyk proof decide
+    // (most pairs are not intersections, and mapping a root to its point is the costly step)
     let mut pa: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ss.len()];
     let mut pb: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ts.len()];
+    // each root narrowed to half an f64 spacing, with its f64, on first need
+    let mut na: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ss.len()];
+    let mut nb: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ts.len()];
     let mut out = vec![];
     for (i, s) in ss.iter().enumerate() {
         for (j, t) in ts.iter().enumerate() {
             if apart(&fa, s, &fb, t) {
                 continue;
             }
-            let p = pa[i].get_or_insert_with(|| point_at(&fa, s)).clone();
-            let same = proved_common(&fa, s, &fb, t) || {
+            let (sn, s_float) = na[i].get_or_insert_with(|| s.narrowed_with_f64());
+            let (tn, t_float) = nb[j].get_or_insert_with(|| t.narrowed_with_f64());
+            if apart(&fa, sn, &fb, tn) {
+                continue;
+            }
+            let (s_float, t_float) = (*s_float, *t_float);
+            let same = proved_common(&fa, s, &fb, t, (s_float, t_float)) || {
+                let p = pa[i].get_or_insert_with(|| point_at(&fa, s)).clone();
                 let q = pb[j].get_or_insert_with(|| point_at(&fb, t));
                 p[0] == q[0] && p[1] == q[1]
             };
             if same {
-                let order = multiplicity(&rr, s).min(multiplicity(&tr, t)).max(1);
+                let order = if simple { 1 } else { multiplicity(&rr, s).min(multiplicity(&tr, t)).max(1) };
                 out.push(Intersection {
-                    s_float: s.to_f64(),
-                    t_float: t.to_f64(),
-                    point: rational_point(&p),
-                    point_float: [p[0].to_f64(), p[1].to_f64()],
+                    s_float,
+                    t_float,
+                    point: common_point(&side_a, s, &side_b, t, &mut pa[i]),
+                    point_float: side_a.point_float(na[i].as_ref().map_or(s, |n| &n.0)),
                     kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
                     contact_order: order,
                     s: s.clone(),
@@ -377,34 +464,29 @@ fn enclose_point(f: &[Vec<BigInt>; 3], x: &RealAlgebraic) -> [Enclosure; 2] {
     [enclose(&f[0], x).div(w), enclose(&f[1], x).div(w)]
 }
 
-/// `A(s) ≠ B(t)`, proved by enclosures of both points, the isolating intervals narrowed (on
-/// copies: the roots keep their intervals) a few times while the enclosures overlap; false when
-/// that does not separate them (the exact comparison decides then).
+/// `A(s) ≠ B(t)`, proved by enclosures of both points over the intervals of `s` and `t`
+/// (pass copies narrowed by [`RealAlgebraic::narrowed_with_f64`] for tight enclosures); false
+/// when they overlap (the exact comparison decides then).
 fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>; 3], t: &RealAlgebraic) -> bool {
-    let (mut s, mut t) = (s.clone(), t.clone());
-    for round in 0..6 {
-        let (p, q) = (enclose_point(fa, &s), enclose_point(fb, &t));
-        if p[0].apart(q[0]) || p[1].apart(q[1]) {
-            return true;
-        }
-        if round < 5 {
-            for _ in 0..4 {
-                s.bisect();
-                t.bisect();
-            }
-        }
-    }
-    false
+    let (p, q) = (enclose_point(fa, s), enclose_point(fb, t));
+    p[0].apart(q[0]) || p[1].apart(q[1])
 }
 
 /// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator (interval Newton) on
 /// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` over a small box around an
-/// `f64` Newton solution inside the isolating intervals of `s` and `t`: when the operator maps
+/// `f64` Newton solution (from `start`, the two parameters rounded) inside the isolating
+/// intervals of `s` and `t`: when the operator maps
 /// the box into its interior, `F` has exactly one zero `(σ*, τ*)` there; then `σ*` is a root of
 /// the resultant in `s`'s isolating interval, so `σ* = s`, and likewise `τ* = t`. False when that
 /// does not succeed (a tangency, rational curves, a box outside the intervals): the exact
 /// comparison decides then. Every decision it makes is a proof; `f64` only proposes the box.
-fn proved_common(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>; 3], t: &RealAlgebraic) -> bool {
+fn proved_common(
+    fa: &[Vec<BigInt>; 3],
+    s: &RealAlgebraic,
+    fb: &[Vec<BigInt>; 3],
+    t: &RealAlgebraic,
+    start: (f64, f64),
+) -> bool {
     use num_traits::ToPrimitive;
     if fa[2].len() != 1 || fb[2].len() != 1 {
         return false;
@@ -425,13 +507,8 @@ fn proved_common(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>; 3]
         return false;
     };
     let horner = |p: &[f64], x: f64| p.iter().rev().fold(0.0, |acc, c| acc * x + c);
-    let mid = |x: &RealAlgebraic| {
-        let (lo, hi) = x.interval();
-        crate::num::scalar::ratio_to_f64(&((lo + hi) / BigRational::from_integer(2.into())))
-    };
-    // Newton in f64 from the middle of the isolating intervals
-    let (mut u, mut v) = (mid(s), mid(t));
-    for _ in 0..12 {
+    let (mut u, mut v) = start;
+    for _ in 0..4 {
         let (f1, f2) = (horner(&fxa, u) - horner(&fxb, v), horner(&fya, u) - horner(&fyb, v));
         let (a, b, c, d) = (horner(&fdxa, u), -horner(&fdxb, v), horner(&fdya, u), -horner(&fdyb, v));
         let det = a * d - b * c;
@@ -570,23 +647,34 @@ pub fn self_intersect_within(
     }
     let ss = finite_roots(roots(&r, domain), &fa);
     let rr = to_rational(&r);
+    let simple = is_square_free(&r);
+    let side = Side::new(&fa);
     // exact points only for pairs whose enclosures cannot be told apart (see `intersect_within`)
     let mut pts: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ss.len()];
+    let mut narrow: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ss.len()];
     let mut out = vec![];
     for i in 0..ss.len() {
         for j in i + 1..ss.len() {
             if apart(&fa, &ss[i], &fa, &ss[j]) {
                 continue;
             }
+            for k in [i, j] {
+                narrow[k].get_or_insert_with(|| ss[k].narrowed_with_f64());
+            }
+            let (Some((si, _)), Some((sj, _))) = (&narrow[i], &narrow[j]) else { continue };
+            if apart(&fa, si, &fa, sj) {
+                continue;
+            }
             let p = pts[i].get_or_insert_with(|| point_at(&fa, &ss[i])).clone();
             let q = pts[j].get_or_insert_with(|| point_at(&fa, &ss[j]));
             if p[0] == q[0] && p[1] == q[1] {
-                let order = multiplicity(&rr, &ss[i]).min(multiplicity(&rr, &ss[j])).max(1);
+                let order = if simple { 1 } else { multiplicity(&rr, &ss[i]).min(multiplicity(&rr, &ss[j])).max(1) };
+                let (Some((si, s_float)), Some((_, t_float))) = (&narrow[i], &narrow[j]) else { continue };
                 out.push(Intersection {
-                    s_float: ss[i].to_f64(),
-                    t_float: ss[j].to_f64(),
+                    s_float: *s_float,
+                    t_float: *t_float,
                     point: rational_point(&p),
-                    point_float: [p[0].to_f64(), p[1].to_f64()],
+                    point_float: side.point_float(si),
                     kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
                     contact_order: order,
                     s: ss[i].clone(),
@@ -862,7 +950,7 @@ mod filter_tests {
                     if apart(&fa, &s, &fb, &t) {
                         assert!(!equal, "apart, but A(s) = B(t)");
                     }
-                    if proved_common(&fa, &s, &fb, &t) {
+                    if proved_common(&fa, &s, &fb, &t, (s.to_f64(), t.to_f64())) {
                         assert!(equal, "proved common, but A(s) ≠ B(t)");
                         proved += 1;
                     }
@@ -895,6 +983,7 @@ mod filter_tests {
         let k = intersect(&para, &line, Domain::Unit).unwrap();
         assert_eq!(k.intersections.len(), 1);
         assert_eq!(k.intersections[0].kind, Kind::Tangent);
-        assert!(!proved_common(&fa, &k.intersections[0].s, &fb, &k.intersections[0].t));
+        let i = &k.intersections[0];
+        assert!(!proved_common(&fa, &i.s, &fb, &i.t, (i.s_float, i.t_float)));
     }
 }

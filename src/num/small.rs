@@ -530,7 +530,7 @@ const PRIME_GROUPS: ([(u64, usize, usize); 167], usize) = {
 };
 
 /// `n mod m` for `m < 2^64`, from the 64-bit digits (most significant first), without allocating.
-fn rem_u64(n: &num_bigint::BigUint, m: u64) -> u64 {
+pub(crate) fn rem_u64(n: &num_bigint::BigUint, m: u64) -> u64 {
     n.iter_u64_digits().rev().fold(0u64, |r, d| ((u128::from(r) << 64 | u128::from(d)) % u128::from(m)) as u64)
 }
 

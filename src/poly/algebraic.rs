@@ -113,12 +113,10 @@ fn shifted(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<BigRati
     acc
 }
 
-/// The distinct real roots of `p` (power form) in the closed interval `[lo, hi]`, ascending, as
-/// exact rationals or isolating open intervals of the square-free part.
-fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Root> {
-    // in integers: with lo = L/D and hi − lo = V/D, D^n·p(lo + (hi − lo)s) has integer
-    // coefficients (a positive multiple: the same roots and signs), by homogeneous Horner
-    let c = to_integer(p);
+/// A positive multiple of the power-form coefficients of `c(lo + (hi − lo)·u)` (`c` integer,
+/// `lo < hi`), on integers: with `lo = L/D` and `hi − lo = V/D`, `D^n·c(lo + (hi − lo)u)` by
+/// homogeneous Horner.
+fn shifted_integer(c: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<BigInt> {
     let n = c.len() - 1;
     let w = hi.clone() - lo;
     let d = num_integer::Integer::lcm(lo.denom(), w.denom());
@@ -141,6 +139,13 @@ fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<R
         q = next;
     }
     q.truncate(n + 1);
+    q
+}
+
+/// The distinct real roots of `p` (power form) in the closed interval `[lo, hi]`, ascending, as
+/// exact rationals or isolating open intervals of the square-free part.
+fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Root> {
+    let q = shifted_integer(&to_integer(p), lo, hi);
     let b: Vec<BigRational> =
         crate::poly::roots::power_to_bernstein_integer(&q).into_iter().map(BigRational::from_integer).collect();
     let map = |s: BigRational| lo.clone() + (hi.clone() - lo) * s;
@@ -391,8 +396,18 @@ impl RealAlgebraic {
         self.clone().cmp_rational(&rat(0))
     }
 
-    /// The nearest `f64` (ties to even), correctly rounded.
+    /// The nearest `f64` (ties to even), correctly rounded: an `f64` candidate from a
+    /// safeguarded Newton iteration, proved by the exact signs of the polynomial at the two ends
+    /// of its rounding cell (the midpoints to its neighbours); bisection when that fails.
     pub fn to_f64(&self) -> f64 {
+        if let Some(f) = self.clone().narrow_to_f64_cell() {
+            return f;
+        }
+        self.to_f64_by_bisection()
+    }
+
+    /// [`Self::to_f64`] by bisection alone: the oracle of the fast route.
+    fn to_f64_by_bisection(&self) -> f64 {
         let mut x = self.clone();
         loop {
             match &x.0 {
@@ -408,6 +423,110 @@ impl RealAlgebraic {
         }
     }
 
+    /// Where the number lies relative to the rational `m`, without changing it: `Less` when the
+    /// number is below `m`.
+    fn position(&self, m: &BigRational) -> Ordering {
+        match &self.0 {
+            Repr::Rational(r) => r.cmp(m),
+            Repr::Root { poly, lo, hi } => {
+                if m <= lo {
+                    return Ordering::Greater;
+                }
+                if m >= hi {
+                    return Ordering::Less;
+                }
+                match sign_at(poly, m) {
+                    Ordering::Equal => Ordering::Equal,
+                    s if s == sign_at(poly, lo) => Ordering::Greater,
+                    _ => Ordering::Less,
+                }
+            }
+        }
+    }
+
+    /// For an irrational number: narrows the interval to half an `f64` spacing — between an
+    /// `f64` and the midpoint to its neighbour — and returns the nearest `f64`. The candidate
+    /// comes from [`f64_root_candidate`]; exact signs at `f64`s around it (galloping outwards,
+    /// then bisecting over the `f64`s in order) find the two consecutive `f64`s around the
+    /// number, and the sign at their midpoint picks the nearer. `None` (number unchanged) when
+    /// it is rational, rounds to zero, or lies outside the finite `f64` range.
+    fn narrow_to_f64_cell(&mut self) -> Option<f64> {
+        let Repr::Root { poly, lo, hi } = &self.0 else { return None };
+        let start = f64_root_candidate(poly, ratio_to_f64(lo), ratio_to_f64(hi))?;
+        // f64s in order as integers (negative ones mirrored), and back
+        let key = |f: f64| -> i64 {
+            if f.is_sign_negative() { -((f.to_bits() & !(1 << 63)) as i64) } else { f.to_bits() as i64 }
+        };
+        let from_key = |k: i64| -> f64 { if k < 0 { -f64::from_bits((-k) as u64) } else { f64::from_bits(k as u64) } };
+        let exact = |f: f64| BigRational::from_float(f).filter(|_| f.is_finite());
+        // the number's side of the f64 with key k: Greater when above it
+        let side = |k: i64| -> Option<Ordering> { Some(self.position(&exact(from_key(k))?)) };
+        let k0 = key(start);
+        let first = side(k0)?;
+        if first == Ordering::Equal {
+            return None;
+        }
+        let dir: i64 = if first == Ordering::Greater { 1 } else { -1 };
+        // gallop: k0 on the number's near side, k1 past it
+        let (mut near, mut step) = (k0, 1i64);
+        let mut far = loop {
+            let k = near.checked_add(dir * step)?;
+            match side(k)? {
+                Ordering::Equal => return None,
+                o if o == first => {
+                    near = k;
+                    step = step.checked_mul(2)?;
+                }
+                _ => break k,
+            }
+        };
+        while (far - near).abs() > 1 {
+            let mid = near + (far - near) / 2;
+            match side(mid)? {
+                Ordering::Equal => return None,
+                o if o == first => near = mid,
+                _ => far = mid,
+            }
+        }
+        let (below, above) = if dir == 1 { (near, far) } else { (far, near) };
+        let (fb, fa) = (from_key(below), from_key(above));
+        if !fb.is_finite()
+            || !fa.is_finite()
+            || fb == 0.0
+            || fa == 0.0
+            || fb.is_sign_negative() != fa.is_sign_negative()
+        {
+            return None;
+        }
+        let (eb, ea) = (exact(fb)?, exact(fa)?);
+        let mid = (eb.clone() + &ea) / rat(2);
+        let (f, a, b) = match self.position(&mid) {
+            Ordering::Equal => return None,
+            Ordering::Less => (fb, eb, mid),
+            Ordering::Greater => (fa, mid, ea),
+        };
+        let Repr::Root { lo, hi, .. } = &mut self.0 else { return None };
+        if a > *lo {
+            *lo = a;
+        }
+        if b < *hi {
+            *hi = b;
+        }
+        Some(f)
+    }
+
+    /// A copy narrowed to half an `f64` spacing (when the fast route applies; otherwise
+    /// unchanged), with the number correctly rounded to `f64`: both at the cost of one
+    /// [`Self::to_f64`]. The copy is the same number; its tight interval makes enclosures of
+    /// functions of it tight.
+    pub fn narrowed_with_f64(&self) -> (RealAlgebraic, f64) {
+        let mut x = self.clone();
+        match x.narrow_to_f64_cell() {
+            Some(f) => (x, f),
+            None => (x, self.to_f64_by_bisection()),
+        }
+    }
+
     /// The `k`-th (1-based) real root of the number's polynomial, ascending.
     fn root_index(&self) -> usize {
         let Repr::Root { poly, lo, .. } = &self.0 else { return 1 };
@@ -416,6 +535,48 @@ impl RealAlgebraic {
         // roots below lo (lo is not a root), plus this one
         Self::roots_in(&p, &-b, lo).len() + 1
     }
+}
+
+/// An `f64` near the root of `p` in `(lo, hi)`, where `p` changes sign: Newton's method kept
+/// inside a bracket that `f64` signs shrink (bisection when a step leaves it). Only a
+/// candidate: the exact test of [`RealAlgebraic::narrow_to_f64_cell`] decides. `None` when the
+/// coefficients do not fit `f64` or the bracket is not finite.
+fn f64_root_candidate(p: &[BigInt], lo: f64, hi: f64) -> Option<f64> {
+    use num_traits::ToPrimitive;
+    if !(lo.is_finite() && hi.is_finite() && lo <= hi) {
+        return None;
+    }
+    if lo == hi {
+        return Some(lo); // an interval within one f64 spacing
+    }
+    // scaled so that the largest coefficient is near 1 (signs and roots unchanged)
+    let bits = p.iter().map(BigInt::bits).max().unwrap_or(0);
+    let shift = bits.saturating_sub(60);
+    let c: Vec<f64> = p.iter().map(|x| (x >> shift).to_f64().filter(|v| v.is_finite())).collect::<Option<_>>()?;
+    let d: Vec<f64> = c.iter().enumerate().skip(1).map(|(k, v)| v * k as f64).collect();
+    let horner = |q: &[f64], x: f64| q.iter().rev().fold(0.0, |acc, v| acc * x + v);
+    let (mut a, mut b) = (lo, hi);
+    let sa = horner(&c, a).signum();
+    let mut x = a + (b - a) / 2.0;
+    for _ in 0..100 {
+        let fx = horner(&c, x);
+        if fx == 0.0 {
+            return Some(x);
+        }
+        if fx.signum() == sa {
+            a = x;
+        } else {
+            b = x;
+        }
+        let dx = horner(&d, x);
+        let newton = x - fx / dx;
+        let next = if newton > a && newton < b { newton } else { a + (b - a) / 2.0 };
+        if next == x || b <= a.next_up() {
+            return Some(next);
+        }
+        x = next;
+    }
+    Some(x)
 }
 
 /// Polynomials in `v` with integer coefficients (lowest degree first), for resultants.
@@ -683,6 +844,167 @@ impl RealAlgebraic {
     }
 }
 
+/// `p(r)` exactly, for an integer polynomial (homogeneous Horner, one division at the end).
+fn value_at(p: &[BigInt], r: &BigRational) -> BigRational {
+    let Some(n) = p.len().checked_sub(1) else { return rat(0) };
+    let (a, b) = (r.numer(), r.denom());
+    let mut acc = p[n].clone();
+    let mut bpow = BigInt::one();
+    for c in p[..n].iter().rev() {
+        bpow *= b;
+        acc = acc * a + c * &bpow;
+    }
+    BigRational::new(acc, bpow)
+}
+
+/// `⌊r·2^k⌋ / 2^k`.
+fn floor_dyadic(r: &BigRational, k: u64) -> BigRational {
+    let scale = BigInt::one() << k;
+    BigRational::new((r * BigRational::from_integer(scale.clone())).floor().to_integer(), scale)
+}
+
+impl RealAlgebraic {
+    /// A lower bound for the degree of the number over `Q` (the degree of its minimal
+    /// polynomial): `1` for a rational, at least `2` for a root (which is irrational), more when
+    /// [`crate::poly::modular::min_factor_degree`] proves that its polynomial has no factor of
+    /// smaller degree. Stops looking once the bound reaches `enough`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{rat, poly::algebraic::RealAlgebraic};
+    /// // a root of t³ − 2 (irreducible: degree 3); √2 as a root of t⁴ − 4 = (t² − 2)(t² + 2): 2
+    /// let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
+    /// assert_eq!(c[0].degree_lower_bound(10), 3);
+    /// let q = RealAlgebraic::real_roots(&[rat(-4), rat(0), rat(0), rat(0), rat(1)]);
+    /// assert_eq!(q[1].degree_lower_bound(10), 2);
+    /// ```
+    pub fn degree_lower_bound(&self, enough: usize) -> usize {
+        match &self.0 {
+            Repr::Rational(_) => 1,
+            Repr::Root { poly, .. } => crate::poly::modular::min_factor_degree(poly, enough).max(2),
+        }
+    }
+
+    /// Narrows the interval below `2^−bits` (relative to the `f64` cell it starts from): Newton
+    /// steps in exact arithmetic, each proposing a much narrower interval that the exact signs
+    /// at its ends prove (or bisection when they do not), so precision roughly doubles per
+    /// step. Returns `false` (the number narrowed as far as it went) when the `f64` cell is
+    /// unavailable.
+    fn refine_newton(&mut self, bits: u64) -> bool {
+        let Some(f) = self.narrow_to_f64_cell() else { return false };
+        // the target width, absolute: 2^−bits times the cell's scale
+        let exp = f.abs().log2().floor() as i64;
+        let target_exp = exp - bits as i64;
+        let target = if target_exp >= 0 {
+            BigRational::from_integer(BigInt::one() << target_exp as u64)
+        } else {
+            BigRational::new(BigInt::one(), BigInt::one() << (-target_exp) as u64)
+        };
+        for _ in 0..64 {
+            let Repr::Root { poly, lo, hi } = &self.0 else { return true };
+            let w = hi.clone() - lo;
+            if w < target {
+                return true;
+            }
+            let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
+            let c = (lo.clone() + hi) / rat(2);
+            let d = value_at(&dp, &c);
+            let proposed = (!d.is_zero()).then(|| {
+                let x1 = c.clone() - value_at(poly, &c) / d;
+                // the next width: the square of this one (quadratic convergence), rounded to a
+                // power of two, and the centre rounded to a matching dyadic
+                let wbits = (w.denom().bits() as i64 - w.numer().bits() as i64).max(1) as u64;
+                let k = 2 * wbits + 2;
+                let eps = BigRational::new(BigInt::one(), BigInt::one() << (k - 2));
+                let x1 = floor_dyadic(&x1, k);
+                (x1.clone() - &eps, x1 + eps)
+            });
+            let ok = proposed
+                .map(|(a, b)| (a.max(lo.clone()), b.min(hi.clone())))
+                .filter(|(a, b)| self.position(a) == Ordering::Greater && self.position(b) == Ordering::Less);
+            match ok {
+                Some((a, b)) => {
+                    let Repr::Root { lo, hi, .. } = &mut self.0 else { return true };
+                    *lo = a;
+                    *hi = b;
+                }
+                None => {
+                    for _ in 0..4 {
+                        self.bisect();
+                    }
+                }
+            }
+        }
+        true
+    }
+
+    /// `num(x) / den(x)` for this number `x`, correctly rounded to `f64` (integer power forms,
+    /// lowest degree first), without the exact image: the Bernstein coefficients of `num` and
+    /// `den` over a narrow interval of `x` ([`Self::refine_newton`]) enclose the value; once
+    /// both ends of the enclosure round to one `f64`, so does the value. Falls back to the exact
+    /// image ([`Self::map_rational`]) when that does not settle (a value on a rounding
+    /// boundary is rational, and only the exact route can say so).
+    ///
+    /// # Panics
+    /// **Panics when `den(x) = 0`.**
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{rat, poly::algebraic::RealAlgebraic};
+    /// use num_bigint::BigInt;
+    /// let s2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone(); // √2
+    /// let b = |c: &[i64]| c.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
+    /// // (x³ + 1)/3 at √2 = 1.27614237491539669920…, correctly rounded; the f64 expression
+    /// // (2.0 * 2f64.sqrt() + 1.0) / 3.0 rounds three times and lands one f64 higher
+    /// let v = s2.map_rational_to_f64(&b(&[1, 0, 0, 1]), &b(&[3]));
+    /// assert_eq!(v, 1.2761423749153966);
+    /// assert_eq!((2.0 * 2f64.sqrt() + 1.0) / 3.0, v.next_up());
+    /// ```
+    pub fn map_rational_to_f64(&self, num: &[BigInt], den: &[BigInt]) -> f64 {
+        if let Some(x) = self.to_rational() {
+            let d = value_at(den, x);
+            assert!(!d.is_zero(), "the denominator vanishes at {x}");
+            return ratio_to_f64(&(value_at(num, x) / d));
+        }
+        self.map_rational_by_enclosure(num, den).unwrap_or_else(|| {
+            let q = |p: &[BigInt]| p.iter().map(|c| BigRational::from_integer(c.clone())).collect::<Vec<_>>();
+            self.map_rational(&q(num), &q(den)).to_f64()
+        })
+    }
+
+    /// The enclosure route of [`Self::map_rational_to_f64`] for an irrational number; `None`
+    /// when it does not settle.
+    fn map_rational_by_enclosure(&self, num: &[BigInt], den: &[BigInt]) -> Option<f64> {
+        let degree = num.len().max(den.len()).max(1) - 1;
+        let pad = |p: &[BigInt]| -> Vec<BigInt> {
+            let mut v = p.to_vec();
+            v.resize(degree + 1, BigInt::zero());
+            v
+        };
+        let (num_d, den_d) = (pad(num), pad(den));
+        let mut x = self.clone();
+        for bits in [60, 120, 240] {
+            if !x.refine_newton(bits) {
+                return None;
+            }
+            let Repr::Root { lo, hi, .. } = &x.0 else { return None };
+            let to_b = |p: &[BigInt]| crate::poly::roots::power_to_bernstein_integer(&shifted_integer(p, lo, hi));
+            let (bn, bd) = (to_b(&num_d), to_b(&den_d));
+            let sign = bd[0].sign();
+            if sign == num_bigint::Sign::NoSign || bd.iter().any(|c| c.sign() != sign) {
+                continue;
+            }
+            let ratios: Vec<BigRational> = bn.into_iter().zip(bd).map(|(a, b)| BigRational::new(a, b)).collect();
+            let (e0, e1) = (ratios.iter().min().expect("coefficients"), ratios.iter().max().expect("coefficients"));
+            let (f0, f1) = (ratio_to_f64(e0), ratio_to_f64(e1));
+            if f0 == f1 {
+                return Some(f0);
+            }
+        }
+        None
+    }
+}
+
 impl PartialEq for RealAlgebraic {
     fn eq(&self, o: &Self) -> bool {
         self.cmp(o) == Ordering::Equal
@@ -827,6 +1149,76 @@ mod tests {
         assert_eq!(simplest_rational(&ratio(-7, 10), &ratio(-6, 10)), ratio(-2, 3));
         assert_eq!(simplest_rational(&ratio(-1, 10), &ratio(6, 10)), rat(0));
         assert_eq!(simplest_rational(&ratio(31415, 10000), &ratio(31416, 10000)), ratio(333, 106));
+    }
+
+    /// The fast `to_f64` (Newton candidate, exact cell test) against bisection alone, on every
+    /// real root of random integer polynomials of degree 2 to 9 (wide and clustered roots).
+    #[test]
+    fn to_f64_cell_proof_matches_bisection() {
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut next = move |m: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % (2 * m + 1)) as i64 - m as i64
+        };
+        let (mut checked, mut fast, mut irrational) = (0, 0, 0);
+        for round in 0..120 {
+            let n = 2 + round % 8;
+            let m = [3, 1000, 1 << 40][round % 3];
+            let p: Vec<BigRational> = (0..=n).map(|_| rat(next(m))).collect();
+            if p[n] == rat(0) {
+                continue;
+            }
+            for r in RealAlgebraic::real_roots(&p) {
+                assert_eq!(r.to_f64().to_bits(), r.to_f64_by_bisection().to_bits(), "{r}");
+                checked += 1;
+                fast += usize::from(r.clone().narrow_to_f64_cell().is_some());
+                irrational += usize::from(r.to_rational().is_none());
+            }
+        }
+        assert!(checked > 100 && fast == irrational, "{checked} roots, {fast} of {irrational} by the cell proof");
+    }
+
+    /// The rounded image by enclosures against the rounded exact image, on roots of random
+    /// integer polynomials and random rational maps of degree ≤ 3.
+    #[test]
+    fn rounded_image_matches_the_exact_image() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = move |m: i64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % (2 * m as u64 + 1)) as i64 - m
+        };
+        let (mut checked, mut fast, mut irrational) = (0, 0, 0);
+        for round in 0..60 {
+            let n = 2 + round % 6;
+            let p: Vec<BigRational> = (0..=n).map(|_| rat(next(2000))).collect();
+            if p[n] == rat(0) {
+                continue;
+            }
+            let num: Vec<BigInt> = (0..4).map(|_| BigInt::from(next(3000))).collect();
+            let den: Vec<BigInt> = if round % 2 == 0 {
+                vec![BigInt::from(next(50).abs() + 1)]
+            } else {
+                vec![BigInt::from(40), BigInt::from(next(9)), BigInt::from(next(9))]
+            };
+            let q = |p: &[BigInt]| p.iter().map(|c| BigRational::from_integer(c.clone())).collect::<Vec<_>>();
+            for r in RealAlgebraic::real_roots(&p) {
+                if r.sign_of(&q(&den)) == Ordering::Equal {
+                    continue;
+                }
+                let exact = r.map_rational(&q(&num), &q(&den)).to_f64();
+                assert_eq!(r.map_rational_to_f64(&num, &den).to_bits(), exact.to_bits(), "{r}");
+                checked += 1;
+                if r.to_rational().is_none() {
+                    irrational += 1;
+                    fast += usize::from(r.map_rational_by_enclosure(&num, &den).is_some());
+                }
+            }
+        }
+        assert!(checked > 50 && fast == irrational, "{checked} checked, {fast} of {irrational} by enclosures");
     }
 
     #[test]

@@ -1,11 +1,13 @@
 //! Univariate polynomials: the Bernstein basis and its conversions to and from the power form,
 //! exact polynomial arithmetic (trim, division, gcd, square-free part, quadratic roots), and
-//! exact real root isolation, and exact real algebraic numbers ([`algebraic::RealAlgebraic`]).
+//! exact real root isolation, exact real algebraic numbers ([`algebraic::RealAlgebraic`]), and
+//! factor-degree bounds from reductions modulo primes ([`modular`]).
 //!
 //! Depends only on [`crate::num`].
 
 pub mod algebraic;
 pub mod bernstein;
+pub mod modular;
 pub mod polynomial;
 pub mod roots;
 
