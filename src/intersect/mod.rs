@@ -174,6 +174,9 @@ fn roots(r: &[BigInt], domain: Domain) -> Vec<RealAlgebraic> {
 /// The roots where the curve's weight does not vanish (with every real parameter allowed, a
 /// root where it does is a common point at infinity, not an intersection in the plane).
 fn finite_roots(roots: Vec<RealAlgebraic>, f: &[Vec<BigInt>; 3]) -> Vec<RealAlgebraic> {
+    if f[2].len() == 1 {
+        return roots; // a constant weight (non-zero)
+    }
     let w = to_rational(&f[2]);
     roots.into_iter().filter(|x| x.sign_of(&w) != Ordering::Equal).collect()
 }
@@ -243,6 +246,7 @@ impl<'a> Side<'a> {
 
     /// The point at `x`, correctly rounded.
     fn point_float(&self, x: &RealAlgebraic) -> [f64; 2] {
+        let x = x.narrowed(60);
         [x.map_rational_to_f64(&self.f[0], &self.f[2]), x.map_rational_to_f64(&self.f[1], &self.f[2])]
     }
 }

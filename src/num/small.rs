@@ -73,6 +73,25 @@ pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
     gcd(a, b)
 }
 
+/// `gcd(|a|, |b|)`: one big remainder and word gcds when either fits 128 bits (the common case
+/// for contents of polynomials), num-bigint's binary gcd otherwise.
+pub(crate) fn gcd_big(a: &num_bigint::BigInt, b: &num_bigint::BigInt) -> num_bigint::BigInt {
+    use num_bigint::{BigInt, BigUint};
+    use num_traits::ToPrimitive;
+    let rem = |x: &BigUint, w: u128| -> u128 {
+        if w >> 64 == 0 { u128::from(rem_u64(x, w as u64)) } else { (x % w).to_u128().expect("below a u128") }
+    };
+    let (ma, mb) = (a.magnitude(), b.magnitude());
+    let small = |w: u128, other: &BigUint| -> BigInt {
+        if w == 0 { BigInt::from(other.clone()) } else { BigInt::from(gcd(w, rem(other, w))) }
+    };
+    match (ma.to_u128(), mb.to_u128()) {
+        (Some(w), _) => small(w, mb),
+        (None, Some(w)) => small(w, ma),
+        (None, None) => num_integer::Integer::gcd(a, b),
+    }
+}
+
 /// `gcd(a, b)` of non-negative numbers (binary; word-sized when both fit 64 bits).
 fn gcd(a: u128, b: u128) -> u128 {
     if a == 0 || b == 0 {

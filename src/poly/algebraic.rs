@@ -41,7 +41,7 @@ use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, rat, ratio_to_f64};
 use crate::poly::bernstein::power_to_bernstein_matrix;
 use crate::poly::polynomial::{gcd_integer, primitive_part, quadratic_roots, square_free_integer, to_integer};
-use crate::poly::roots::{Root, isolate_bernstein};
+use crate::poly::roots::Root;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -71,8 +71,16 @@ pub fn sign_at(p: &[BigInt], r: &BigRational) -> Ordering {
         return Ordering::Equal;
     }
     let (a, b) = (r.numer(), r.denom());
-    // Horner in homogeneous form: acc = acc·a + c_i·b^(n−i)
     let n = p.len() - 1;
+    if let Some((_, k)) = dyadic_parts(r) {
+        // b = 2^k: the powers of b are shifts
+        let mut acc = p[n].clone();
+        for i in (0..n).rev() {
+            acc = acc * a + (&p[i] << (k * (n - i) as u64));
+        }
+        return acc.sign().into_ordering();
+    }
+    // Horner in homogeneous form: acc = acc·a + c_i·b^(n−i)
     let mut acc = p[n].clone();
     let mut bpow = BigInt::one();
     for i in (0..n).rev() {
@@ -142,15 +150,13 @@ fn shifted_integer(c: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<BigI
     q
 }
 
-/// The distinct real roots of `p` (power form) in the closed interval `[lo, hi]`, ascending, as
-/// exact rationals or isolating open intervals of the square-free part.
-fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Root> {
-    let q = shifted_integer(&to_integer(p), lo, hi);
-    let b: Vec<BigRational> =
-        crate::poly::roots::power_to_bernstein_integer(&q).into_iter().map(BigRational::from_integer).collect();
+/// The real roots of the square-free integer polynomial `p` (power form) in the closed interval
+/// `[lo, hi]`, ascending, as exact rationals or isolating open intervals.
+fn isolate_power(p: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<Root> {
+    let q = shifted_integer(p, lo, hi);
+    let b = crate::poly::roots::power_to_bernstein_integer(&q);
     let map = |s: BigRational| lo.clone() + (hi.clone() - lo) * s;
-    isolate_bernstein(&b)
-        .unwrap_or_default()
+    crate::poly::roots::isolate_square_free(b)
         .into_iter()
         .map(|r| match r {
             Root::Exact(s) => Root::Exact(map(s)),
@@ -166,19 +172,15 @@ fn isolate_power(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<R
 fn no_rational_roots(p: &[BigInt]) -> bool {
     const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
     let Some(lc) = p.last() else { return false };
+    let residue = |c: &BigInt, q: u64| {
+        let r = crate::num::small::rem_u64(c.magnitude(), q);
+        if c.is_negative() && r != 0 { q - r } else { r }
+    };
     PRIMES.iter().any(|&q| {
-        let qb = BigInt::from(q);
-        if (lc % &qb).is_zero() {
+        if residue(lc, q) == 0 {
             return false;
         }
-        let coeffs: Vec<u64> = p
-            .iter()
-            .map(|c| {
-                let r = c % &qb;
-                let r = if r.is_negative() { r + &qb } else { r };
-                u64::try_from(r).expect("a residue below q")
-            })
-            .collect();
+        let coeffs: Vec<u64> = p.iter().map(|c| residue(c, q)).collect();
         (0..q).all(|x| coeffs.iter().rev().fold(0u64, |acc, c| (acc * x + c) % q) != 0)
     })
 }
@@ -249,7 +251,10 @@ impl RealAlgebraic {
             return if sign_at(&ip, lo) == Ordering::Equal { vec![lo.clone().into()] } else { vec![] };
         }
         let sf = square_free_integer(primitive_part(to_integer(&p)));
-        let isolated = isolate_power(&p, lo, hi);
+        if sf.len() <= 1 {
+            return vec![];
+        }
+        let isolated = isolate_power(&sf, lo, hi);
         let irrational = isolated.iter().any(|r| matches!(r, Root::Isolated(..))) && no_rational_roots(&sf);
         isolated
             .into_iter()
@@ -423,9 +428,17 @@ impl RealAlgebraic {
         }
     }
 
-    /// Where the number lies relative to the rational `m`, without changing it: `Less` when the
-    /// number is below `m`.
-    fn position(&self, m: &BigRational) -> Ordering {
+    /// The sign of the polynomial at the lower end (`Equal` for a rational).
+    fn sign_at_lo(&self) -> Ordering {
+        match &self.0 {
+            Repr::Rational(_) => Ordering::Equal,
+            Repr::Root { poly, lo, .. } => sign_at(poly, lo),
+        }
+    }
+
+    /// Where the number lies relative to the rational `m`, without changing it: `Less` when
+    /// the number is below `m` (`sign_lo`: the sign of the polynomial at the lower end).
+    fn position_given(&self, m: &BigRational, sign_lo: Ordering) -> Ordering {
         match &self.0 {
             Repr::Rational(r) => r.cmp(m),
             Repr::Root { poly, lo, hi } => {
@@ -437,7 +450,7 @@ impl RealAlgebraic {
                 }
                 match sign_at(poly, m) {
                     Ordering::Equal => Ordering::Equal,
-                    s if s == sign_at(poly, lo) => Ordering::Greater,
+                    s if s == sign_lo => Ordering::Greater,
                     _ => Ordering::Less,
                 }
             }
@@ -460,7 +473,8 @@ impl RealAlgebraic {
         let from_key = |k: i64| -> f64 { if k < 0 { -f64::from_bits((-k) as u64) } else { f64::from_bits(k as u64) } };
         let exact = |f: f64| BigRational::from_float(f).filter(|_| f.is_finite());
         // the number's side of the f64 with key k: Greater when above it
-        let side = |k: i64| -> Option<Ordering> { Some(self.position(&exact(from_key(k))?)) };
+        let sign_lo = self.sign_at_lo();
+        let side = |k: i64| -> Option<Ordering> { Some(self.position_given(&exact(from_key(k))?, sign_lo)) };
         let k0 = key(start);
         let first = side(k0)?;
         if first == Ordering::Equal {
@@ -499,8 +513,12 @@ impl RealAlgebraic {
             return None;
         }
         let (eb, ea) = (exact(fb)?, exact(fa)?);
-        let mid = (eb.clone() + &ea) / rat(2);
-        let (f, a, b) = match self.position(&mid) {
+        let mid = {
+            let ((mb, kb), (ma, ka)) = (dyadic_parts(&eb)?, dyadic_parts(&ea)?);
+            let k = kb.max(ka);
+            dyadic((mb << (k - kb)) + (ma << (k - ka)), k + 1)
+        };
+        let (f, a, b) = match self.position_given(&mid, sign_lo) {
             Ordering::Equal => return None,
             Ordering::Less => (fb, eb, mid),
             Ordering::Greater => (fa, mid, ea),
@@ -525,6 +543,16 @@ impl RealAlgebraic {
             Some(f) => (x, f),
             None => (x, self.to_f64_by_bisection()),
         }
+    }
+
+    /// A copy whose interval is narrower than `2^−bits` relative to the number (Newton steps
+    /// proved by exact signs; a rational is returned as it is, and a number outside the fast
+    /// route's reach as narrow as it got). Functions of the copy enclose tightly: narrow once,
+    /// then take several images (as [`Self::map_rational_to_f64`] does) at the price of one.
+    pub fn narrowed(&self, bits: u64) -> RealAlgebraic {
+        let mut x = self.clone();
+        x.refine_newton(bits);
+        x
     }
 
     /// The `k`-th (1-based) real root of the number's polynomial, ascending.
@@ -844,6 +872,32 @@ impl RealAlgebraic {
     }
 }
 
+/// `(m, k)` with `r = m / 2^k`, when the denominator of `r` is a power of two.
+fn dyadic_parts(r: &BigRational) -> Option<(&BigInt, u64)> {
+    let d = r.denom();
+    let k = d.bits() - 1;
+    (d.trailing_zeros() == Some(k)).then_some((r.numer(), k))
+}
+
+/// `m / 2^k` as a reduced ratio, by trailing zeros (no gcd).
+fn dyadic(m: BigInt, k: u64) -> BigRational {
+    if m.is_zero() {
+        return rat(0);
+    }
+    let tz = m.trailing_zeros().unwrap_or(0).min(k);
+    BigRational::new_raw(m >> tz, BigInt::one() << (k - tz))
+}
+
+/// `2^(k·n)·p(m/2^k)` for an integer polynomial of formal degree `n = p.len() − 1`.
+fn homogeneous_value(p: &[BigInt], m: &BigInt, k: u64) -> BigInt {
+    let Some(n) = p.len().checked_sub(1) else { return BigInt::zero() };
+    let mut acc = p[n].clone();
+    for i in (0..n).rev() {
+        acc = acc * m + (&p[i] << (k * (n - i) as u64));
+    }
+    acc
+}
+
 /// `p(r)` exactly, for an integer polynomial (homogeneous Horner, one division at the end).
 fn value_at(p: &[BigInt], r: &BigRational) -> BigRational {
     let Some(n) = p.len().checked_sub(1) else { return rat(0) };
@@ -855,12 +909,6 @@ fn value_at(p: &[BigInt], r: &BigRational) -> BigRational {
         acc = acc * a + c * &bpow;
     }
     BigRational::new(acc, bpow)
-}
-
-/// `⌊r·2^k⌋ / 2^k`.
-fn floor_dyadic(r: &BigRational, k: u64) -> BigRational {
-    let scale = BigInt::one() << k;
-    BigRational::new((r * BigRational::from_integer(scale.clone())).floor().to_integer(), scale)
 }
 
 impl RealAlgebraic {
@@ -885,46 +933,52 @@ impl RealAlgebraic {
         }
     }
 
-    /// Narrows the interval below `2^−bits` (relative to the `f64` cell it starts from): Newton
-    /// steps in exact arithmetic, each proposing a much narrower interval that the exact signs
-    /// at its ends prove (or bisection when they do not), so precision roughly doubles per
-    /// step. Returns `false` (the number narrowed as far as it went) when the `f64` cell is
-    /// unavailable.
+    /// Narrows the interval below `2^−bits` relative to the number's magnitude: Newton steps
+    /// in exact dyadic arithmetic from the `f64` cell ([`Self::narrow_to_f64_cell`]), each
+    /// proposing an interval about the square of the current width that the exact signs at its
+    /// ends prove (or four bisections when they do not), so precision roughly doubles per step.
+    /// Returns `false` (the number unchanged or partly narrowed) when the number is rational, its
+    /// `f64` cell is unavailable, or an end is not dyadic.
     fn refine_newton(&mut self, bits: u64) -> bool {
-        let Some(f) = self.narrow_to_f64_cell() else { return false };
-        // the target width, absolute: 2^−bits times the cell's scale
-        let exp = f.abs().log2().floor() as i64;
-        let target_exp = exp - bits as i64;
-        let target = if target_exp >= 0 {
-            BigRational::from_integer(BigInt::one() << target_exp as u64)
-        } else {
-            BigRational::new(BigInt::one(), BigInt::one() << (-target_exp) as u64)
-        };
+        let Repr::Root { lo, hi, .. } = &self.0 else { return false };
+        let (flo, fhi) = (ratio_to_f64(lo), ratio_to_f64(hi));
+        let f = if flo == fhi { flo } else { self.narrow_to_f64_cell().unwrap_or(0.0) };
+        if f == 0.0 || !f.is_finite() {
+            return false;
+        }
+        // the target: width below 2^target
+        let target = f.abs().log2().floor() as i64 - bits as i64;
+        let sign_lo = self.sign_at_lo();
         for _ in 0..64 {
-            let Repr::Root { poly, lo, hi } = &self.0 else { return true };
-            let w = hi.clone() - lo;
-            if w < target {
+            let Repr::Root { poly, lo, hi } = &self.0 else { return false };
+            let (Some((ml, kl)), Some((mh, kh))) = (dyadic_parts(lo), dyadic_parts(hi)) else { return false };
+            // the width m_w / 2^k and its binary order, −log₂ w ≈ k − bits(m_w)
+            let k = kl.max(kh);
+            let (ml, mh) = (ml << (k - kl), mh << (k - kh));
+            let mw = &mh - &ml;
+            let wbits = k as i64 - mw.bits() as i64;
+            if wbits > -target {
                 return true;
             }
-            let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
-            let c = (lo.clone() + hi) / rat(2);
-            let d = value_at(&dp, &c);
-            let proposed = (!d.is_zero()).then(|| {
-                let x1 = c.clone() - value_at(poly, &c) / d;
-                // the next width: the square of this one (quadratic convergence), rounded to a
-                // power of two, and the centre rounded to a matching dyadic
-                let wbits = (w.denom().bits() as i64 - w.numer().bits() as i64).max(1) as u64;
-                let k = 2 * wbits + 2;
-                let eps = BigRational::new(BigInt::one(), BigInt::one() << (k - 2));
-                let x1 = floor_dyadic(&x1, k);
-                (x1.clone() - &eps, x1 + eps)
+            // Newton from the midpoint c = (ml + mh) / 2^(k+1)
+            let (cm, ck) = (&ml + &mh, k + 1);
+            let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(i, c)| c * BigInt::from(i)).collect();
+            let pv = homogeneous_value(poly, &cm, ck); // 2^(ck·n) p(c)
+            let dv = homogeneous_value(&dp, &cm, ck) << ck; // 2^(ck·n) p′(c)
+            let proposed = (!dv.is_zero()).then(|| {
+                // x1 = c − p(c)/p′(c), floored to 2^−kn; the proposal x1 ± 2^−(kn − 2)
+                let kn = (2 * wbits.max(1) as u64 + 2).max(ck);
+                let x = (&cm << (kn - ck)) - num_integer::Integer::div_floor(&(pv << kn), &dv);
+                let (a, b) = (dyadic(&x - 4, kn), dyadic(x + 4, kn));
+                (a.max(lo.clone()), b.min(hi.clone()))
             });
-            let ok = proposed
-                .map(|(a, b)| (a.max(lo.clone()), b.min(hi.clone())))
-                .filter(|(a, b)| self.position(a) == Ordering::Greater && self.position(b) == Ordering::Less);
-            match ok {
+            let proved = proposed.filter(|(a, b)| {
+                self.position_given(a, sign_lo) == Ordering::Greater
+                    && self.position_given(b, sign_lo) == Ordering::Less
+            });
+            match proved {
                 Some((a, b)) => {
-                    let Repr::Root { lo, hi, .. } = &mut self.0 else { return true };
+                    let Repr::Root { lo, hi, .. } = &mut self.0 else { return false };
                     *lo = a;
                     *hi = b;
                 }
@@ -994,9 +1048,30 @@ impl RealAlgebraic {
             if sign == num_bigint::Sign::NoSign || bd.iter().any(|c| c.sign() != sign) {
                 continue;
             }
-            let ratios: Vec<BigRational> = bn.into_iter().zip(bd).map(|(a, b)| BigRational::new(a, b)).collect();
-            let (e0, e1) = (ratios.iter().min().expect("coefficients"), ratios.iter().max().expect("coefficients"));
-            let (f0, f1) = (ratio_to_f64(e0), ratio_to_f64(e1));
+            // the extreme ratios bn_i / bd_i by cross-multiplication (bd of one sign), then
+            // rounded unreduced: no gcd
+            let less = |i: usize, j: usize| {
+                let o = (&bn[i] * &bd[j]).cmp(&(&bn[j] * &bd[i]));
+                if sign == num_bigint::Sign::Minus { o == Ordering::Greater } else { o == Ordering::Less }
+            };
+            let (mut i0, mut i1) = (0, 0);
+            for i in 1..bn.len() {
+                if less(i, i0) {
+                    i0 = i;
+                }
+                if less(i1, i) {
+                    i1 = i;
+                }
+            }
+            let round = |i: usize| {
+                let (n, d) = if sign == num_bigint::Sign::Minus {
+                    (-bn[i].clone(), -bd[i].clone())
+                } else {
+                    (bn[i].clone(), bd[i].clone())
+                };
+                ratio_to_f64(&BigRational::new_raw(n, d))
+            };
+            let (f0, f1) = (round(i0), round(i1));
             if f0 == f1 {
                 return Some(f0);
             }

@@ -29,11 +29,13 @@
 
 use num_bigint::{BigInt, Sign};
 
-/// Primes below `2^16`: products of two residues fit a `u64` with room to spare.
-const PRIMES: [u64; 12] = [65521, 65519, 65497, 65479, 65449, 65447, 65437, 65423, 65419, 65413, 65407, 65393];
+/// Primes below `2^10`: sums of a hundred products of residues fit a `u32`, and raising to the
+/// `q`-th power takes ten squarings. (A prime dividing the leading coefficient or the
+/// discriminant is skipped; with sixteen of them, that costs nothing in practice.)
+const PRIMES: [u32; 16] = [1021, 1019, 1013, 1009, 997, 991, 983, 977, 971, 967, 953, 947, 941, 937, 929, 919];
 
 /// A polynomial over `Z/qZ`, lowest degree first, no trailing zeros.
-type Poly = Vec<u64>;
+type Poly = Vec<u32>;
 
 /// A lower bound for the degree of every non-constant factor of `p` over `Q` (integer
 /// coefficients, lowest degree first, degree ≥ 1): the smallest achievable sum of
@@ -68,12 +70,12 @@ pub fn min_factor_degree(p: &[BigInt], enough: usize) -> usize {
 
 /// The degrees of the irreducible factors of `p mod q` (with repetition), when `q` does not
 /// divide the leading coefficient and `p mod q` is square-free; `None` otherwise.
-fn factor_degrees(p: &[BigInt], q: u64) -> Option<Vec<usize>> {
+fn factor_degrees(p: &[BigInt], q: u32) -> Option<Vec<usize>> {
     let f = reduce(p, q);
     if f.len() != p.len() {
         return None;
     }
-    let df = trim((1..f.len()).map(|k| f[k] * k as u64 % q).collect());
+    let df = trim((1..f.len()).map(|k| (f[k] as usize * k % q as usize) as u32).collect());
     if gcd(f.clone(), df, q).len() != 1 {
         return None;
     }
@@ -105,11 +107,11 @@ fn factor_degrees(p: &[BigInt], q: u64) -> Option<Vec<usize>> {
 }
 
 /// `p mod q`, residues in `[0, q)`.
-fn reduce(p: &[BigInt], q: u64) -> Poly {
+fn reduce(p: &[BigInt], q: u32) -> Poly {
     trim(
         p.iter()
             .map(|c| {
-                let r = crate::num::small::rem_u64(c.magnitude(), q);
+                let r = crate::num::small::rem_u64(c.magnitude(), u64::from(q)) as u32;
                 if c.sign() == Sign::Minus && r != 0 { q - r } else { r }
             })
             .collect(),
@@ -123,9 +125,9 @@ fn trim(mut p: Poly) -> Poly {
     p
 }
 
-fn inverse(a: u64, q: u64) -> u64 {
+fn inverse(a: u32, q: u32) -> u32 {
     // a^(q−2) mod q
-    let (mut base, mut e, mut acc) = (a % q, q - 2, 1u64);
+    let (mut base, mut e, mut acc) = (a % q, q - 2, 1u32);
     while e > 0 {
         if e & 1 == 1 {
             acc = acc * base % q;
@@ -136,19 +138,20 @@ fn inverse(a: u64, q: u64) -> u64 {
     acc
 }
 
-fn monic(p: Poly, q: u64) -> Poly {
+fn monic(p: Poly, q: u32) -> Poly {
     let li = inverse(*p.last().expect("non-zero"), q);
     p.into_iter().map(|c| c * li % q).collect()
 }
 
 /// `a mod b` (`b` non-zero).
-fn rem(mut a: Poly, b: &[u64], q: u64) -> Poly {
+fn rem(mut a: Poly, b: &[u32], q: u32) -> Poly {
     let li = inverse(*b.last().expect("non-zero"), q);
     while a.len() >= b.len() {
         let f = a.last().expect("non-empty") * li % q;
         let shift = a.len() - b.len();
         for (i, c) in b.iter().enumerate() {
-            a[shift + i] = (a[shift + i] + q - f * c % q) % q;
+            // a − f·c with one reduction: q² − f·c > 0
+            a[shift + i] = (a[shift + i] + q * q - f * c) % q;
         }
         a.pop();
         a = trim(a);
@@ -157,7 +160,7 @@ fn rem(mut a: Poly, b: &[u64], q: u64) -> Poly {
 }
 
 /// `a / b` when `b` divides `a`.
-fn div_exact(a: &[u64], b: &[u64], q: u64) -> Poly {
+fn div_exact(a: &[u32], b: &[u32], q: u32) -> Poly {
     let li = inverse(*b.last().expect("non-zero"), q);
     let mut a = a.to_vec();
     let mut out = vec![0; a.len() + 1 - b.len()];
@@ -166,7 +169,7 @@ fn div_exact(a: &[u64], b: &[u64], q: u64) -> Poly {
         let shift = a.len() - b.len();
         out[shift] = f;
         for (i, c) in b.iter().enumerate() {
-            a[shift + i] = (a[shift + i] + q - f * c % q) % q;
+            a[shift + i] = (a[shift + i] + q * q - f * c) % q;
         }
         a.pop();
     }
@@ -175,7 +178,7 @@ fn div_exact(a: &[u64], b: &[u64], q: u64) -> Poly {
 }
 
 /// The monic gcd.
-fn gcd(mut a: Poly, mut b: Poly, q: u64) -> Poly {
+fn gcd(mut a: Poly, mut b: Poly, q: u32) -> Poly {
     while !b.is_empty() {
         let r = rem(a, &b, q);
         a = b;
@@ -185,21 +188,22 @@ fn gcd(mut a: Poly, mut b: Poly, q: u64) -> Poly {
 }
 
 /// `a·b mod f`.
-fn mul_mod(a: &[u64], b: &[u64], f: &[u64], q: u64) -> Poly {
+fn mul_mod(a: &[u32], b: &[u32], f: &[u32], q: u32) -> Poly {
     if a.is_empty() || b.is_empty() {
         return vec![];
     }
-    let mut out = vec![0u64; a.len() + b.len() - 1];
+    // at most 128 products below 2^20 each: the sums fit a u32, reduced once
+    let mut out = vec![0u32; a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
         for (j, y) in b.iter().enumerate() {
-            out[i + j] = (out[i + j] + x * y) % q;
+            out[i + j] += x * y;
         }
     }
-    rem(trim(out), f, q)
+    rem(trim(out.into_iter().map(|v| v % q).collect()), f, q)
 }
 
 /// `x^q mod f`, by repeated squaring.
-fn x_to_the_q(f: &[u64], q: u64) -> Poly {
+fn x_to_the_q(f: &[u32], q: u32) -> Poly {
     let mut xq: Poly = vec![1];
     let (mut base, mut e) = (rem(vec![0, 1], f, q), q);
     while e > 0 {
@@ -214,7 +218,7 @@ fn x_to_the_q(f: &[u64], q: u64) -> Poly {
 
 /// `h^q mod f` from `xq = x^q mod f`: the Frobenius map is linear over `Z/q`, so
 /// `h(x)^q = Σ h_k (x^q)^k` (Horner in `x^q`).
-fn frobenius(h: &[u64], xq: &[u64], f: &[u64], q: u64) -> Poly {
+fn frobenius(h: &[u32], xq: &[u32], f: &[u32], q: u32) -> Poly {
     let mut acc: Poly = vec![];
     for &c in h.iter().rev() {
         acc = mul_mod(&acc, xq, f, q);

@@ -94,7 +94,7 @@ pub fn primitive_part(p: Vec<BigInt>) -> Vec<BigInt> {
     let Some(last) = p.last() else { return p };
     let mut content = <BigInt as num_traits::Zero>::zero();
     for x in &p {
-        content = content.gcd(x);
+        content = crate::num::small::gcd_big(&content, x);
         if content.is_one() {
             break;
         }

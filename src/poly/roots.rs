@@ -113,22 +113,35 @@ pub fn isolate_bernstein_within(c: &[BigRational], budget: &Budget) -> Result<Op
     }
     // signs and roots do not change under a positive factor: integers throughout
     let ints = power_to_bernstein_integer(&sf);
-    let mut out = Vec::new();
-    if ints[0].is_zero() {
-        out.push(Root::Exact(rat(0)));
-    }
-    split(ints.clone(), rat(0), rat(1), &mut out, budget.limit - upfront).map_err(|(splits, spent)| {
+    isolate_square_free_within(ints, budget.limit - upfront).map(Some).map_err(|(splits, spent)| {
         crate::Error::WorkLimit {
             what: format!("isolating the roots of a degree-{n} polynomial (stopped after {splits} subdivisions)"),
             estimate: upfront + spent,
             limit: budget.limit,
             option: budget.option,
         }
-    })?;
-    if ints.last().expect("coefficients").is_zero() {
+    })
+}
+
+/// The roots in `[0, 1]`, ascending, of a square-free polynomial whose Bernstein coefficients
+/// are a positive multiple of the integers `b` (degree ≥ 1): the subdivision of
+/// [`isolate_bernstein`] without its square-free step, for callers that hold the square-free
+/// part already.
+pub(crate) fn isolate_square_free(b: Vec<BigInt>) -> Vec<Root> {
+    isolate_square_free_within(b, f64::INFINITY).expect("an unlimited allowance is never exceeded")
+}
+
+fn isolate_square_free_within(ints: Vec<BigInt>, allowance: f64) -> std::result::Result<Vec<Root>, (usize, f64)> {
+    let mut out = Vec::new();
+    if ints[0].is_zero() {
+        out.push(Root::Exact(rat(0)));
+    }
+    let last_zero = ints.last().expect("coefficients").is_zero();
+    split(ints, rat(0), rat(1), &mut out, allowance)?;
+    if last_zero {
         out.push(Root::Exact(rat(1)));
     }
-    Ok(Some(out))
+    Ok(out)
 }
 
 /// Binomial rows `C(k, 0..=k)` for `k = 0..=n`, exact.
