@@ -185,6 +185,23 @@ fn no_rational_roots(p: &[BigInt]) -> bool {
     })
 }
 
+/// `p / (q·t − n)` for a rational root `x = n/q` of the integer polynomial `p`, primitive
+/// (`q` divides the leading coefficient by Gauss's lemma, so the quotient is integral).
+fn without_rational_root(p: Vec<BigInt>, x: &BigRational) -> Vec<BigInt> {
+    let linear = [-x.numer().clone(), x.denom().clone()];
+    primitive_part(crate::poly::polynomial::exact_quotient_integer(p, &linear))
+}
+
+/// The rational root of `p` in `(a, b)` when a guess finds it: the simplest rational near an
+/// `f64` candidate, confirmed by an exact zero. `None` proves nothing.
+fn rational_guess(p: &[BigInt], a: &BigRational, b: &BigRational) -> Option<BigRational> {
+    let f = f64_root_candidate(p, ratio_to_f64(a), ratio_to_f64(b))?;
+    let fr = BigRational::from_float(f)?;
+    let slack = BigRational::from_float(f.abs().max(f64::MIN_POSITIVE) * 1e-9)?;
+    let x = simplest_rational(&(fr.clone() - &slack), &(fr + &slack));
+    (x > *a && x < *b && sign_at(p, &x) == Ordering::Equal).then_some(x)
+}
+
 /// `1 + max |c_i / c_n|`: every real root lies strictly inside `(−B, B)` (Cauchy).
 fn cauchy_bound(p: &[BigRational]) -> BigRational {
     let lc = p.last().expect("non-zero polynomial").abs();
@@ -255,12 +272,39 @@ impl RealAlgebraic {
             return vec![];
         }
         let isolated = isolate_power(&sf, lo, hi);
-        let irrational = isolated.iter().any(|r| matches!(r, Root::Isolated(..))) && no_rational_roots(&sf);
+        if !isolated.iter().any(|r| matches!(r, Root::Isolated(..))) {
+            return isolated
+                .into_iter()
+                .map(|r| if let Root::Exact(x) = r { x.into() } else { unreachable!() })
+                .collect();
+        }
+        // the polynomial of the other roots: the square-free part without the rational roots
+        // found, exactly at split points or by a rational guess from an f64 candidate
+        let mut poly = sf;
+        for r in &isolated {
+            if let Root::Exact(x) = r {
+                poly = without_rational_root(poly, x);
+            }
+        }
+        let mut found: Vec<Option<BigRational>> = vec![None; isolated.len()];
+        let mut irrational = no_rational_roots(&poly);
+        if !irrational {
+            for (k, r) in isolated.iter().enumerate() {
+                if let Root::Isolated(a, b) = r
+                    && let Some(x) = rational_guess(&poly, a, b)
+                {
+                    poly = without_rational_root(poly, &x);
+                    found[k] = Some(x);
+                }
+            }
+            irrational = no_rational_roots(&poly);
+        }
         isolated
             .into_iter()
-            .map(|r| match r {
-                Root::Exact(x) => x.into(),
-                Root::Isolated(a, b) => Self::from_isolated(sf.clone(), a, b, irrational),
+            .zip(found)
+            .map(|(r, f)| match (r, f) {
+                (Root::Exact(x), _) | (_, Some(x)) => x.into(),
+                (Root::Isolated(a, b), None) => Self::from_isolated(poly.clone(), a, b, irrational),
             })
             .collect()
     }
