@@ -123,17 +123,36 @@ pub struct Intersections {
     pub overlaps: Vec<Overlap>,
 }
 
-/// `(X, Y, W)` of a rational curve as integer power forms (one common scale).
+/// `(X, Y, W)` of a rational curve as integer power forms (one common positive scale).
 fn integer_forms(c: &RationalBezier<BigRational>) -> [Vec<BigInt>; 3] {
-    let h = c.homogeneous().power_coefficients();
-    let scale =
-        h.iter().flat_map(|p| p.coords.iter()).fold(BigInt::one(), |acc, x| num_integer::Integer::lcm(&acc, x.denom()));
-    let coord = |k: usize| -> Vec<BigInt> {
-        let v: Vec<BigInt> =
-            h.iter().map(|p| (p.coords[k].clone() * BigRational::from_integer(scale.clone())).to_integer()).collect();
-        zv::trim(v)
-    };
-    [coord(0), coord(1), coord(2)]
+    let rows: Vec<[BigRational; 3]> = c
+        .homogeneous()
+        .points()
+        .iter()
+        .map(|p| [p.coords[0].clone(), p.coords[1].clone(), p.coords[2].clone()])
+        .collect();
+    forms_from_homogeneous(&rows)
+}
+
+/// `(X, Y, W)` as integer power forms from homogeneous control points `(wᵢxᵢ, wᵢyᵢ, wᵢ)`: every
+/// number scaled by the lcm of the denominators, then `c_k = C(n,k) Δ^k b_0` (forward
+/// differences) in integers.
+fn forms_from_homogeneous(rows: &[[BigRational; 3]]) -> [Vec<BigInt>; 3] {
+    let scale = rows.iter().flatten().fold(BigInt::one(), |acc, x| {
+        if x.denom().is_one() { acc } else { num_integer::Integer::lcm(&acc, x.denom()) }
+    });
+    let n = rows.len() - 1;
+    [0, 1, 2].map(|k| {
+        let mut diff: Vec<BigInt> = rows.iter().map(|r| r[k].numer() * (&scale / r[k].denom())).collect();
+        let mut out = Vec::with_capacity(n + 1);
+        for j in 0..=n {
+            out.push(&diff[0] * crate::poly::bernstein::binomial(n, j));
+            for i in 0..n - j {
+                diff[i] = &diff[i + 1] - &diff[i];
+            }
+        }
+        zv::trim(out)
+    })
 }
 
 fn to_rational(p: &[BigInt]) -> Vec<BigRational> {
@@ -155,6 +174,62 @@ fn cross_system(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> V
         .collect();
     while out.last().is_some_and(|c| c.is_empty()) {
         out.pop();
+    }
+    out
+}
+
+/// A polynomial in `s` whose roots are the parameters where `A(s)` lies on `B`'s curve:
+/// `Res_t(X_A(s)W_B(t) − X_B(t)W_A(s), Y_A(s)W_B(t) − Y_B(t)W_A(s))` up to a constant and the
+/// factor `W_A(s)^m`. When both equations have one degree `m` in `t`, it is the determinant of
+/// `B`'s implicit (Bézout) matrix at `A(s)`: `f(t)g(u) − f(u)g(t) = w·(t − u)·Σ M_ij t^i u^j`
+/// with `M(x, y, w) = −x·Bz(W_B, Y_B) − y·Bz(X_B, W_B) + w·Bz(X_B, Y_B)`, `Bz(p, q)` the
+/// Bézoutian `(p(t)q(u) − p(u)q(t))/(t − u)` — an `m × m` determinant (Sederberg's moving-line
+/// matrix) instead of the `2m × 2m` Sylvester one, and `det M(x, y, w) = 0` is `B`'s implicit
+/// equation. Otherwise (a line parallel to an axis, say) the Sylvester resultant.
+fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
+    let f = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]);
+    let g = cross_system(&fa[1], &fa[2], &fb[1], &fb[2]);
+    if f.len() != g.len() || f.len() < 2 {
+        return resultant_zv(&f, &g);
+    }
+    let m = f.len() - 1;
+    let (b1, b2, b3) = (bezoutian(&fb[2], &fb[1], m), bezoutian(&fb[0], &fb[2], m), bezoutian(&fb[0], &fb[1], m));
+    let len = fa.iter().map(Vec::len).max().unwrap_or(0);
+    let get = |p: &[BigInt], k: usize| p.get(k).cloned().unwrap_or_default();
+    let matrix: Vec<Vec<zv::P>> = (0..m)
+        .map(|i| {
+            (0..m)
+                .map(|j| {
+                    zv::trim(
+                        (0..len)
+                            .map(|k| {
+                                get(&fa[2], k) * &b3[i][j] - get(&fa[0], k) * &b1[i][j] - get(&fa[1], k) * &b2[i][j]
+                            })
+                            .collect(),
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    zv::det(matrix)
+}
+
+/// The Bézoutian of `p` and `q` in formal degree `m`: the `m × m` integer matrix `Q` with
+/// `p(t)q(u) − p(u)q(t) = (t − u)·Σ Q_ij t^i u^j`. From `P_ij = p_i q_j − p_j q_i` and
+/// `P_ij = Q_(i−1)j − Q_i(j−1)`: `Q_(i−1)j = P_ij + Q_i(j−1)`.
+fn bezoutian(p: &[BigInt], q: &[BigInt], m: usize) -> Vec<Vec<BigInt>> {
+    let get = |v: &[BigInt], i: usize| v.get(i).cloned().unwrap_or_default();
+    let n = m + 1;
+    let mut out = vec![vec![BigInt::default(); n]; n];
+    for j in 0..n {
+        for i in (1..n).rev() {
+            let prev = if j > 0 { out[i][j - 1].clone() } else { BigInt::default() };
+            out[i - 1][j] = get(p, i) * get(q, j) - get(p, j) * get(q, i) + prev;
+        }
+    }
+    out.truncate(m);
+    for row in &mut out {
+        row.truncate(m);
     }
     out
 }
@@ -287,8 +362,25 @@ pub fn intersect_polynomial(
     b: &BezierCurve<BigRational>,
     domain: Domain,
 ) -> Result<Intersections> {
+    for c in [a, b] {
+        if c.dim() != 2 {
+            return Err(Error::DimensionMismatch { expected: 2, found: c.dim() });
+        }
+        if c.degree() > MAX_INTERSECT_DEGREE {
+            return Err(Error::TooLarge {
+                what: "degree to intersect",
+                value: c.degree(),
+                limit: MAX_INTERSECT_DEGREE,
+            });
+        }
+    }
+    let forms = |c: &BezierCurve<BigRational>| {
+        let rows: Vec<[BigRational; 3]> =
+            c.points().iter().map(|p| [p.coords[0].clone(), p.coords[1].clone(), rat(1)]).collect();
+        forms_from_homogeneous(&rows)
+    };
     let unit = |c: &BezierCurve<BigRational>| RationalBezier::new(c.points().to_vec(), vec![rat(1); c.points().len()]);
-    intersect(&unit(a)?, &unit(b)?, domain)
+    intersect_forms(&forms(a), &forms(b), domain, || overlap(&unit(a)?, &unit(b)?, domain))
 }
 
 fn check(c: &RationalBezier<BigRational>, domain: Domain) -> Result<()> {
@@ -344,20 +436,22 @@ pub fn intersect_within(
     check(a, domain)?;
     check(b, domain)?;
     budget.check(format!("intersecting degree {} with degree {}", a.degree(), b.degree()), estimate(a, b))?;
-    let (fa, fb) = (integer_forms(a), integer_forms(b));
-    let r = {
-        let f = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]);
-        let g = cross_system(&fa[1], &fa[2], &fb[1], &fb[2]);
-        resultant_zv(&f, &g)
-    };
+    intersect_forms(&integer_forms(a), &integer_forms(b), domain, || overlap(a, b, domain))
+}
+
+/// The intersections of the curves with integer power forms `fa` and `fb` (checked by the
+/// caller); `overlap` answers when they share a component.
+fn intersect_forms(
+    fa: &[Vec<BigInt>; 3],
+    fb: &[Vec<BigInt>; 3],
+    domain: Domain,
+    overlap: impl FnOnce() -> Result<Intersections>,
+) -> Result<Intersections> {
+    let r = eliminate(fa, fb);
     if r.is_empty() {
-        return overlap(a, b, domain);
+        return overlap();
     }
-    let t_poly = {
-        let f = cross_system(&fb[0], &fb[2], &fa[0], &fa[2]);
-        let g = cross_system(&fb[1], &fb[2], &fa[1], &fa[2]);
-        resultant_zv(&f, &g)
-    };
+    let t_poly = eliminate(fb, fa);
     // with every real parameter allowed, a root where a weight vanishes is a common point at
     // infinity, not an intersection in the plane
     let ss = finite_roots(roots(&r, domain), &fa);
@@ -964,6 +1058,40 @@ mod filter_tests {
         }
         // the proof may decline a crossing (the exact comparison then decides), but not most
         assert!(crossings > 0 && 4 * proved >= 3 * crossings, "{proved} of {crossings} crossings proved");
+    }
+
+    /// The implicit-matrix elimination against the Sylvester resultant: equal up to a constant
+    /// and the factor `W_A^m`, on random polynomial and rational cubics, quadratics and lines.
+    #[test]
+    fn bezout_elimination_matches_sylvester() {
+        let mut x: u64 = 0x1234_5678_9ABC_DEF1;
+        let mut next = move |m: i64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % (2 * m as u64 + 1)) as i64 - m
+        };
+        for round in 0..40 {
+            let degree = |r: usize| [3, 2, 1, 3][r % 4];
+            let mut curve = |n: usize, rational: bool| {
+                let pts = (0..=n).map(|_| Point::new(vec![rat(next(60)), rat(next(60))])).collect();
+                let w = (0..=n).map(|_| if rational { rat(next(5).abs() + 1) } else { rat(1) }).collect();
+                RationalBezier::new(pts, w).unwrap()
+            };
+            let (a, b) = (curve(degree(round), round % 3 == 0), curve(degree(round / 4), round % 5 == 0));
+            let (fa, fb) = (integer_forms(&a), integer_forms(&b));
+            let sylvester = resultant_zv(
+                &cross_system(&fa[0], &fa[2], &fb[0], &fb[2]),
+                &cross_system(&fa[1], &fa[2], &fb[1], &fb[2]),
+            );
+            let mut bezout = eliminate(&fa, &fb);
+            let m = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]).len() - 1;
+            for _ in 0..m {
+                bezout = zv::mul(&bezout, &fa[2]);
+            }
+            let pp = crate::poly::polynomial::primitive_part;
+            assert_eq!(pp(sylvester), pp(bezout), "round {round}");
+        }
     }
 
     #[test]

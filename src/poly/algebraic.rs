@@ -515,7 +515,7 @@ impl RealAlgebraic {
             if f.is_sign_negative() { -((f.to_bits() & !(1 << 63)) as i64) } else { f.to_bits() as i64 }
         };
         let from_key = |k: i64| -> f64 { if k < 0 { -f64::from_bits((-k) as u64) } else { f64::from_bits(k as u64) } };
-        let exact = |f: f64| BigRational::from_float(f).filter(|_| f.is_finite());
+        let exact = exact_f64;
         // the number's side of the f64 with key k: Greater when above it
         let sign_lo = self.sign_at_lo();
         let side = |k: i64| -> Option<Ordering> { Some(self.position_given(&exact(from_key(k))?, sign_lo)) };
@@ -734,7 +734,8 @@ pub(crate) mod zv {
             for i in k + 1..n {
                 for j in k + 1..n {
                     let t = sub(&mul(&m[k][k], &m[i][j]), &mul(&m[i][k], &m[k][j]));
-                    m[i][j] = div_exact(&t, &prev);
+                    m[i][j] =
+                        if prev.len() == 1 && num_traits::One::is_one(&prev[0]) { t } else { div_exact(&t, &prev) };
                 }
             }
             prev = m[k][k].clone();
@@ -930,6 +931,20 @@ fn dyadic(m: BigInt, k: u64) -> BigRational {
     }
     let tz = m.trailing_zeros().unwrap_or(0).min(k);
     BigRational::new_raw(m >> tz, BigInt::one() << (k - tz))
+}
+
+/// A finite `f64` as an exact reduced ratio, without a gcd (its denominator is a power of two).
+fn exact_f64(f: f64) -> Option<BigRational> {
+    if !f.is_finite() {
+        return None;
+    }
+    let (mantissa, exponent, sign) = num_traits::Float::integer_decode(f);
+    let m = BigInt::from(mantissa) * i64::from(sign);
+    Some(if exponent >= 0 {
+        BigRational::from_integer(m << exponent as u64)
+    } else {
+        dyadic(m, u64::from(exponent.unsigned_abs()))
+    })
 }
 
 /// `2^(k·n)·p(m/2^k)` for an integer polynomial of formal degree `n = p.len() − 1`.
