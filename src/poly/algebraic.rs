@@ -125,6 +125,9 @@ fn shifted(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<BigRati
 /// `lo < hi`), on integers: with `lo = L/D` and `hi − lo = V/D`, `D^n·c(lo + (hi − lo)u)` by
 /// homogeneous Horner.
 fn shifted_integer(c: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<BigInt> {
+    if num_traits::Zero::is_zero(lo) && num_traits::One::is_one(hi) {
+        return c.to_vec();
+    }
     let n = c.len() - 1;
     let w = hi.clone() - lo;
     let d = num_integer::Integer::lcm(lo.denom(), w.denom());
@@ -267,7 +270,11 @@ impl RealAlgebraic {
             let ip = primitive_part(to_integer(&p));
             return if sign_at(&ip, lo) == Ordering::Equal { vec![lo.clone().into()] } else { vec![] };
         }
-        let sf = square_free_integer(primitive_part(to_integer(&p)));
+        Self::roots_of_square_free(square_free_integer(primitive_part(to_integer(&p))), lo, hi)
+    }
+
+    /// [`Self::roots_in`] for a square-free primitive integer polynomial (`lo < hi`).
+    pub(crate) fn roots_of_square_free(sf: Vec<BigInt>, lo: &BigRational, hi: &BigRational) -> Vec<RealAlgebraic> {
         if sf.len() <= 1 {
             return vec![];
         }

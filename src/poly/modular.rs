@@ -29,19 +29,21 @@
 
 use num_bigint::{BigInt, Sign};
 
-/// Primes below `2^10`: sums of a hundred products of residues fit a `u32`, and raising to the
-/// `q`-th power takes ten squarings. (A prime dividing the leading coefficient or the
-/// discriminant is skipped; with sixteen of them, that costs nothing in practice.)
-const PRIMES: [u32; 16] = [1021, 1019, 1013, 1009, 997, 991, 983, 977, 971, 967, 953, 947, 941, 937, 929, 919];
+/// Primes between `2^8` and `2^9`, of every residue class mod 8 and mod 3 (primes of one class
+/// would split the same small factors every time): raising to the `q`-th power takes eight
+/// squarings, and sums of a hundred products of residues fit a `u32`. A prime dividing the
+/// leading coefficient or the discriminant is skipped; with sixteen of them, that costs nothing
+/// in practice.
+const PRIMES: [u32; 16] = [257, 263, 269, 271, 277, 281, 283, 293, 307, 311, 313, 317, 331, 337, 347, 349];
 
 /// A polynomial over `Z/qZ`, lowest degree first, no trailing zeros.
 type Poly = Vec<u32>;
 
-/// A lower bound for the degree of every non-constant factor of `p` over `Q` (integer
-/// coefficients, lowest degree first, degree ≥ 1): the smallest achievable sum of
-/// distinct-degree factor degrees, over the primes tried (see the module documentation).
-/// Stops early once the bound reaches `enough`; `1` when nothing is proved (degree above 127,
-/// or no usable prime).
+/// A lower bound, capped at `enough`, for the degree of every non-constant factor of `p` over
+/// `Q` (integer coefficients, lowest degree first, degree ≥ 1): the smallest achievable sum of
+/// distinct-degree factor degrees, over the primes tried (see the module documentation). Only
+/// factors of degree below `enough` are sought, and the search stops once the bound reaches
+/// it; `1` when nothing is proved (degree above 127, or no usable prime).
 pub fn min_factor_degree(p: &[BigInt], enough: usize) -> usize {
     let n = p.len().saturating_sub(1);
     if n <= 1 {
@@ -53,24 +55,27 @@ pub fn min_factor_degree(p: &[BigInt], enough: usize) -> usize {
     // bit k: a factor of degree k is still possible
     let mut possible: u128 = u128::MAX >> (127 - n);
     let mut bound = 1;
+    let enough = enough.clamp(1, n);
     for &q in &PRIMES {
-        let Some(degrees) = factor_degrees(p, q) else { continue };
+        let Some(degrees) = factor_degrees(p, q, enough) else { continue };
         let mut sums: u128 = 1;
         for d in degrees {
             sums |= sums << d;
         }
         possible &= sums;
-        bound = (possible & !1).trailing_zeros() as usize;
-        if bound >= enough.min(n) {
+        bound = ((possible & !1).trailing_zeros() as usize).min(enough);
+        if bound >= enough {
             break;
         }
     }
     bound
 }
 
-/// The degrees of the irreducible factors of `p mod q` (with repetition), when `q` does not
-/// divide the leading coefficient and `p mod q` is square-free; `None` otherwise.
-fn factor_degrees(p: &[BigInt], q: u32) -> Option<Vec<usize>> {
+/// The degrees of the irreducible factors of `p mod q` of degree below `below` (with
+/// repetition), then the degree of the product of the others (if any; every sum of degrees
+/// below `below` is then exact), when `q` does not divide the leading coefficient and `p mod q`
+/// is square-free; `None` otherwise.
+fn factor_degrees(p: &[BigInt], q: u32, below: usize) -> Option<Vec<usize>> {
     let f = reduce(p, q);
     if f.len() != p.len() {
         return None;
@@ -81,17 +86,19 @@ fn factor_degrees(p: &[BigInt], q: u32) -> Option<Vec<usize>> {
     }
     let mut f = monic(f, q);
     let mut out = vec![];
-    // h = x^(q^i) mod f, by the Frobenius map (linear over Z/q): h(x)^q = Σ h_k x^(qk)
-    let mut h: Poly = vec![0, 1];
-    let mut xq = x_to_the_q(&f, q);
+    // h = x^(q^i) mod f₀ (the whole polynomial), by the Frobenius map (linear over Z/q):
+    // h(x)^q = Σ h_k x^(qk); the factor f left over divides f₀, so h is x^(q^i) mod f as well
+    // once reduced (the gcd reduces it)
+    let mut h: Poly = rem(vec![0, 1], &f, q);
+    let rows = frobenius_matrix(&f, q);
     let mut i = 0;
     while f.len() > 1 {
         i += 1;
-        if 2 * i > f.len() - 1 {
-            out.push(f.len() - 1); // what is left is irreducible
+        if 2 * i > f.len() - 1 || i >= below {
+            out.push(f.len() - 1); // irreducible, or factors of degree ≥ below only
             break;
         }
-        h = frobenius(&h, &xq, &f, q);
+        h = frobenius(&h, &rows, q);
         let mut hx = h.clone();
         hx.resize(hx.len().max(2), 0);
         hx[1] = (hx[1] + q - 1) % q;
@@ -99,8 +106,6 @@ fn factor_degrees(p: &[BigInt], q: u32) -> Option<Vec<usize>> {
         if g.len() > 1 {
             out.extend(std::iter::repeat_n(i, (g.len() - 1) / i));
             f = div_exact(&f, &g, q);
-            h = rem(h, &f, q);
-            xq = rem(xq, &f, q);
         }
     }
     Some(out)
@@ -143,20 +148,33 @@ fn monic(p: Poly, q: u32) -> Poly {
     p.into_iter().map(|c| c * li % q).collect()
 }
 
-/// `a mod b` (`b` non-zero).
-fn rem(mut a: Poly, b: &[u32], q: u32) -> Poly {
-    let li = inverse(*b.last().expect("non-zero"), q);
-    while a.len() >= b.len() {
-        let f = a.last().expect("non-empty") * li % q;
-        let shift = a.len() - b.len();
-        for (i, c) in b.iter().enumerate() {
-            // a − f·c with one reduction: q² − f·c > 0
-            a[shift + i] = (a[shift + i] + q * q - f * c) % q;
-        }
-        a.pop();
-        a = trim(a);
+/// `x mod q` by Barrett reduction with `m = ⌊2^64 / q⌋` (the estimate of `⌊x/q⌋` is low by
+/// at most one): a multiplication instead of a division.
+fn barrett(x: u64, q: u64, m: u64) -> u64 {
+    let r = x - ((u128::from(x) * u128::from(m)) >> 64) as u64 * q;
+    if r >= q { r - q } else { r }
+}
+
+/// `a mod b` (`b` non-zero; `a`'s entries below `2^31`, reduced or not).
+fn rem(a: Poly, b: &[u32], q: u32) -> Poly {
+    if a.len() < b.len() {
+        return trim(a.into_iter().map(|v| v % q).collect());
     }
-    a
+    let li = u64::from(inverse(*b.last().expect("non-zero"), q));
+    let (q64, qq) = (u64::from(q), u64::from(q) * u64::from(q));
+    let m = u64::MAX / q64;
+    // lazy: each step adds q² − f·c (< 2^20) to an entry, reduced only where the next leading
+    // coefficient is read and at the end
+    let mut acc: Vec<u64> = a.into_iter().map(u64::from).collect();
+    while acc.len() >= b.len() {
+        let f = barrett(barrett(*acc.last().expect("non-empty"), q64, m) * li, q64, m);
+        let shift = acc.len() - b.len();
+        for (i, c) in b.iter().enumerate() {
+            acc[shift + i] += qq - f * u64::from(*c);
+        }
+        acc.pop();
+    }
+    trim(acc.into_iter().map(|v| barrett(v, q64, m) as u32).collect())
 }
 
 /// `a / b` when `b` divides `a`.
@@ -192,14 +210,14 @@ fn mul_mod(a: &[u32], b: &[u32], f: &[u32], q: u32) -> Poly {
     if a.is_empty() || b.is_empty() {
         return vec![];
     }
-    // at most 128 products below 2^20 each: the sums fit a u32, reduced once
+    // at most 128 products below 2^20 each: the sums fit below 2^27, reduced by `rem`
     let mut out = vec![0u32; a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
         for (j, y) in b.iter().enumerate() {
             out[i + j] += x * y;
         }
     }
-    rem(trim(out.into_iter().map(|v| v % q).collect()), f, q)
+    rem(out, f, q)
 }
 
 /// `x^q mod f`, by repeated squaring.
@@ -216,19 +234,29 @@ fn x_to_the_q(f: &[u32], q: u32) -> Poly {
     xq
 }
 
-/// `h^q mod f` from `xq = x^q mod f`: the Frobenius map is linear over `Z/q`, so
-/// `h(x)^q = Σ h_k (x^q)^k` (Horner in `x^q`).
-fn frobenius(h: &[u32], xq: &[u32], f: &[u32], q: u32) -> Poly {
-    let mut acc: Poly = vec![];
-    for &c in h.iter().rev() {
-        acc = mul_mod(&acc, xq, f, q);
-        if acc.is_empty() {
-            acc.push(0);
-        }
-        acc[0] = (acc[0] + c) % q;
-        acc = trim(acc);
+/// The Frobenius map `h ↦ h^q mod f` as a matrix: row `k` is `x^(qk) mod f` (`k < deg f`). The
+/// map is linear over `Z/q`, so `h^q = Σ h_k x^(qk)`.
+fn frobenius_matrix(f: &[u32], q: u32) -> Vec<Poly> {
+    let n = f.len() - 1;
+    let xq = x_to_the_q(f, q);
+    let mut rows: Vec<Poly> = vec![vec![1]];
+    for k in 1..n {
+        rows.push(mul_mod(&rows[k - 1], &xq, f, q));
     }
-    acc
+    rows
+}
+
+/// `h^q mod f` by the matrix of [`frobenius_matrix`] (`h` reduced mod `f`).
+fn frobenius(h: &[u32], rows: &[Poly], q: u32) -> Poly {
+    let n = rows.len();
+    let mut acc = vec![0u64; n];
+    for (k, &c) in h.iter().enumerate() {
+        for (i, v) in rows[k].iter().enumerate() {
+            acc[i] += u64::from(c) * u64::from(*v);
+        }
+    }
+    let m = u64::MAX / u64::from(q);
+    trim(acc.into_iter().map(|v| barrett(v, u64::from(q), m) as u32).collect())
 }
 
 #[cfg(test)]
@@ -283,7 +311,7 @@ mod tests {
                 })
                 .collect();
             for &q in &PRIMES[..4] {
-                if let Some(d) = factor_degrees(&p, q) {
+                if let Some(d) = factor_degrees(&p, q, n + 1) {
                     assert_eq!(d.iter().sum::<usize>(), n, "{p:?} mod {q}");
                 }
             }

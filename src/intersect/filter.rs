@@ -1,0 +1,333 @@
+//! Certified `f64` filters for [`super`]: decisions made in floating point that are proofs —
+//! outward-rounded interval arithmetic ([`Enclosure`]) and Krawczyk's interval Newton operator —
+//! and that say "undecided" rather than guess, leaving the exact route to decide.
+//!
+//! - [`no_common_point`]: the curves' control polygons, subdivided, have disjoint bounding
+//!   boxes everywhere (convex hull property): no intersection on `[0, 1]²`.
+//! - [`apart`]: two root parameters map to provably different points.
+//! - [`proved_common`]: two root parameters map to the same point (a transversal crossing).
+
+use crate::poly::algebraic::RealAlgebraic;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+
+/// A closed `f64` interval whose ends are rounded outwards after every operation, so it holds
+/// the exact value: a certified filter (a disjointness it shows is a proof; `inf` and `NaN`
+/// only ever make it show nothing).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Enclosure(f64, f64);
+
+impl Enclosure {
+    /// An integer: `to_f64` is within an ulp, widened by two.
+    fn of_integer(c: &BigInt) -> Self {
+        let f = num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN);
+        Enclosure(f.next_down().next_down(), f.next_up().next_up())
+    }
+    fn add(self, o: Self) -> Self {
+        Enclosure((self.0 + o.0).next_down(), (self.1 + o.1).next_up())
+    }
+    fn mul(self, o: Self) -> Self {
+        let p = [self.0 * o.0, self.0 * o.1, self.1 * o.0, self.1 * o.1];
+        if p.iter().any(|x| x.is_nan()) {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Enclosure(lo.next_down(), hi.next_up())
+    }
+    /// `self / o` when `o` keeps away from 0 (else nothing is known).
+    fn div(self, o: Self) -> Self {
+        if !(o.0 > 0.0 || o.1 < 0.0) {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        let q = [self.0 / o.0, self.0 / o.1, self.1 / o.0, self.1 / o.1];
+        if q.iter().any(|x| x.is_nan()) {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        let lo = q.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = q.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Enclosure(lo.next_down(), hi.next_up())
+    }
+    fn neg(self) -> Self {
+        Enclosure(-self.1, -self.0)
+    }
+    /// Provably no common point (false whenever an end is `NaN`).
+    fn apart(self, o: Self) -> bool {
+        self.1 < o.0 || o.1 < self.0
+    }
+}
+
+/// An enclosure of the power form `p` (integer coefficients) over the interval `x`: Horner.
+fn enclose(p: &[BigInt], x: Enclosure) -> Enclosure {
+    p.iter().rev().fold(Enclosure(0.0, 0.0), |acc, c| acc.mul(x).add(Enclosure::of_integer(c)))
+}
+
+/// The point of `f` over the isolating interval of `x`.
+fn enclose_point(f: &[Vec<BigInt>; 3], x: &RealAlgebraic) -> [Enclosure; 2] {
+    let (lo, hi) = x.interval();
+    let (lo, hi) = (crate::num::scalar::ratio_to_f64(&lo), crate::num::scalar::ratio_to_f64(&hi));
+    let x = Enclosure(lo.next_down(), hi.next_up());
+    let w = enclose(&f[2], x);
+    [enclose(&f[0], x).div(w), enclose(&f[1], x).div(w)]
+}
+
+/// `A(s) ≠ B(t)`, proved by enclosures of both points over the intervals of `s` and `t`
+/// (pass copies narrowed by [`RealAlgebraic::narrowed_with_f64`] for tight enclosures); false
+/// when they overlap (the exact comparison decides then).
+pub(super) fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>; 3], t: &RealAlgebraic) -> bool {
+    let (p, q) = (enclose_point(fa, s), enclose_point(fb, t));
+    p[0].apart(q[0]) || p[1].apart(q[1])
+}
+
+/// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator (interval Newton) on
+/// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` over a small box around an
+/// `f64` Newton solution (from `start`, the two parameters rounded) inside the isolating
+/// intervals of `s` and `t`: when the operator maps
+/// the box into its interior, `F` has exactly one zero `(σ*, τ*)` there; then `σ*` is a root of
+/// the resultant in `s`'s isolating interval, so `σ* = s`, and likewise `τ* = t`. False when that
+/// does not succeed (a tangency, rational curves, a box outside the intervals): the exact
+/// comparison decides then. Every decision it makes is a proof; `f64` only proposes the box.
+pub(super) fn proved_common(
+    fa: &[Vec<BigInt>; 3],
+    s: &RealAlgebraic,
+    fb: &[Vec<BigInt>; 3],
+    t: &RealAlgebraic,
+    start: (f64, f64),
+) -> bool {
+    use num_traits::ToPrimitive;
+    if fa[2].len() != 1 || fb[2].len() != 1 {
+        return false;
+    }
+    let (wa, wb) = (&fa[2][0], &fb[2][0]);
+    let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
+    let deriv = |p: &[BigInt]| -> Vec<BigInt> { p.iter().enumerate().skip(1).map(|(k, c)| c * k).collect() };
+    // F's coordinates as polynomials in σ (first curve) and τ (second curve)
+    let (xa, ya, xb, yb) = (scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa));
+    let (dxa, dya, dxb, dyb) = (deriv(&xa), deriv(&ya), deriv(&xb), deriv(&yb));
+    let floats =
+        |p: &[BigInt]| -> Option<Vec<f64>> { p.iter().map(|c| c.to_f64().filter(|x| x.is_finite())).collect() };
+    let (Some(fxa), Some(fya), Some(fxb), Some(fyb)) = (floats(&xa), floats(&ya), floats(&xb), floats(&yb)) else {
+        return false;
+    };
+    let (Some(fdxa), Some(fdya), Some(fdxb), Some(fdyb)) = (floats(&dxa), floats(&dya), floats(&dxb), floats(&dyb))
+    else {
+        return false;
+    };
+    let horner = |p: &[f64], x: f64| p.iter().rev().fold(0.0, |acc, c| acc * x + c);
+    let (mut u, mut v) = start;
+    for _ in 0..4 {
+        let (f1, f2) = (horner(&fxa, u) - horner(&fxb, v), horner(&fya, u) - horner(&fyb, v));
+        let (a, b, c, d) = (horner(&fdxa, u), -horner(&fdxb, v), horner(&fdya, u), -horner(&fdyb, v));
+        let det = a * d - b * c;
+        if det == 0.0 || !det.is_finite() {
+            return false;
+        }
+        u -= (d * f1 - b * f2) / det;
+        v -= (a * f2 - c * f1) / det;
+    }
+    if !u.is_finite() || !v.is_finite() {
+        return false;
+    }
+    // the box: some hundreds of ulps around the Newton point (wider if that fails), inside both
+    // isolating intervals
+    [256.0, 65536.0, 1.6e7]
+        .iter()
+        .any(|&ulps| krawczyk(&[&xa, &ya, &xb, &yb], &[&dxa, &dya, &dxb, &dyb], s, t, u, v, ulps))
+}
+
+/// The Krawczyk test of [`proved_common`] on the box of `ulps` around `(u, v)`: polynomials
+/// `[X_A, Y_A, X_B, Y_B]` (scaled) and their derivatives.
+fn krawczyk(
+    polys: &[&Vec<BigInt>; 4],
+    derivs: &[&Vec<BigInt>; 4],
+    s: &RealAlgebraic,
+    t: &RealAlgebraic,
+    u: f64,
+    v: f64,
+    ulps: f64,
+) -> bool {
+    let [xa, ya, xb, yb] = *polys;
+    let [dxa, dya, dxb, dyb] = *derivs;
+    let radius = |x: f64| ulps * f64::EPSILON * x.abs().max(1.0);
+    let (su, sv) = (Enclosure(u - radius(u), u + radius(u)), Enclosure(v - radius(v), v + radius(v)));
+    let inside = |e: Enclosure, x: &RealAlgebraic| {
+        let (lo, hi) = x.interval();
+        match (BigRational::from_float(e.0), BigRational::from_float(e.1)) {
+            (Some(a), Some(b)) => lo <= a && b <= hi,
+            _ => false,
+        }
+    };
+    if !inside(su, s) || !inside(sv, t) {
+        return false;
+    }
+    let point = |x: f64| Enclosure(x, x);
+    let (mu, mv) = (point(u), point(v));
+    // F(m) and J(box), enclosed
+    let f1 = enclose(xa, mu).add(enclose(xb, mv).neg());
+    let f2 = enclose(ya, mu).add(enclose(yb, mv).neg());
+    let j = [[enclose(dxa, su), enclose(dxb, sv).neg()], [enclose(dya, su), enclose(dyb, sv).neg()]];
+    // Y ≈ J(m)⁻¹ (any matrix will do; the proof holds for it as given)
+    let mid = |e: Enclosure| (e.0 + e.1) / 2.0;
+    let (a, b, c, d) = (mid(enclose(dxa, mu)), -mid(enclose(dxb, mv)), mid(enclose(dya, mu)), -mid(enclose(dyb, mv)));
+    let det = a * d - b * c;
+    let y = [[d / det, -b / det], [-c / det, a / det]];
+    if y.iter().flatten().any(|x| !x.is_finite()) {
+        return false;
+    }
+    let yk = |r: usize, k: usize| point(y[r][k]);
+    let dx = [su.add(mu.neg()), sv.add(mv.neg())];
+    let m = [mu, mv];
+    let f = [f1, f2];
+    let bx = [su, sv];
+    (0..2).all(|r| {
+        // K_r = m_r − (Y F(m))_r + Σ_k (δ_rk − (Y J)_rk)(X_k − m_k)
+        let yf = yk(r, 0).mul(f[0]).add(yk(r, 1).mul(f[1]));
+        let mut k_r = m[r].add(yf.neg());
+        for k in 0..2 {
+            let yj = yk(r, 0).mul(j[0][k]).add(yk(r, 1).mul(j[1][k]));
+            let delta = if r == k { Enclosure(1.0, 1.0) } else { Enclosure(0.0, 0.0) };
+            k_r = k_r.add(delta.add(yj.neg()).mul(dx[k]));
+        }
+        k_r.0 > bx[r].0 && k_r.1 < bx[r].1
+    })
+}
+
+impl Enclosure {
+    /// A rational: its nearest `f64` widened by an ulp each way (`NaN` outside the range).
+    fn of_rational(x: &BigRational) -> Self {
+        let f = crate::num::scalar::ratio_to_f64(x);
+        if !f.is_finite() {
+            return Enclosure(f64::NAN, f64::NAN);
+        }
+        Enclosure(f.next_down(), f.next_up())
+    }
+    /// The midpoint of two enclosed numbers, enclosed.
+    fn midpoint(self, o: Self) -> Self {
+        let s = self.add(o);
+        Enclosure((s.0 * 0.5).next_down(), (s.1 * 0.5).next_up())
+    }
+    /// The smallest interval holding both.
+    fn hull(self, o: Self) -> Self {
+        Enclosure(self.0.min(o.0), self.1.max(o.1))
+    }
+    fn width(self) -> f64 {
+        self.1 - self.0
+    }
+}
+
+/// A homogeneous control polygon `(wᵢxᵢ, wᵢyᵢ, wᵢ)`, enclosed.
+type Polygon = Vec<[Enclosure; 3]>;
+
+/// The two halves of a control polygon at `t = 1/2` (de Casteljau), enclosed.
+fn halves(c: &[[Enclosure; 3]]) -> (Polygon, Polygon) {
+    let mut row: Polygon = c.to_vec();
+    let (mut left, mut right) = (Vec::with_capacity(c.len()), Vec::with_capacity(c.len()));
+    left.push(row[0]);
+    right.push(row[row.len() - 1]);
+    while row.len() > 1 {
+        row = row.windows(2).map(|w| std::array::from_fn(|k| w[0][k].midpoint(w[1][k]))).collect();
+        left.push(row[0]);
+        right.push(row[row.len() - 1]);
+    }
+    right.reverse();
+    (left, right)
+}
+
+/// The bounding box of the projected control points `(wx/w, wy/w)`: it holds the curve when
+/// every weight is positive (convex hull property). `None` when an enclosure says nothing.
+fn bounding_box(c: &[[Enclosure; 3]]) -> Option<[Enclosure; 2]> {
+    let mut out: Option<[Enclosure; 2]> = None;
+    for p in c {
+        let q = [p[0].div(p[2]), p[1].div(p[2])];
+        if q.iter().any(|e| e.0.is_nan() || e.1.is_nan() || !e.0.is_finite() || !e.1.is_finite()) {
+            return None;
+        }
+        out = Some(match out {
+            None => q,
+            Some(b) => [b[0].hull(q[0]), b[1].hull(q[1])],
+        });
+    }
+    out
+}
+
+/// At most this many pairs of pieces are compared by [`candidate_regions`].
+const PIECE_PAIRS: usize = 48;
+
+/// A parameter interval `[k/2^d, (k+1)/2^d]` of a piece, as `(k, d)`.
+type Piece = (u64, u32);
+
+/// What the subdivision filter found about two curves on `[0, 1]²`.
+#[derive(Debug)]
+pub(super) enum Regions {
+    /// No common point (every pair of pieces ended with disjoint bounding boxes).
+    Apart,
+    /// Every common point has `s` in one of the first closed intervals and `t` in one of the
+    /// second (ascending, disjoint, not touching).
+    Within(Vec<(BigRational, BigRational)>, Vec<(BigRational, BigRational)>),
+    /// Nothing proved (a weight not provably positive, or an enclosure that says nothing).
+    Anywhere,
+}
+
+/// The subdivision filter on curves with homogeneous control points `a` and `b` (weights
+/// positive): pairs of pieces are compared by bounding boxes (which hold the pieces, by the
+/// convex hull property), the larger piece halved while they overlap. Pairs with disjoint boxes
+/// hold no common point; after [`PIECE_PAIRS`] comparisons the pairs left over hold every one.
+/// Boxes that touch do not count as disjoint, so hits at ends are never filtered out.
+pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) -> Regions {
+    let enclosed = |rows: &[[BigRational; 3]]| -> Option<Polygon> {
+        rows.iter()
+            .map(|r| {
+                let e: [Enclosure; 3] = std::array::from_fn(|k| Enclosure::of_rational(&r[k]));
+                (e[2].0 > 0.0).then_some(e)
+            })
+            .collect()
+    };
+    let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else { return Regions::Anywhere };
+    let mut stack: Vec<(Polygon, Piece, Polygon, Piece)> = vec![(a, (0, 0), b, (0, 0))];
+    let mut left: Vec<(Piece, Piece)> = vec![];
+    let mut compared = 0;
+    while let Some((a, ia, b, ib)) = stack.pop() {
+        compared += 1;
+        let (Some(ba), Some(bb)) = (bounding_box(&a), bounding_box(&b)) else { return Regions::Anywhere };
+        if ba[0].apart(bb[0]) || ba[1].apart(bb[1]) {
+            continue;
+        }
+        if compared >= PIECE_PAIRS || ia.1.max(ib.1) >= 60 {
+            left.push((ia, ib));
+            continue;
+        }
+        let size = |b: &[Enclosure; 2]| b[0].width().max(b[1].width());
+        if size(&ba) >= size(&bb) {
+            let (l, r) = halves(&a);
+            stack.push((r, (2 * ia.0 + 1, ia.1 + 1), b.clone(), ib));
+            stack.push((l, (2 * ia.0, ia.1 + 1), b, ib));
+        } else {
+            let (l, r) = halves(&b);
+            stack.push((a.clone(), ia, r, (2 * ib.0 + 1, ib.1 + 1)));
+            stack.push((a, ia, l, (2 * ib.0, ib.1 + 1)));
+        }
+    }
+    if left.is_empty() {
+        return Regions::Apart;
+    }
+    Regions::Within(merged(left.iter().map(|p| p.0)), merged(left.iter().map(|p| p.1)))
+}
+
+/// The union of closed piece intervals as disjoint closed intervals, ascending (touching ones
+/// joined).
+fn merged(pieces: impl Iterator<Item = Piece>) -> Vec<(BigRational, BigRational)> {
+    // on the finest common grid 2^60
+    let mut v: Vec<(u64, u64)> = pieces.map(|(k, d)| (k << (60 - d), (k + 1) << (60 - d))).collect();
+    v.sort_unstable();
+    let mut out: Vec<(u64, u64)> = vec![];
+    for (lo, hi) in v {
+        match out.last_mut() {
+            Some(last) if lo <= last.1 => last.1 = last.1.max(hi),
+            _ => out.push((lo, hi)),
+        }
+    }
+    let grid = BigInt::from(1u64 << 60);
+    out.into_iter()
+        .map(|(lo, hi)| (BigRational::new(lo.into(), grid.clone()), BigRational::new(hi.into(), grid.clone())))
+        .collect()
+}
