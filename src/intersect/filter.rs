@@ -261,9 +261,17 @@ type Piece = (u64, u32);
 pub(super) enum Regions {
     /// No common point (every pair of pieces ended with disjoint bounding boxes).
     Apart,
-    /// Every common point has `s` in one of the first closed intervals and `t` in one of the
-    /// second (ascending, disjoint, not touching).
-    Within(Vec<(BigRational, BigRational)>, Vec<(BigRational, BigRational)>),
+    /// Every common point `(s, t)` lies in one of the closed `boxes` (`[s_lo, s_hi, t_lo,
+    /// t_hi]`, exact dyadic `f64`s); `s` and `t` are their projections, merged (ascending,
+    /// disjoint, not touching).
+    Within {
+        /// The `s` intervals.
+        s: Vec<(BigRational, BigRational)>,
+        /// The `t` intervals.
+        t: Vec<(BigRational, BigRational)>,
+        /// The boxes.
+        boxes: Vec<[f64; 4]>,
+    },
     /// Nothing proved (a weight not provably positive, or an enclosure that says nothing).
     Anywhere,
 }
@@ -292,7 +300,7 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         if ba[0].apart(bb[0]) || ba[1].apart(bb[1]) {
             continue;
         }
-        if compared >= PIECE_PAIRS || ia.1.max(ib.1) >= 60 {
+        if compared >= PIECE_PAIRS {
             left.push((ia, ib));
             continue;
         }
@@ -310,7 +318,16 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
     if left.is_empty() {
         return Regions::Apart;
     }
-    Regions::Within(merged(left.iter().map(|p| p.0)), merged(left.iter().map(|p| p.1)))
+    // depth ≤ PIECE_PAIRS < 53: the piece ends are exact f64s
+    let ends = |(k, d): Piece| [k as f64 / (1u64 << d) as f64, (k + 1) as f64 / (1u64 << d) as f64];
+    let boxes = left
+        .iter()
+        .map(|&(a, b)| {
+            let (s, t) = (ends(a), ends(b));
+            [s[0], s[1], t[0], t[1]]
+        })
+        .collect();
+    Regions::Within { s: merged(left.iter().map(|p| p.0)), t: merged(left.iter().map(|p| p.1)), boxes }
 }
 
 /// The union of closed piece intervals as disjoint closed intervals, ascending (touching ones

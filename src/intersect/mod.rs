@@ -480,7 +480,7 @@ fn intersect_forms(
     // with every real parameter allowed, a root where a weight vanishes is a common point at
     // infinity, not an intersection in the plane
     let (within_s, within_t) = match regions {
-        Regions::Within(s, t) => (Some(&s[..]), Some(&t[..])),
+        Regions::Within { s, t, .. } => (Some(&s[..]), Some(&t[..])),
         _ => (None, None),
     };
     let ((ss, r_simple), (ts, t_simple)) = (roots(&r, domain, within_s), roots(&t_poly, domain, within_t));
@@ -497,8 +497,20 @@ fn intersect_forms(
     let mut na: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ss.len()];
     let mut nb: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ts.len()];
     let mut out = vec![];
+    // each root's interval in f64, widened outwards, for the filter's candidate boxes
+    let outward = |x: &RealAlgebraic| {
+        let (lo, hi) = x.interval();
+        (crate::num::scalar::ratio_to_f64(&lo).next_down(), crate::num::scalar::ratio_to_f64(&hi).next_up())
+    };
+    let fs: Vec<(f64, f64)> = ss.iter().map(outward).collect();
+    let ft: Vec<(f64, f64)> = ts.iter().map(outward).collect();
     for (i, s) in ss.iter().enumerate() {
         for (j, t) in ts.iter().enumerate() {
+            if let Regions::Within { boxes, .. } = regions
+                && !boxes.iter().any(|b| fs[i].0 <= b[1] && b[0] <= fs[i].1 && ft[j].0 <= b[3] && b[2] <= ft[j].1)
+            {
+                continue; // no candidate box holds both parameters
+            }
             if apart(fa, s, fb, t) {
                 continue;
             }
