@@ -205,6 +205,14 @@ fn rational_guess(p: &[BigInt], a: &BigRational, b: &BigRational) -> Option<BigR
     (x > *a && x < *b && sign_at(p, &x) == Ordering::Equal).then_some(x)
 }
 
+/// `2 + ⌊max |c_i| / |c_n|⌋`, an integer above Cauchy's bound `1 + max |c_i / c_n|`: every
+/// root lies strictly inside `(−B, B)`.
+fn integer_root_bound(p: &[BigInt]) -> BigInt {
+    let lc = p.last().expect("non-zero polynomial").abs();
+    let m = p[..p.len() - 1].iter().map(|c| c.abs()).max().unwrap_or_default();
+    m / lc + 2
+}
+
 /// `1 + max |c_i / c_n|`: every real root lies strictly inside `(−B, B)` (Cauchy).
 fn cauchy_bound(p: &[BigRational]) -> BigRational {
     let lc = p.last().expect("non-zero polynomial").abs();
@@ -611,13 +619,16 @@ impl RealAlgebraic {
         x
     }
 
-    /// The `k`-th (1-based) real root of the number's polynomial, ascending.
+    /// The `k`-th (1-based) real root of the number's polynomial, ascending: the roots of the
+    /// (square-free) polynomial in `[−B, lo]` counted by isolation (no numbers built; `lo` is
+    /// not a root), `B` an integer root bound, plus one.
     fn root_index(&self) -> usize {
         let Repr::Root { poly, lo, .. } = &self.0 else { return 1 };
-        let p: Vec<BigRational> = poly.iter().map(|c| BigRational::from_integer(c.clone())).collect();
-        let b = cauchy_bound(&p);
-        // roots below lo (lo is not a root), plus this one
-        Self::roots_in(&p, &-b, lo).len() + 1
+        let b = BigRational::from_integer(integer_root_bound(poly));
+        if *lo <= -b.clone() {
+            return 1;
+        }
+        isolate_power(poly, &-b, lo).len() + 1
     }
 }
 

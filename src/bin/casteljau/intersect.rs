@@ -95,6 +95,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
     let curve_args = args.batch.curve_args(single);
     let self_mode = args.self_intersection;
     let budget = casteljau::work::Budget::new(args.max_work, "--max-work");
+    let json_out = args.batch.json;
     batch_lines(&curve_args, out, |line, text_line| {
         let r = if self_mode {
             self_intersect_within(&curve(text_line, line, mode, &wa)?, domain, &budget)?
@@ -104,8 +105,13 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
                 .ok_or_else(|| Error::InvalidArgument { message: "a pair of curves is written \"A ; B\"".into() })?;
             intersect_within(&curve(a, line, mode, &wa)?, &curve(b, line, mode, &wb)?, domain, &budget)?
         };
-        let json = serde_json::to_string(&r).expect("exact strings and finite floats serialize");
-        Ok(Answer { text: text(&r), json: Json::Object(json), failed: false })
+        // only the output asked for is rendered (an algebraic number's spelling has a cost)
+        Ok(if json_out {
+            let json = serde_json::to_string(&r).expect("exact strings and finite floats serialize");
+            Answer { text: String::new(), json: Json::Object(json), failed: false }
+        } else {
+            Answer { text: text(&r), json: Json::Object(String::new()), failed: false }
+        })
     })
 }
 
