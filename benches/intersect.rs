@@ -1,7 +1,9 @@
 //! Exact cubic × cubic intersection against flo_curves' Bézier clipping, in one run: random
 //! font-like integer cubic pairs (|coordinates| ≤ 2048) and hard cases (a cubic against its
 //! inflection tangent, a line starting on it, a line through its cusp; control points exact
-//! `f64`s), per pair. `cargo bench --bench intersect`.
+//! `f64`s). Criterion times each batch (the mean per pair); `per_pair_medians` then times every
+//! pair on its own and prints the median per pair of both routes and their ratio (the issue's
+//! target is stated for the median). `cargo bench --bench intersect`.
 
 use casteljau::BezierCurve;
 use casteljau::intersect::{Domain, intersect_polynomial};
@@ -53,32 +55,23 @@ fn flo(a: &[[f64; 2]], b: &[[f64; 2]]) -> usize {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("intersect");
     g.sample_size(10).measurement_time(Duration::from_secs(8)).warm_up_time(Duration::from_secs(1));
-    let random = font_like(16);
+    let random = font_like(RANDOM_PAIRS);
     let random_f: Vec<FloatPair> = random.iter().map(|(a, b)| (binary64::points(a), binary64::points(b))).collect();
-    g.bench_function("exact_font_like_cubic_pair_x16", |bn| {
+    g.bench_function("exact_font_like_cubic_pair_x128", |bn| {
         bn.iter(|| {
             for (a, b) in &random {
                 black_box(intersect_polynomial(a, b, Domain::Unit).unwrap());
             }
         })
     });
-    g.bench_function("flo_curves_clip_font_like_cubic_pair_x16", |bn| {
+    g.bench_function("flo_curves_clip_font_like_cubic_pair_x128", |bn| {
         bn.iter(|| {
             for (a, b) in &random_f {
                 black_box(flo(a, b));
             }
         })
     });
-    let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &[3u8; 32]));
-    let mut cases: Vec<(Curve, Curve)> = vec![];
-    for _ in 0..6 {
-        let (a, b, _) = hard::tangency(3).new_tree(&mut runner).unwrap().current();
-        cases.push((a, b));
-        let (a, b, _) = hard::endpoint_hit().new_tree(&mut runner).unwrap().current();
-        cases.push((a, b));
-        let (a, b, _) = hard::through_cusp().new_tree(&mut runner).unwrap().current();
-        cases.push((a, b));
-    }
+    let cases = hard_cases();
     let cases_f: Vec<FloatPair> = cases.iter().map(|(a, b)| (binary64::points(a), binary64::points(b))).collect();
     g.bench_function("exact_hard_cubic_line_pair_x18", |bn| {
         bn.iter(|| {
@@ -97,5 +90,64 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// How many random font-like pairs are timed.
+const RANDOM_PAIRS: usize = 128;
+
+/// Six of each hard family, from a fixed seed.
+fn hard_cases() -> Vec<(Curve, Curve)> {
+    let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &[3u8; 32]));
+    let mut cases: Vec<(Curve, Curve)> = vec![];
+    for _ in 0..6 {
+        let (a, b, _) = hard::tangency(3).new_tree(&mut runner).unwrap().current();
+        cases.push((a, b));
+        let (a, b, _) = hard::endpoint_hit().new_tree(&mut runner).unwrap().current();
+        cases.push((a, b));
+        let (a, b, _) = hard::through_cusp().new_tree(&mut runner).unwrap().current();
+        cases.push((a, b));
+    }
+    cases
+}
+
+/// The fastest of `reps` runs of `f`, in µs.
+fn fastest(reps: usize, mut f: impl FnMut()) -> f64 {
+    (0..reps)
+        .map(|_| {
+            let t = std::time::Instant::now();
+            f();
+            t.elapsed().as_secs_f64() * 1e6
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 { v[n / 2] } else { (v[n / 2 - 1] + v[n / 2]) / 2.0 }
+}
+
+/// Every pair timed on its own (exact: fastest of 5 runs; flo_curves: fastest of 200), then the
+/// median per pair of each route and their ratio, printed.
+fn per_pair_medians(_: &mut Criterion) {
+    for (name, pairs) in
+        [("random font-like cubic pairs", font_like(RANDOM_PAIRS)), ("hard cubic × line pairs", hard_cases())]
+    {
+        let floats: Vec<FloatPair> = pairs.iter().map(|(a, b)| (binary64::points(a), binary64::points(b))).collect();
+        let exact: Vec<f64> = pairs
+            .iter()
+            .map(|(a, b)| fastest(5, || drop(black_box(intersect_polynomial(a, b, Domain::Unit).unwrap()))))
+            .collect();
+        let flo_times: Vec<f64> = floats.iter().map(|(a, b)| fastest(200, || drop(black_box(flo(a, b))))).collect();
+        let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+        let (me, mf) = (median(exact.clone()), median(flo_times.clone()));
+        println!(
+            "per pair, {} {name}: exact median {me:.1} µs (mean {:.1}), flo_curves median {mf:.2} µs (mean {:.2}), ratio of medians {:.0}×",
+            pairs.len(),
+            mean(&exact),
+            mean(&flo_times),
+            me / mf
+        );
+    }
+}
+
+criterion_group!(benches, bench, per_pair_medians);
 criterion_main!(benches);
