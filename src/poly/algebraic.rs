@@ -129,10 +129,22 @@ fn shifted_integer(c: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<BigI
         return c.to_vec();
     }
     let n = c.len() - 1;
-    let w = hi.clone() - lo;
-    let d = num_integer::Integer::lcm(lo.denom(), w.denom());
-    let l = lo.numer() * (&d / lo.denom());
-    let v = w.numer() * (&d / w.denom());
+    let (d, l, v) = match (dyadic_parts(lo), dyadic_parts(hi)) {
+        // dyadic ends (the usual case): D = 2^k, no gcd
+        (Some((ml, kl)), Some((mh, kh))) => {
+            let k = kl.max(kh);
+            let (l, h) = (ml << (k - kl), mh << (k - kh));
+            let v = &h - &l;
+            (BigInt::one() << k, l, v)
+        }
+        _ => {
+            let w = hi.clone() - lo;
+            let d = num_integer::Integer::lcm(lo.denom(), w.denom());
+            let l = lo.numer() * (&d / lo.denom());
+            let v = w.numer() * (&d / w.denom());
+            (d, l, v)
+        }
+    };
     let mut dpow = vec![BigInt::one()];
     for _ in 0..n {
         let last = dpow[dpow.len() - 1].clone();
