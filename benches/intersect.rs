@@ -136,7 +136,14 @@ fn per_pair_medians(_: &mut Criterion) {
             .iter()
             .map(|(a, b)| fastest(5, || drop(black_box(intersect_polynomial(a, b, Domain::Unit).unwrap()))))
             .collect();
-        let flo_times: Vec<f64> = floats.iter().map(|(a, b)| fastest(200, || drop(black_box(flo(a, b))))).collect();
+        let flo_times: Vec<f64> = floats
+            .iter()
+            .map(|(a, b)| {
+                fastest(200, || {
+                    black_box(flo(a, b));
+                })
+            })
+            .collect();
         let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
         let (me, mf) = (median(exact.clone()), median(flo_times.clone()));
         println!(
