@@ -882,11 +882,9 @@ mod filter_tests {
     /// `proved_common` only for equal ones, and the proof succeeds on most crossings.
     #[test]
     fn enclosure_filter_and_krawczyk_proof_agree_with_exact_points() {
-        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut word = crate::num::xorshift(0x9E37_79B9_7F4A_7C15);
         let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = word();
             (x % 4097) as i64 - 2048
         };
         let (mut proved, mut crossings) = (0, 0);
@@ -925,11 +923,9 @@ mod filter_tests {
     /// without; and it proves most non-intersecting pairs apart.
     #[test]
     fn subdivision_filter_keeps_every_intersection() {
-        let mut x: u64 = 0x51_7CC1_B727_220A;
+        let mut word = crate::num::xorshift(0x51_7CC1_B727_220A);
         let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = word();
             (x % 4097) as i64 - 2048
         };
         type Rows = Vec<[BigRational; 3]>;
@@ -965,11 +961,9 @@ mod filter_tests {
     /// and the factor `W_A^m`, on random polynomial and rational cubics, quadratics and lines.
     #[test]
     fn bezout_elimination_matches_sylvester() {
-        let mut x: u64 = 0x1234_5678_9ABC_DEF1;
+        let mut word = crate::num::xorshift(0x1234_5678_9ABC_DEF1);
         let mut next = move |m: i64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = word();
             (x % (2 * m as u64 + 1)) as i64 - m
         };
         for round in 0..40 {

@@ -16,3 +16,15 @@ pub mod small;
 pub use point::Point;
 pub use quadratic_field::{QuadraticExt, Radical};
 pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};
+
+/// Deterministic pseudo-random words for tests (xorshift64; `seed` non-zero).
+#[cfg(test)]
+pub(crate) fn xorshift(seed: u64) -> impl FnMut() -> u64 {
+    let mut x = seed;
+    move || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        x
+    }
+}

@@ -730,13 +730,7 @@ mod big_square_tests {
 
     #[test]
     fn big_square_extraction_equals_the_naive_rule() {
-        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
-        let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
+        let mut next = crate::num::xorshift(0x2545_F491_4F6C_DD1D);
         for _ in 0..300 {
             // products of small primes (some squared), a large prime-ish part, powers of two
             let mut n = BigUint::from(next() | 1) * BigUint::from(next());
@@ -744,7 +738,7 @@ mod big_square_tests {
                 let p = [3u64, 5, 7, 11, 997, 991, 2, 9, 25][(next() % 9) as usize];
                 n *= p * p;
             }
-            if next() % 3 == 0 {
+            if next().is_multiple_of(3) {
                 n *= BigUint::from(next()) * BigUint::from(next());
             }
             assert_eq!(extract_small_squares_big(&n), naive(&n), "{n}");

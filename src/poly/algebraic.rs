@@ -439,32 +439,19 @@ impl RealAlgebraic {
     /// Puts `r` outside the open interval, or finds that the number is `r`: the number
     /// compared with the rational `r`, exactly.
     fn cmp_rational(&mut self, r: &BigRational) -> Ordering {
-        match &self.0 {
-            Repr::Rational(x) => x.cmp(r),
-            Repr::Root { poly, lo, hi } => {
-                if r <= lo {
-                    return Ordering::Greater;
-                }
-                if r >= hi {
-                    return Ordering::Less;
-                }
-                let s = sign_at(poly, r);
-                if s == Ordering::Equal {
-                    // r is the root itself: impossible for an irrational number, kept for safety
-                    self.0 = Repr::Rational(r.clone());
-                    return Ordering::Equal;
-                }
-                let below = s != sign_at(poly, lo); // the root lies in (lo, r)
-                let (poly, lo, hi) = (poly.clone(), lo.clone(), hi.clone());
-                if below {
-                    self.0 = Repr::Root { poly, lo, hi: r.clone() };
-                    Ordering::Less
-                } else {
-                    self.0 = Repr::Root { poly, lo: r.clone(), hi };
-                    Ordering::Greater
-                }
-            }
+        let Repr::Root { lo, hi, .. } = &self.0 else { return self.position_given(r, Ordering::Equal) };
+        if r <= lo || r >= hi {
+            return self.position_given(r, Ordering::Equal); // decided by the ends alone
         }
+        let o = self.position_given(r, self.sign_at_lo());
+        match (&mut self.0, o) {
+            // r is the root itself: impossible for an irrational number, kept for safety
+            (_, Ordering::Equal) => self.0 = Repr::Rational(r.clone()),
+            (Repr::Root { hi, .. }, Ordering::Less) => *hi = r.clone(),
+            (Repr::Root { lo, .. }, _) => *lo = r.clone(),
+            _ => {}
+        }
+        o
     }
 
     /// The sign, exactly.
@@ -1368,11 +1355,9 @@ mod tests {
     /// real root of random integer polynomials of degree 2 to 9 (wide and clustered roots).
     #[test]
     fn to_f64_cell_proof_matches_bisection() {
-        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut word = crate::num::xorshift(0x2545_F491_4F6C_DD1D);
         let mut next = move |m: u64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = word();
             (x % (2 * m + 1)) as i64 - m as i64
         };
         let (mut checked, mut fast, mut newton, mut irrational) = (0, 0, 0, 0);
@@ -1401,11 +1386,9 @@ mod tests {
     /// integer polynomials and random rational maps of degree ≤ 3.
     #[test]
     fn rounded_image_matches_the_exact_image() {
-        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut word = crate::num::xorshift(0x9E37_79B9_7F4A_7C15);
         let mut next = move |m: i64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = word();
             (x % (2 * m as u64 + 1)) as i64 - m
         };
         let (mut checked, mut fast, mut irrational) = (0, 0, 0);

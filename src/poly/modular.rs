@@ -300,13 +300,11 @@ mod tests {
     /// over several primes.
     #[test]
     fn distinct_degree_factorization_accounts_for_every_degree() {
-        let mut x: u64 = 7;
+        let mut word = crate::num::xorshift(7);
         for n in 2..14 {
             let p: Vec<BigInt> = (0..=n)
                 .map(|_| {
-                    x ^= x << 13;
-                    x ^= x >> 7;
-                    x ^= x << 17;
+                    let x = word();
                     BigInt::from((x % 2001) as i64 - 1000) + i64::from(u8::from(x % 2001 == 1000))
                 })
                 .collect();
