@@ -2,8 +2,9 @@
 //! outward-rounded interval arithmetic ([`Enclosure`]) and Krawczyk's interval Newton operator —
 //! and that say "undecided" rather than guess, leaving the exact route to decide.
 //!
-//! - [`no_common_point`]: the curves' control polygons, subdivided, have disjoint bounding
-//!   boxes everywhere (convex hull property): no intersection on `[0, 1]²`.
+//! - [`candidate_regions`]: the curves' control polygons, halved, have disjoint bounding boxes
+//!   everywhere (convex hull property): no intersection on `[0, 1]²`; or every intersection
+//!   lies in the boxes left over.
 //! - [`apart`]: two root parameters map to provably different points.
 //! - [`proved_common`]: two root parameters map to the same point (a transversal crossing).
 
@@ -82,11 +83,11 @@ pub(super) fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>;
 /// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator (interval Newton) on
 /// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` over a small box around an
 /// `f64` Newton solution (from `start`, the two parameters rounded) inside the isolating
-/// intervals of `s` and `t`: when the operator maps
-/// the box into its interior, `F` has exactly one zero `(σ*, τ*)` there; then `σ*` is a root of
-/// the resultant in `s`'s isolating interval, so `σ* = s`, and likewise `τ* = t`. False when that
-/// does not succeed (a tangency, rational curves, a box outside the intervals): the exact
-/// comparison decides then. Every decision it makes is a proof; `f64` only proposes the box.
+/// intervals of `s` and `t`: when the operator maps the box into its interior, `F` has exactly
+/// one zero `(σ*, τ*)` there; then `σ*` is a root of the resultant in `s`'s isolating interval,
+/// so `σ* = s`, and likewise `τ* = t`. False when that does not succeed (a tangency, rational
+/// curves, a box outside the intervals): the exact comparison decides then. Every decision it
+/// makes is a proof; `f64` only proposes the box.
 pub(super) fn proved_common(
     fa: &[Vec<BigInt>; 3],
     s: &RealAlgebraic,

@@ -1119,7 +1119,7 @@ impl RealAlgebraic {
 
     /// `num(x) / den(x)` for this number `x`, correctly rounded to `f64` (integer power forms,
     /// lowest degree first), without the exact image: the Bernstein coefficients of `num` and
-    /// `den` over a narrow interval of `x` ([`Self::refine_newton`]) enclose the value; once
+    /// `den` over a narrow interval of `x` ([`Self::narrowed`]) enclose the value; once
     /// both ends of the enclosure round to one `f64`, so does the value. Falls back to the exact
     /// image ([`Self::map_rational`]) when that does not settle (a value on a rounding
     /// boundary is rational, and only the exact route can say so).
