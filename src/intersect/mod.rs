@@ -351,7 +351,9 @@ fn common_point(
     if let Some(x) = t.to_rational() {
         return Some(point_at_rational(b.f, x));
     }
-    if a.irrational_at(s) || b.irrational_at(t) {
+    // the curve of lower degree first: its proof asks less (a line's, nothing beyond irrationality)
+    let ((c, x), (d, y)) = if a.degree <= b.degree { ((a, s), (b, t)) } else { ((b, t), (a, s)) };
+    if c.irrational_at(x) || d.irrational_at(y) {
         return None;
     }
     rational_point(cached.get_or_insert_with(|| point_at(a.f, s)))

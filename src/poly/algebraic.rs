@@ -1032,6 +1032,8 @@ impl RealAlgebraic {
     pub fn degree_lower_bound(&self, enough: usize) -> usize {
         match &self.0 {
             Repr::Rational(_) => 1,
+            // irrational: 2 already, and nothing more is asked for below 3
+            Repr::Root { .. } if enough <= 2 => 2,
             Repr::Root { poly, .. } => crate::poly::modular::min_factor_degree(poly, enough).max(2),
         }
     }
