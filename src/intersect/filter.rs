@@ -101,7 +101,7 @@ pub(super) fn proved_common(
     }
     let (wa, wb) = (&fa[2][0], &fb[2][0]);
     let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
-    let deriv = |p: &[BigInt]| -> Vec<BigInt> { p.iter().enumerate().skip(1).map(|(k, c)| c * k).collect() };
+    let deriv = crate::poly::polynomial::derivative_integer;
     // F's coordinates as polynomials in σ (first curve) and τ (second curve)
     let (xa, ya, xb, yb) = (scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa));
     let (dxa, dya, dxb, dyb) = (deriv(&xa), deriv(&ya), deriv(&xb), deriv(&yb));
@@ -263,13 +263,8 @@ pub(super) enum Regions {
     /// No common point (every pair of pieces ended with disjoint bounding boxes).
     Apart,
     /// Every common point `(s, t)` lies in one of the closed `boxes` (`[s_lo, s_hi, t_lo,
-    /// t_hi]`, exact dyadic `f64`s); `s` and `t` are their projections, merged (ascending,
-    /// disjoint, not touching).
+    /// t_hi]`, exact dyadic `f64`s).
     Within {
-        /// The `s` intervals.
-        s: Vec<(BigRational, BigRational)>,
-        /// The `t` intervals.
-        t: Vec<(BigRational, BigRational)>,
         /// The boxes.
         boxes: Vec<[f64; 4]>,
     },
@@ -328,24 +323,5 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
             [s[0], s[1], t[0], t[1]]
         })
         .collect();
-    Regions::Within { s: merged(left.iter().map(|p| p.0)), t: merged(left.iter().map(|p| p.1)), boxes }
-}
-
-/// The union of closed piece intervals as disjoint closed intervals, ascending (touching ones
-/// joined).
-fn merged(pieces: impl Iterator<Item = Piece>) -> Vec<(BigRational, BigRational)> {
-    // on the finest common grid 2^60
-    let mut v: Vec<(u64, u64)> = pieces.map(|(k, d)| (k << (60 - d), (k + 1) << (60 - d))).collect();
-    v.sort_unstable();
-    let mut out: Vec<(u64, u64)> = vec![];
-    for (lo, hi) in v {
-        match out.last_mut() {
-            Some(last) if lo <= last.1 => last.1 = last.1.max(hi),
-            _ => out.push((lo, hi)),
-        }
-    }
-    let grid = BigInt::from(1u64 << 60);
-    out.into_iter()
-        .map(|(lo, hi)| (BigRational::new(lo.into(), grid.clone()), BigRational::new(hi.into(), grid.clone())))
-        .collect()
+    Regions::Within { boxes }
 }

@@ -231,27 +231,19 @@ fn bezoutian(p: &[BigInt], q: &[BigInt], m: usize) -> Vec<Vec<BigInt>> {
     out
 }
 
-/// The distinct roots of `r` (integer coefficients, non-zero) in the domain — only those in the
-/// closed intervals `within` (ascending, disjoint) when given — and whether `r` is square-free
-/// (every root simple).
-fn roots(r: &[BigInt], domain: Domain, within: Option<&[(BigRational, BigRational)]>) -> (Vec<RealAlgebraic>, bool) {
+/// The distinct roots of `r` (integer coefficients, non-zero) in the domain, and whether `r` is
+/// square-free (every root simple).
+fn roots(r: &[BigInt], domain: Domain) -> (Vec<RealAlgebraic>, bool) {
     let p = crate::poly::polynomial::primitive_part(r.to_vec());
     let sf = crate::poly::polynomial::square_free_integer(p.clone());
     let simple = sf.len() == p.len();
     if sf.len() <= 1 {
         return (vec![], simple);
     }
-    let mut roots = match domain {
+    let roots = match domain {
         Domain::Unit => RealAlgebraic::roots_of_square_free(sf, &rat(0), &rat(1)),
         Domain::All => RealAlgebraic::real_roots(&to_rational(&sf)),
     };
-    if let Some(intervals) = within {
-        // a root whose interval misses every candidate interval is no intersection's parameter
-        roots.retain(|x| {
-            let (lo, hi) = x.interval();
-            intervals.iter().any(|(a, b)| lo <= *b && *a <= hi)
-        });
-    }
     (roots, simple)
 }
 
@@ -288,7 +280,7 @@ fn rational_point(p: &[RealAlgebraic; 2]) -> Option<Point<BigRational>> {
 
 /// The point `(X/W, Y/W)` at a rational parameter.
 fn point_at_rational(f: &[Vec<BigInt>; 3], x: &BigRational) -> Point<BigRational> {
-    let eval = |p: &[BigInt]| p.iter().rev().fold(rat(0), |acc, c| acc * x + BigRational::from_integer(c.clone()));
+    let eval = |p: &[BigInt]| crate::poly::algebraic::value_at(p, x);
     let w = eval(&f[2]);
     Point::new(vec![eval(&f[0]) / &w, eval(&f[1]) / &w])
 }
@@ -369,16 +361,7 @@ pub fn intersect_polynomial(
     domain: Domain,
 ) -> Result<Intersections> {
     for c in [a, b] {
-        if c.dim() != 2 {
-            return Err(Error::DimensionMismatch { expected: 2, found: c.dim() });
-        }
-        if c.degree() > MAX_INTERSECT_DEGREE {
-            return Err(Error::TooLarge {
-                what: "degree to intersect",
-                value: c.degree(),
-                limit: MAX_INTERSECT_DEGREE,
-            });
-        }
+        check_shape(c.dim(), c.degree())?;
     }
     let rows = |c: &BezierCurve<BigRational>| -> Vec<[BigRational; 3]> {
         c.points().iter().map(|p| [p.coords[0].clone(), p.coords[1].clone(), rat(1)]).collect()
@@ -409,13 +392,19 @@ fn intersect_rows(
     intersect_forms(&forms_from_homogeneous(ra), &forms_from_homogeneous(rb), domain, &regions, overlap)
 }
 
+/// Planar, and of degree at most [`MAX_INTERSECT_DEGREE`].
+fn check_shape(dim: usize, degree: usize) -> Result<()> {
+    if dim != 2 {
+        return Err(Error::DimensionMismatch { expected: 2, found: dim });
+    }
+    if degree > MAX_INTERSECT_DEGREE {
+        return Err(Error::TooLarge { what: "degree to intersect", value: degree, limit: MAX_INTERSECT_DEGREE });
+    }
+    Ok(())
+}
+
 fn check(c: &RationalBezier<BigRational>, domain: Domain) -> Result<()> {
-    if c.dim() != 2 {
-        return Err(Error::DimensionMismatch { expected: 2, found: c.dim() });
-    }
-    if c.degree() > MAX_INTERSECT_DEGREE {
-        return Err(Error::TooLarge { what: "degree to intersect", value: c.degree(), limit: MAX_INTERSECT_DEGREE });
-    }
+    check_shape(c.dim(), c.degree())?;
     if domain == Domain::Unit {
         c.check_defined(&rat(0), &rat(1))?;
     }
@@ -481,12 +470,26 @@ fn intersect_forms(
     let t_poly = eliminate(fb, fa);
     // with every real parameter allowed, a root where a weight vanishes is a common point at
     // infinity, not an intersection in the plane
-    let (within_s, within_t) = match regions {
-        Regions::Within { s, t, .. } => (Some(&s[..]), Some(&t[..])),
-        _ => (None, None),
+    let ((ss, r_simple), (ts, t_simple)) = (roots(&r, domain), roots(&t_poly, domain));
+    let (mut ss, mut ts) = (finite_roots(ss, fa), finite_roots(ts, fb));
+    // each root's interval in f64, widened outwards, for the filter's candidate boxes
+    let outward = |x: &RealAlgebraic| {
+        let (lo, hi) = x.interval();
+        (crate::num::scalar::ratio_to_f64(&lo).next_down(), crate::num::scalar::ratio_to_f64(&hi).next_up())
     };
-    let ((ss, r_simple), (ts, t_simple)) = (roots(&r, domain, within_s), roots(&t_poly, domain, within_t));
-    let (ss, ts) = (finite_roots(ss, fa), finite_roots(ts, fb));
+    let boxes = match regions {
+        Regions::Within { boxes } => Some(&boxes[..]),
+        _ => None,
+    };
+    if let Some(boxes) = boxes {
+        // a root whose interval misses every box's side is no intersection's parameter
+        let meets = |x: &RealAlgebraic, side: usize| {
+            let (lo, hi) = outward(x);
+            boxes.iter().any(|b| lo <= b[2 * side + 1] && b[2 * side] <= hi)
+        };
+        ss.retain(|x| meets(x, 0));
+        ts.retain(|x| meets(x, 1));
+    }
     let (rr, tr) = (to_rational(&r), to_rational(&t_poly));
     // a square-free resultant: every root simple, every contact order 1
     let simple = r_simple || t_simple;
@@ -499,16 +502,11 @@ fn intersect_forms(
     let mut na: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ss.len()];
     let mut nb: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ts.len()];
     let mut out = vec![];
-    // each root's interval in f64, widened outwards, for the filter's candidate boxes
-    let outward = |x: &RealAlgebraic| {
-        let (lo, hi) = x.interval();
-        (crate::num::scalar::ratio_to_f64(&lo).next_down(), crate::num::scalar::ratio_to_f64(&hi).next_up())
-    };
     let fs: Vec<(f64, f64)> = ss.iter().map(outward).collect();
     let ft: Vec<(f64, f64)> = ts.iter().map(outward).collect();
     for (i, s) in ss.iter().enumerate() {
         for (j, t) in ts.iter().enumerate() {
-            if let Regions::Within { boxes, .. } = regions
+            if let Some(boxes) = boxes
                 && !boxes.iter().any(|b| fs[i].0 <= b[1] && b[0] <= fs[i].1 && ft[j].0 <= b[3] && b[2] <= ft[j].1)
             {
                 continue; // no candidate box holds both parameters
@@ -605,7 +603,7 @@ pub fn self_intersect_within(
                 .into(),
         });
     }
-    let (ss, simple) = roots(&r, domain, None);
+    let (ss, simple) = roots(&r, domain);
     let ss = finite_roots(ss, &fa);
     let rr = to_rational(&r);
     let side = Side::new(&fa);
@@ -901,8 +899,8 @@ mod filter_tests {
                 &cross_system(&fb[0], &fb[2], &fa[0], &fa[2]),
                 &cross_system(&fb[1], &fb[2], &fa[1], &fa[2]),
             );
-            for s in roots(&r, Domain::Unit, None).0 {
-                for t in roots(&t_poly, Domain::Unit, None).0 {
+            for s in roots(&r, Domain::Unit).0 {
+                for t in roots(&t_poly, Domain::Unit).0 {
                     let (p, q) = (point_at(&fa, &s), point_at(&fb, &t));
                     let equal = p[0] == q[0] && p[1] == q[1];
                     if apart(&fa, &s, &fb, &t) {

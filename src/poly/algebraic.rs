@@ -40,7 +40,9 @@
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, rat, ratio_to_f64};
 use crate::poly::bernstein::power_to_bernstein_matrix;
-use crate::poly::polynomial::{gcd_integer, primitive_part, quadratic_roots, square_free_integer, to_integer};
+use crate::poly::polynomial::{
+    derivative_integer, gcd_integer, primitive_part, quadratic_roots, square_free_integer, to_integer,
+};
 use crate::poly::roots::Root;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -72,13 +74,9 @@ pub fn sign_at(p: &[BigInt], r: &BigRational) -> Ordering {
     }
     let (a, b) = (r.numer(), r.denom());
     let n = p.len() - 1;
-    if let Some((_, k)) = dyadic_parts(r) {
+    if let Some((m, k)) = dyadic_parts(r) {
         // b = 2^k: the powers of b are shifts
-        let mut acc = p[n].clone();
-        for i in (0..n).rev() {
-            acc = acc * a + (&p[i] << (k * (n - i) as u64));
-        }
-        return acc.sign().into_ordering();
+        return homogeneous_value(p, m, k).sign().into_ordering();
     }
     // Horner in homogeneous form: acc = acc·a + c_i·b^(n−i)
     let mut acc = p[n].clone();
@@ -129,15 +127,13 @@ fn shifted_integer(c: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<BigI
         return c.to_vec();
     }
     let n = c.len() - 1;
-    let (d, l, v) = match (dyadic_parts(lo), dyadic_parts(hi)) {
+    let (d, l, v) = match aligned(lo, hi) {
         // dyadic ends (the usual case): D = 2^k, no gcd
-        (Some((ml, kl)), Some((mh, kh))) => {
-            let k = kl.max(kh);
-            let (l, h) = (ml << (k - kl), mh << (k - kh));
+        Some((l, h, k)) => {
             let v = &h - &l;
             (BigInt::one() << k, l, v)
         }
-        _ => {
+        None => {
             let w = hi.clone() - lo;
             let d = num_integer::Integer::lcm(lo.denom(), w.denom());
             let l = lo.numer() * (&d / lo.denom());
@@ -343,7 +339,7 @@ impl RealAlgebraic {
         // inward. p has exactly one root r in (lo, hi), all roots simple, so just inside a root
         // end p has the sign of p′ there (right of lo) or of −p′ (left of hi); bisecting with
         // those signs keeps r and ends with two ends where p ≠ 0.
-        let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
+        let dp = derivative_integer(&poly);
         loop {
             let s_lo = match sign_at(&poly, &lo) {
                 Ordering::Equal => sign_at(&dp, &lo),
@@ -574,9 +570,8 @@ impl RealAlgebraic {
         }
         let (eb, ea) = (exact(fb)?, exact(fa)?);
         let mid = {
-            let ((mb, kb), (ma, ka)) = (dyadic_parts(&eb)?, dyadic_parts(&ea)?);
-            let k = kb.max(ka);
-            dyadic((mb << (k - kb)) + (ma << (k - ka)), k + 1)
+            let (mb, ma, k) = aligned(&eb, &ea)?;
+            dyadic(mb + ma, k + 1)
         };
         let (f, a, b) = match self.position_given(&mid, sign_lo) {
             Ordering::Equal => return None,
@@ -946,6 +941,14 @@ fn dyadic_parts(r: &BigRational) -> Option<(&BigInt, u64)> {
     (d.trailing_zeros() == Some(k)).then_some((r.numer(), k))
 }
 
+/// Two dyadic numbers over one power of two: `(m_a, m_b, k)` with `a = m_a/2^k`,
+/// `b = m_b/2^k`; `None` unless both are dyadic.
+fn aligned(a: &BigRational, b: &BigRational) -> Option<(BigInt, BigInt, u64)> {
+    let ((ma, ka), (mb, kb)) = (dyadic_parts(a)?, dyadic_parts(b)?);
+    let k = ka.max(kb);
+    Some((ma << (k - ka), mb << (k - kb), k))
+}
+
 /// `m / 2^k` as a reduced ratio, by trailing zeros (no gcd).
 fn dyadic(m: BigInt, k: u64) -> BigRational {
     if m.is_zero() {
@@ -1002,7 +1005,7 @@ fn homogeneous_value(p: &[BigInt], m: &BigInt, k: u64) -> BigInt {
 }
 
 /// `p(r)` exactly, for an integer polynomial (homogeneous Horner, one division at the end).
-fn value_at(p: &[BigInt], r: &BigRational) -> BigRational {
+pub(crate) fn value_at(p: &[BigInt], r: &BigRational) -> BigRational {
     let Some(n) = p.len().checked_sub(1) else { return rat(0) };
     let (a, b) = (r.numer(), r.denom());
     let mut acc = p[n].clone();
@@ -1056,16 +1059,14 @@ impl RealAlgebraic {
         let mut sign_lo = None;
         for _ in 0..64 {
             let Repr::Root { poly, lo, hi } = &self.0 else { return false };
-            let (Some((ml, kl)), Some((mh, kh))) = (dyadic_parts(lo), dyadic_parts(hi)) else { return false };
+            let Some((ml, mh, k)) = aligned(lo, hi) else { return false };
             // the width m_w / 2^k and its binary order, −log₂ w ≈ k − bits(m_w)
-            let k = kl.max(kh);
-            let (ml, mh) = (ml << (k - kl), mh << (k - kh));
             let wbits = k as i64 - (&mh - &ml).bits() as i64;
             if wbits > -target {
                 return true;
             }
             // Newton from the midpoint (ml + mh) / 2^(k+1)
-            let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(i, c)| c * BigInt::from(i)).collect();
+            let dp = derivative_integer(poly);
             let proposed =
                 newton_proposal(poly, &dp, &(&ml + &mh), k + 1).map(|(a, b)| (a.max(lo.clone()), b.min(hi.clone())));
             let sign_lo = *sign_lo.get_or_insert_with(|| self.sign_at_lo());
@@ -1102,7 +1103,7 @@ impl RealAlgebraic {
         }
         let c = exact_f64(f)?;
         let (cm, ck) = dyadic_parts(&c)?;
-        let dp: Vec<BigInt> = poly.iter().enumerate().skip(1).map(|(i, c)| c * BigInt::from(i)).collect();
+        let dp = derivative_integer(poly);
         let (a, b) = newton_proposal(poly, &dp, cm, ck)?;
         let (a, b) = (a.max(lo.clone()), b.min(hi.clone()));
         let rounded = ratio_to_f64(&a);

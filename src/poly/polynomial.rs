@@ -180,7 +180,7 @@ pub fn square_free_integer(p: Vec<BigInt>) -> Vec<BigInt> {
     if p.len() <= 2 {
         return p;
     }
-    let dp: Vec<BigInt> = p.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
+    let dp = derivative_integer(&p);
     if MODULAR_PRIMES.iter().any(|&q| coprime_mod(&p, &dp, q)) {
         return p;
     }
@@ -275,6 +275,11 @@ fn exact_quotient(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
     }
     debug_assert!(a.is_empty(), "exact_quotient: b does not divide a");
     q
+}
+
+/// `p'` of an integer polynomial (lowest degree first; not trimmed).
+pub fn derivative_integer(p: &[BigInt]) -> Vec<BigInt> {
+    p.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect()
 }
 
 /// `p'`.
