@@ -187,6 +187,169 @@ fn cli_intersect_text_json_self_and_batch() {
     assert_eq!(stdout(&o), "overlap: s in [0, 1] with t from 1 to 0\n");
 }
 
+/// Shared components: rational curves (Möbius reparametrizations, with their crossings), curves
+/// on one line (turn-backs included) and single points.
+mod overlaps {
+    use super::*;
+    use casteljau::intersect::{Intersections, intersect};
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    fn rc(points: &str, weights: &[i64]) -> RationalBezier<BigRational> {
+        RationalBezier::new(c(points).points().to_vec(), weights.iter().map(|&w| rat(w)).collect()).unwrap()
+    }
+
+    fn at(c: &RationalBezier<BigRational>, x: &RealAlgebraic) -> [RealAlgebraic; 2] {
+        let h = c.homogeneous().power_coefficients();
+        let coord = |k: usize| h.iter().map(|p| p.coords[k].clone()).collect::<Vec<_>>();
+        [x.map_rational(&coord(0), &coord(2)), x.map_rational(&coord(1), &coord(2))]
+    }
+
+    /// Every overlap's ends and every intersection are one point on both curves, exactly.
+    pub fn consistent(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>, r: &Intersections) -> bool {
+        r.overlaps.iter().all(|o| (0..2).all(|k| at(a, &o.s[k]) == at(b, &o.t[k])))
+            && r.intersections.iter().all(|i| at(a, &i.s) == at(b, &i.t))
+    }
+
+    fn spelled(r: &Intersections) -> Vec<String> {
+        r.overlaps.iter().map(|o| format!("s [{}, {}] t {} -> {}", o.s[0], o.s[1], o.t[0], o.t[1])).collect()
+    }
+
+    #[test]
+    fn rational_overlaps_through_the_pole_of_the_reparametrization() {
+        // the unit circle ((1 − s²), 2s)/(1 + s²) on s ∈ [0, 1], and the circle again with
+        // s = (4t − 1)/(8t − 4): t ∈ [0, 1/2) runs s from 1/4 down to −∞, t ∈ (1/2, 1] from +∞
+        // down to 3/4 — two arcs, one per branch of the hyperbola s(t)
+        let a = rc("1 0, 1 1, 0 1", &[1, 1, 2]);
+        let b = rc("15/17 8/17, 13/19 16/19, 7/25 24/25", &[17, -19, 25]);
+        let r = intersect(&a, &b, Domain::Unit).unwrap();
+        assert_eq!(spelled(&r), ["s [0, 1/4] t 1/4 -> 0", "s [3/4, 1] t 1 -> 3/4"]);
+        assert!(r.intersections.is_empty() && consistent(&a, &b, &r));
+        assert_eq!(r.overlaps[1].t_float, [1.0, 0.75]);
+        // B passes through A(∞) = (−1, 0) at t = 1/2; A's own s ∈ [0, 1] is t ∈ [0, 1/3]
+        let b = rc("1 0, 1 -1, 0 -1", &[1, -1, 2]);
+        assert_eq!(spelled(&intersect(&a, &b, Domain::Unit).unwrap()), ["s [0, 1] t 0 -> 1/3"]);
+        assert_eq!(spelled(&intersect(&b, &a, Domain::Unit).unwrap()), ["s [0, 1/3] t 0 -> 1"]);
+        // reweighted copies (w_i ρ^i): the same arc, ends fixed
+        let r = intersect(&rc("1 0, 1 1, 0 1", &[1, 1, 1]), &rc("1 0, 1 1, 0 1", &[1, 2, 4]), Domain::Unit).unwrap();
+        assert_eq!(spelled(&r), ["s [0, 1] t 0 -> 1"]);
+    }
+
+    #[test]
+    fn an_overlap_keeps_the_crossings_of_the_shared_curve() {
+        // the crunode cubic and its left half: the loop's second pass (s = 1/2 + √15/10) meets
+        // the half at t = 1 − √15/5, off the shared arc
+        let a = rc("0 0, 2 2, -1 2, 1 0", &[1, 1, 1, 1]);
+        let b = rc("0 0, 1 1, 3/4 3/2, 1/2 3/2", &[1, 1, 1, 1]);
+        let r = intersect(&a, &b, Domain::Unit).unwrap();
+        assert_eq!(spelled(&r), ["s [0, 1/2] t 0 -> 1"]);
+        let i = &r.intersections;
+        assert_eq!(i.len(), 1);
+        assert_eq!((i[0].s.to_string(), i[0].t.to_string()), ("1/2 + 1/10*sqrt(15)".into(), "1 - 1/5*sqrt(15)".into()));
+        assert!(consistent(&a, &b, &r));
+        // a curve with itself: the whole square's diagonal, and the double point both ways
+        let r = intersect(&a, &a, Domain::Unit).unwrap();
+        assert_eq!(spelled(&r), ["s [0, 1] t 0 -> 1"]);
+        assert_eq!(r.intersections.len(), 2);
+    }
+
+    #[test]
+    fn curves_on_one_line_and_single_points() {
+        let o = |a: &str, b: &str| spelled(&intersect_polynomial(&c(a), &c(b), Domain::Unit).unwrap());
+        // x = 3s + s³ (collinear control points not evenly spaced: not a line's parametrization
+        // of degree 1) against the segment [1, 3]
+        assert_eq!(
+            o("0 0, 1 0, 2 0, 4 0", "1 0, 3 0"),
+            ["s [root 1 of t^3 + 3*t - 1 in [5/16, 11/32], root 1 of t^3 + 3*t - 3 in [13/16, 27/32]] t 0 -> 1"]
+        );
+        // x = 6s − 15s² + 10s³ turns back at s = 1/2 ∓ √5/10: three arcs against [0, 1]
+        let r = o("0 0, 2 0, -1 0, 1 0", "0 0, 1 0");
+        assert_eq!(r.len(), 3);
+        assert_eq!(r[1], "s [1/2 - 1/10*sqrt(5), 1/2 + 1/10*sqrt(5)] t 1/2 + 1/10*sqrt(5) -> 1/2 - 1/10*sqrt(5)");
+        // collinear segments end to end: a shared component that only touches, an arc of length 0
+        assert_eq!(o("0 0, 1 0", "1 0, 2 0"), ["s [1, 1] t 0 -> 0"]);
+        assert_eq!(o("0 0, 0 1", "0 1, 0 2, 0 3"), ["s [1, 1] t 0 -> 0"]);
+        // a single point on a curve: all of it matches the curve's parameter there
+        assert_eq!(o("1 1, 1 1", "0 0, 2 2"), ["s [0, 1] t 1/2 -> 1/2"]);
+        assert_eq!(o("0 0, 2 2", "1 1, 1 1, 1 1"), ["s [1/2, 1/2] t 0 -> 1"]);
+        assert!(o("5 5, 5 5", "0 0, 2 2").is_empty());
+        // a line traced back and forth overlaps itself
+        let a = rc("0 0, 2 0, -1 0, 1 0", &[1, 1, 1, 1]);
+        let r = self_intersect(&a, Domain::Unit).unwrap();
+        assert_eq!(r.overlaps.len(), 3);
+        assert!(r.overlaps.iter().all(|o| o.s[0] <= o.t[0].clone().min(o.t[1].clone())));
+        assert!(consistent(&a, &a, &r));
+    }
+
+    #[test]
+    fn improper_parametrizations_off_a_line_are_refused() {
+        // the parabola y = x² traced as (s², s⁴), against itself (s, s²): a double cover
+        let a = c("0 0, 0 0, 1/6 0, 1/2 0, 1 1");
+        let b = c("0 0, 1/2 0, 1 1");
+        let e = intersect_polynomial(&a, &b, Domain::Unit).unwrap_err().to_string();
+        assert!(e.contains("more than once"), "{e}");
+    }
+
+    fn rational_cubic() -> impl Strategy<Value = RationalBezier<BigRational>> {
+        (prop::collection::vec((-12i64..=12, -12i64..=12), 4), prop::collection::vec(1i64..=4, 4)).prop_map(|(v, w)| {
+            let pts = v.into_iter().map(|(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+            RationalBezier::new(pts, w.into_iter().map(rat).collect()).unwrap()
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// A rational cubic against a reweighted (w_i ρ^i: a Möbius reparametrization), split and
+        /// maybe reversed copy of itself: overlaps are found, their ends and the crossings are on
+        /// both curves exactly, and swapping the curves swaps the answer.
+        #[test]
+        fn overlaps_of_reparametrized_copies(
+            a in rational_cubic(),
+            rho in prop_oneof![Just((1, 2)), Just((2, 1)), Just((3, 1))],
+            u in prop_oneof![Just((1, 4)), Just((1, 2)), Just((3, 4))],
+            left in any::<bool>(),
+            reverse in any::<bool>(),
+        ) {
+            let rho = q(rho.0, rho.1);
+            let w: Vec<BigRational> = a.weights().iter().enumerate().map(|(i, w)| w * num_traits::pow(rho.clone(), i)).collect();
+            let pts: Vec<Point<BigRational>> = a.points().into_iter().map(Option::unwrap).collect();
+            let re = RationalBezier::new(pts, w).unwrap();
+            let (l, r) = re.subdivide(&q(u.0, u.1)).unwrap();
+            let mut b = if left { l } else { r };
+            if reverse {
+                let mut p: Vec<Point<BigRational>> = b.points().into_iter().map(Option::unwrap).collect();
+                let mut w = b.weights();
+                p.reverse();
+                w.reverse();
+                b = RationalBezier::new(p, w).unwrap();
+            }
+            let ab = intersect(&a, &b, Domain::Unit).unwrap();
+            let ba = intersect(&b, &a, Domain::Unit).unwrap();
+            prop_assert!(!ab.overlaps.is_empty());
+            prop_assert!(consistent(&a, &b, &ab));
+            let swap = |r: &Intersections| {
+                let mut v: Vec<[RealAlgebraic; 4]> = r.overlaps.iter().map(|o| {
+                    if o.t[0] <= o.t[1] { [o.t[0].clone(), o.t[1].clone(), o.s[0].clone(), o.s[1].clone()] }
+                    else { [o.t[1].clone(), o.t[0].clone(), o.s[1].clone(), o.s[0].clone()] }
+                }).collect();
+                v.sort();
+                v
+            };
+            let mut direct: Vec<[RealAlgebraic; 4]> = ba.overlaps.iter().map(|o| [o.s[0].clone(), o.s[1].clone(), o.t[0].clone(), o.t[1].clone()]).collect();
+            direct.sort();
+            prop_assert_eq!(swap(&ab), direct);
+            let mut x: Vec<(RealAlgebraic, RealAlgebraic)> = ab.intersections.iter().map(|i| (i.t.clone(), i.s.clone())).collect();
+            let mut y: Vec<(RealAlgebraic, RealAlgebraic)> = ba.intersections.iter().map(|i| (i.s.clone(), i.t.clone())).collect();
+            x.sort();
+            y.sort();
+            prop_assert_eq!(x, y);
+        }
+    }
+}
+
 mod winding {
     use super::*;
     use casteljau::intersect::winding::{Winding, winding_number};
@@ -349,14 +512,20 @@ mod hard_cases {
         #[test]
         fn hard_overlaps_are_reported_as_arcs(case in hard::overlap()) {
             let (a, b, u) = case;
-            match intersect_polynomial(&a, &b, Domain::Unit) {
-                Ok(x) => {
-                    prop_assert_eq!(x.overlaps.len(), 1);
-                    prop_assert_eq!(&x.overlaps[0].s, &[rat(0), u.clone()]);
-                    prop_assert_eq!(&x.overlaps[0].t, &[rat(0), rat(1)]);
-                }
-                // a cubic traced twice over (a turn-back on a line) is refused, not guessed
-                Err(e) => prop_assert!(e.to_string().contains("share a component"), "{}", e),
+            let x = intersect_polynomial(&a, &b, Domain::Unit).unwrap();
+            let unit = |c: &BezierCurve<BigRational>| RationalBezier::new(c.points().to_vec(), vec![rat(1); c.points().len()]).unwrap();
+            prop_assert!(super::overlaps::consistent(&unit(&a), &unit(&b), &x));
+            let d = |k: usize, q: &Point<BigRational>| q.coords[k].clone() - &a.points()[0].coords[k];
+            let line = a.points().iter().all(|p| a.points().iter().all(|q| d(0, p) * d(1, q) == d(1, p) * d(0, q)));
+            if line {
+                // a cubic on a line may turn back: its arcs are cut at the turning points, but
+                // together they hold the whole left piece s ∈ [0, u]
+                prop_assert!(x.overlaps.iter().any(|o| o.s[0] == RealAlgebraic::from(rat(0))));
+                prop_assert!(x.overlaps.iter().any(|o| o.s[1] == RealAlgebraic::from(u.clone())));
+            } else {
+                prop_assert_eq!(x.overlaps.len(), 1);
+                prop_assert_eq!(&x.overlaps[0].s, &[rat(0), u.clone()].map(RealAlgebraic::from));
+                prop_assert_eq!(&x.overlaps[0].t, &[rat(0), rat(1)].map(RealAlgebraic::from));
             }
         }
 

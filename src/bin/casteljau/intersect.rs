@@ -238,7 +238,10 @@ fn plot(
         let n = 64;
         let pts: Vec<(f64, f64)> = (0..=n)
             .filter_map(|k| {
-                let s = o.s[0].clone() + (o.s[1].clone() - &o.s[0]) * BigRational::new(k.into(), n.into());
+                // the drawing needs no exact ends: the correctly rounded ones, taken exactly
+                let [lo, hi] = o.s_float.map(BigRational::from_float);
+                let (lo, hi) = (lo?, hi?);
+                let s = lo.clone() + (hi - &lo) * BigRational::new(k.into(), n.into());
                 let p = a.eval(&s).ok()?.to_f64();
                 Some((p.coords[0], p.coords[1]))
             })
