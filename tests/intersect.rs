@@ -249,6 +249,18 @@ mod overlaps {
         assert_eq!(i.len(), 1);
         assert_eq!((i[0].s.to_string(), i[0].t.to_string()), ("1/2 + 1/10*sqrt(15)".into(), "1 - 1/5*sqrt(15)".into()));
         assert!(consistent(&a, &b, &r));
+        // the nodal cubic (u² − 1, u(u² − 1)) with u = (s − 2)/(s + 1): its double point is
+        // A(1/2) = A(∞); B = A((t + 2)/(1 − 3t)) passes it at t = 1/3, where s = ∞ — no shared
+        // arc inside the square, one crossing found through A's parameter at infinity
+        let a3 = rc("3 -6, 1 -1/2, -1/4 1/2, -3/4 3/8", &[1, 2, 4, 8]);
+        let b3 = rc("-1 0, -1 -7/3, 46/3 -14/3, 48 336", &[27, 9, 3, 1]);
+        for (x, y, st) in [(&a3, &b3, ("1/2", "1/3")), (&b3, &a3, ("1/3", "1/2"))] {
+            let r = intersect(x, y, Domain::Unit).unwrap();
+            assert!(r.overlaps.is_empty() && consistent(x, y, &r));
+            let got: Vec<(String, String)> =
+                r.intersections.iter().map(|i| (i.s.to_string(), i.t.to_string())).collect();
+            assert_eq!(got, [(st.0.to_string(), st.1.to_string())]);
+        }
         // a curve with itself: the whole square's diagonal, and the double point both ways
         let r = intersect(&a, &a, Domain::Unit).unwrap();
         assert_eq!(spelled(&r), ["s [0, 1] t 0 -> 1"]);
