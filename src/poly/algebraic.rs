@@ -686,6 +686,18 @@ pub(crate) mod zv {
         if a.is_empty() || b.is_empty() {
             return vec![];
         }
+        if let (Some(x), Some(y)) = (small(a), small(b)) {
+            // every product below 2^120 and at most 64 of them per sum: i128 holds it exactly
+            if x.len().min(y.len()) <= 64 {
+                let mut out = vec![0i128; x.len() + y.len() - 1];
+                for (i, &u) in x.iter().enumerate() {
+                    for (j, &v) in y.iter().enumerate() {
+                        out[i + j] += i128::from(u) * i128::from(v);
+                    }
+                }
+                return trim(out.into_iter().map(BigInt::from).collect());
+            }
+        }
         let mut out = vec![BigInt::zero(); a.len() + b.len() - 1];
         for (i, x) in a.iter().enumerate() {
             if x.is_zero() {
@@ -696,6 +708,11 @@ pub(crate) mod zv {
             }
         }
         trim(out)
+    }
+
+    /// The coefficients as `i64`s when every one is below `2^60` in magnitude.
+    fn small(a: &P) -> Option<Vec<i64>> {
+        a.iter().map(|c| if c.bits() <= 60 { num_traits::ToPrimitive::to_i64(c) } else { None }).collect()
     }
 
     pub fn sub(a: &P, b: &P) -> P {
@@ -737,6 +754,22 @@ pub(crate) mod zv {
     /// The determinant of a square matrix over `Z[v]` (Bareiss: every division is exact).
     pub fn det(mut m: Vec<Vec<P>>) -> P {
         let n = m.len();
+        // small orders by cofactors: no exact divisions (Bareiss divides by the previous pivot)
+        let minor = |m: &[Vec<P>], (i, k): (usize, usize), (j, l): (usize, usize)| {
+            sub(&mul(&m[i][j], &m[k][l]), &mul(&m[i][l], &m[k][j]))
+        };
+        match n {
+            0 => return vec![BigInt::from(1)],
+            1 => return m[0][0].clone(),
+            2 => return minor(&m, (0, 1), (0, 1)),
+            3 => {
+                let t0 = mul(&m[0][0], &minor(&m, (1, 2), (1, 2)));
+                let t1 = mul(&m[0][1], &minor(&m, (1, 2), (0, 2)));
+                let t2 = mul(&m[0][2], &minor(&m, (1, 2), (0, 1)));
+                return sub(&sub(&t0, &t1), &sub(&vec![], &t2));
+            }
+            _ => {}
+        }
         let mut negate = false;
         let mut prev: P = vec![BigInt::from(1)];
         for k in 0..n {

@@ -188,8 +188,10 @@ pub fn square_free_integer(p: Vec<BigInt>) -> Vec<BigInt> {
     if g.len() <= 1 { p } else { primitive_part(exact_quotient(p, &g)) }
 }
 
-/// Primes below 2⁶² for the modular square-free test.
-const MODULAR_PRIMES: [u64; 3] = [4_611_686_018_427_387_847, 4_611_686_018_427_387_817, 4_611_686_018_427_387_787];
+/// Primes below 2³¹ for the modular square-free test: products of two residues fit in a `u64`,
+/// so every step is one machine multiplication and remainder (a 62-bit prime needed `u128`
+/// remainders, a software division each, and cost more than the rest of the root isolation).
+const MODULAR_PRIMES: [u64; 3] = [2_147_483_647, 2_147_483_629, 2_147_483_587];
 
 /// `true` when `gcd(a mod q, b mod q)` is a non-zero constant and `q ∤ lc(a)`: then `a` and
 /// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
@@ -198,9 +200,8 @@ fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
         let mut v: Vec<u64> = p
             .iter()
             .map(|x| {
-                let r = x % BigInt::from(q);
-                let r = if r.is_negative() { r + BigInt::from(q) } else { r };
-                num_traits::ToPrimitive::to_u64(&r).expect("reduced mod q")
+                let r = crate::num::small::rem_u64(x.magnitude(), q);
+                if x.is_negative() && r != 0 { q - r } else { r }
             })
             .collect();
         while v.last() == Some(&0) {
@@ -212,18 +213,16 @@ fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
     if x.len() != a.len() || y.is_empty() {
         return false; // q divides lc(a), or b vanishes mod q: no conclusion
     }
-    let mul = |u: u64, v: u64| ((u as u128 * v as u128) % q as u128) as u64;
+    let mul = |u: u64, v: u64| u * v % q;
     let inv = |u: u64| {
-        // u^(q−2) mod q
-        let (mut base, mut e, mut acc) = (u, q - 2, 1u64);
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = mul(acc, base);
-            }
-            base = mul(base, base);
-            e >>= 1;
+        // extended Euclid on (u, q): q is prime and u ≠ 0
+        let (mut r0, mut r1, mut s0, mut s1) = (q as i64, u as i64, 0i64, 1i64);
+        while r1 != 0 {
+            let k = r0 / r1;
+            (r0, r1) = (r1, r0 - k * r1);
+            (s0, s1) = (s1, s0 - k * s1);
         }
-        acc
+        s0.rem_euclid(q as i64) as u64
     };
     if x.len() < y.len() {
         std::mem::swap(&mut x, &mut y);
