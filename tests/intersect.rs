@@ -261,6 +261,16 @@ mod overlaps {
                 r.intersections.iter().map(|i| (i.s.to_string(), i.t.to_string())).collect();
             assert_eq!(got, [(st.0.to_string(), st.1.to_string())]);
         }
+        // B = A((t + 2)/t) starts at A(∞) = A(1/2): a sample of B at the double point, where A's
+        // parameter at infinity must not be mistaken for the other branch's 1/2
+        let b4 = rc("0 0, -1/2 -1/2, -13/16 -7/16, -15/16 -15/64", &[8, 16, 32, 64]);
+        for (x, y, st) in [(&a3, &b4, ("1/2", "0")), (&b4, &a3, ("0", "1/2"))] {
+            let r = intersect(x, y, Domain::Unit).unwrap();
+            assert!(r.overlaps.is_empty() && consistent(x, y, &r));
+            let got: Vec<(String, String)> =
+                r.intersections.iter().map(|i| (i.s.to_string(), i.t.to_string())).collect();
+            assert_eq!(got, [(st.0.to_string(), st.1.to_string())]);
+        }
         // a curve with itself: the whole square's diagonal, and the double point both ways
         let r = intersect(&a, &a, Domain::Unit).unwrap();
         assert_eq!(spelled(&r), ["s [0, 1] t 0 -> 1"]);

@@ -423,7 +423,11 @@ fn mobius(fa: &Forms, fb: &Forms) -> Option<Mobius> {
         }
         // X_A(s)·w − x·W_A(s), Y_A(s)·w − y·W_A(s)
         let eq = |k: usize, c: &BigInt| zv::sub(&zv::mul(&fa[k], &vec![w.clone()]), &zv::mul(&fa[2], &vec![c.clone()]));
-        let g = gcd_integer(&eq(0, &x), &eq(1, &y));
+        let (ex, ey) = (eq(0, &x), eq(1, &y));
+        if ex.len() <= m && ey.len() <= m {
+            continue; // B(t) = A(∞): a parameter of A is at infinity, the gcd would not show it
+        }
+        let g = gcd_integer(&ex, &ey);
         if g.len() == 2 {
             pairs.push((t, BigRational::new(-g[0].clone(), g[1].clone())));
             if pairs.len() == 3 {
