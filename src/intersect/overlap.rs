@@ -398,13 +398,6 @@ fn samples() -> impl Iterator<Item = BigRational> {
     })
 }
 
-/// `Σ f_k p^k q^(n−k)`: `q^n·F(p/q)` for the forms' common degree `n`.
-fn homogeneous_at(f: &[BigInt], n: usize, p: &BigInt, q: &BigInt) -> BigInt {
-    (0..=n).fold(BigInt::zero(), |acc, k| {
-        acc + get_int(f, k) * num_traits::pow(p.clone(), k) * num_traits::pow(q.clone(), n - k)
-    })
-}
-
 /// The Möbius map relating two proper parametrizations of one curve, interpolated and proved
 /// (see the module documentation); `None` when there is none.
 fn mobius(fa: &Forms, fb: &Forms) -> Option<Mobius> {
@@ -416,14 +409,16 @@ fn mobius(fa: &Forms, fb: &Forms) -> Option<Mobius> {
     // a proper A has one parameter over every point but its singular ones and A(∞): at most
     // (m − 1)(m − 2)/2 double points with up to m parameters each, plus B's poles
     for t in samples().take(m * m * m + 2 * n + 8) {
-        let (p, q) = (t.numer(), t.denom());
-        let [x, y, w] = [0, 1, 2].map(|k| homogeneous_at(&fb[k], n, p, q));
+        let [x, y, w] = [0, 1, 2].map(|k| value_at(&fb[k], &t));
         if w.is_zero() {
             continue;
         }
-        // X_A(s)·w − x·W_A(s), Y_A(s)·w − y·W_A(s)
-        let eq = |k: usize, c: &BigInt| zv::sub(&zv::mul(&fa[k], &vec![w.clone()]), &zv::mul(&fa[2], &vec![c.clone()]));
-        let (ex, ey) = (eq(0, &x), eq(1, &y));
+        // X_A(s)·w − x·W_A(s) and Y_A(s)·w − y·W_A(s), times the denominators
+        let eq = |c: &BigRational, k: usize| {
+            let (cw, wc) = (c.denom() * w.numer(), c.numer() * w.denom());
+            zv::sub(&zv::mul(&fa[k], &vec![cw]), &zv::mul(&fa[2], &vec![wc]))
+        };
+        let (ex, ey) = (eq(&x, 0), eq(&y, 1));
         if ex.len() <= m && ey.len() <= m {
             continue; // B(t) = A(∞): a parameter of A is at infinity, the gcd would not show it
         }

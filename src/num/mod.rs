@@ -17,6 +17,13 @@ pub use point::Point;
 pub use quadratic_field::{QuadraticExt, Radical};
 pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};
 
+/// Deterministic pseudo-random integers in `[−m, m]` for tests, from [`xorshift`] words.
+#[cfg(test)]
+pub(crate) fn symmetric(seed: u64) -> impl FnMut(i64) -> i64 {
+    let mut word = xorshift(seed);
+    move |m| (word() % (2 * m as u64 + 1)) as i64 - m
+}
+
 /// Deterministic pseudo-random words for tests (xorshift64; `seed` non-zero).
 #[cfg(test)]
 pub(crate) fn xorshift(seed: u64) -> impl FnMut() -> u64 {

@@ -1391,11 +1391,7 @@ mod tests {
     /// real root of random integer polynomials of degree 2 to 9 (wide and clustered roots).
     #[test]
     fn to_f64_cell_proof_matches_bisection() {
-        let mut word = crate::num::xorshift(0x2545_F491_4F6C_DD1D);
-        let mut next = move |m: u64| {
-            let x = word();
-            (x % (2 * m + 1)) as i64 - m as i64
-        };
+        let mut next = crate::num::symmetric(0x2545_F491_4F6C_DD1D);
         let (mut checked, mut fast, mut newton, mut irrational) = (0, 0, 0, 0);
         for round in 0..120 {
             let n = 2 + round % 8;
@@ -1422,11 +1418,7 @@ mod tests {
     /// integer polynomials and random rational maps of degree ≤ 3.
     #[test]
     fn rounded_image_matches_the_exact_image() {
-        let mut word = crate::num::xorshift(0x9E37_79B9_7F4A_7C15);
-        let mut next = move |m: i64| {
-            let x = word();
-            (x % (2 * m as u64 + 1)) as i64 - m
-        };
+        let mut next = crate::num::symmetric(0x9E37_79B9_7F4A_7C15);
         let (mut checked, mut fast, mut irrational) = (0, 0, 0);
         for round in 0..60 {
             let n = 2 + round % 6;
