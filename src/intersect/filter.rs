@@ -80,6 +80,57 @@ pub(super) fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>;
     p[0].apart(q[0]) || p[1].apart(q[1])
 }
 
+/// The largest formal degree in `u` for which [`no_common_root`] decides (its determinant is
+/// expanded by cofactors).
+pub(super) const MAX_BEZOUT_ORDER: usize = 4;
+
+/// The polynomials `f(x, u)` and `g(x, u)` in `u` (coefficients in `Z[x]`, lowest first, of
+/// formal degree `m ≤` [`MAX_BEZOUT_ORDER`]) provably have no common root `u`, complex ones
+/// included, at the real number `x` (pass a copy narrowed by
+/// [`RealAlgebraic::narrowed_with_f64`]): the `m × m` Bézout matrix `B` of `f(x, ·)` and
+/// `g(x, ·)` — `f(u)g(v) − f(v)g(u) = (u − v)·Σ B_ij u^i v^j` — enclosed over `x`'s interval, has
+/// a determinant that keeps away from 0. A common root `u₀` would make the row vector
+/// `(u₀^i)` a left null vector of `B` (the left side vanishes for every `v`), so `det B = 0`.
+/// False when that is not shown (the exact route decides then).
+pub(super) fn no_common_root(f: &[Vec<BigInt>], g: &[Vec<BigInt>], x: &RealAlgebraic) -> bool {
+    let m = f.len().max(g.len()).saturating_sub(1);
+    if m == 0 || m > MAX_BEZOUT_ORDER {
+        return false;
+    }
+    let (lo, hi) = x.interval();
+    let (lo, hi) = (crate::num::scalar::ratio_to_f64(&lo), crate::num::scalar::ratio_to_f64(&hi));
+    let xe = Enclosure(lo.next_down(), hi.next_up());
+    let zero = Enclosure(0.0, 0.0);
+    let at = |p: &[Vec<BigInt>], k: usize| p.get(k).map_or(zero, |c| enclose(c, xe));
+    let (a, b): (Vec<Enclosure>, Vec<Enclosure>) = (0..=m).map(|k| (at(f, k), at(g, k))).unzip();
+    // B_(i−1)j = P_ij + B_i(j−1), P_ij = a_i b_j − a_j b_i (as for the exact Bézoutian)
+    let mut bz = vec![vec![zero; m + 1]; m + 1];
+    for j in 0..=m {
+        for i in (1..=m).rev() {
+            let prev = if j > 0 { bz[i][j - 1] } else { zero };
+            bz[i - 1][j] = a[i].mul(b[j]).add(a[j].mul(b[i]).neg()).add(prev);
+        }
+    }
+    let d = det(&bz[..m].iter().map(|r| r[..m].to_vec()).collect::<Vec<_>>());
+    d.0 > 0.0 || d.1 < 0.0
+}
+
+/// The determinant of a small square matrix of enclosures, by cofactors along the first row.
+fn det(m: &[Vec<Enclosure>]) -> Enclosure {
+    match m.len() {
+        0 => Enclosure(1.0, 1.0),
+        1 => m[0][0],
+        n => (0..n).fold(Enclosure(0.0, 0.0), |acc, j| {
+            let minor: Vec<Vec<Enclosure>> = m[1..]
+                .iter()
+                .map(|r| r.iter().enumerate().filter(|&(k, _)| k != j).map(|(_, e)| *e).collect())
+                .collect();
+            let term = m[0][j].mul(det(&minor));
+            if j % 2 == 0 { acc.add(term) } else { acc.add(term.neg()) }
+        }),
+    }
+}
+
 /// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator (interval Newton) on
 /// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` over a small box around an
 /// `f64` Newton solution (from `start`, the two parameters rounded) inside the isolating

@@ -301,21 +301,45 @@ struct Side<'a> {
     /// [`RealAlgebraic::degree_lower_bound`] of the parameters' polynomial (shared by every
     /// irrational root of one resultant), computed on first use.
     bound: std::cell::OnceCell<usize>,
+    /// The divided differences `D_X`, `D_Y` of [`Side::irrational_at`] ([`divided_difference`]),
+    /// computed on first use.
+    partner: std::cell::OnceCell<[Vec<zv::P>; 2]>,
 }
 
 impl<'a> Side<'a> {
     fn new(f: &'a [Vec<BigInt>; 3]) -> Self {
         let n = f.iter().map(Vec::len).max().unwrap_or(1);
-        Side { f, degree: n.saturating_sub(1), moves: !overlap::is_point(f), bound: std::cell::OnceCell::new() }
+        Side {
+            f,
+            degree: n.saturating_sub(1),
+            moves: !overlap::is_point(f),
+            bound: std::cell::OnceCell::new(),
+            partner: std::cell::OnceCell::new(),
+        }
     }
 
-    /// The point at `x` is provably irrational: a moving coordinate `X/W = r` (rational) would
-    /// make `x` a root of `X − rW`, a non-zero polynomial of degree ≤ the curve's, so a
-    /// parameter of higher degree over `Q` has an irrational image.
-    fn irrational_at(&self, x: &RealAlgebraic) -> bool {
-        x.to_rational().is_none()
-            && self.moves
-            && *self.bound.get_or_init(|| x.degree_lower_bound(self.degree + 1)) > self.degree
+    /// The point at the irrational `x` (`narrow`: the same number, a tight interval) is
+    /// provably irrational. Were it a rational point `P`, `x` would be a root of `X − P_x W` and
+    /// `Y − P_y W`, so every conjugate `u ≠ x` of `x` (there is one: `x` is irrational) would be
+    /// one too, and the curve would pass through `P` at `u`: the divided differences
+    /// `D_F(x, u) = (F(x)W(u) − F(u)W(x))/(x − u)` (`F = X, Y`) would share the root `u`. So
+    /// [`filter::no_common_root`] at `x` proves it (curves of degree ≤ 5; `f64` enclosures).
+    /// Else the degree of `x`: `P` rational makes it at most the curve's degree, so a lower bound
+    /// above that proves it ([`RealAlgebraic::degree_lower_bound`], a factorization modulo
+    /// primes: dearer).
+    fn irrational_at(&self, x: &RealAlgebraic, narrow: &RealAlgebraic) -> bool {
+        if x.to_rational().is_some() || !self.moves {
+            return false;
+        }
+        if self.degree <= filter::MAX_BEZOUT_ORDER + 1 {
+            let [dx, dy] = self.partner.get_or_init(|| {
+                [divided_difference(&self.f[0], &self.f[2]), divided_difference(&self.f[1], &self.f[2])]
+            });
+            if filter::no_common_root(dx, dy, narrow) {
+                return true;
+            }
+        }
+        *self.bound.get_or_init(|| x.degree_lower_bound(self.degree + 1)) > self.degree
     }
 
     /// The point at `x`, correctly rounded.
@@ -329,10 +353,8 @@ impl<'a> Side<'a> {
 /// rational parameter, an irrationality proof ([`Side::irrational_at`]), or the exact point
 /// (computed once per root, `cached`).
 fn common_point(
-    a: &Side,
-    s: &RealAlgebraic,
-    b: &Side,
-    t: &RealAlgebraic,
+    (a, s, sn): (&Side, &RealAlgebraic, &RealAlgebraic),
+    (b, t, tn): (&Side, &RealAlgebraic, &RealAlgebraic),
     cached: &mut Option<[RealAlgebraic; 2]>,
 ) -> Option<Point<BigRational>> {
     if let Some(x) = s.to_rational() {
@@ -342,8 +364,9 @@ fn common_point(
         return Some(point_at_rational(b.f, x));
     }
     // the curve of lower degree first: its proof asks less (a line's, nothing beyond irrationality)
-    let ((c, x), (d, y)) = if a.degree <= b.degree { ((a, s), (b, t)) } else { ((b, t), (a, s)) };
-    if c.irrational_at(x) || d.irrational_at(y) {
+    let ((c, x, xn), (d, y, yn)) =
+        if a.degree <= b.degree { ((a, s, sn), (b, t, tn)) } else { ((b, t, tn), (a, s, sn)) };
+    if c.irrational_at(x, xn) || d.irrational_at(y, yn) {
         return None;
     }
     rational_point(cached.get_or_insert_with(|| point_at(a.f, s)))
@@ -531,7 +554,11 @@ fn intersect_forms(
                 out.push(Intersection {
                     s_float,
                     t_float,
-                    point: common_point(&side_a, s, &side_b, t, &mut pa[i]),
+                    point: common_point(
+                        (&side_a, s, na[i].as_ref().map_or(s, |n| &n.0)),
+                        (&side_b, t, nb[j].as_ref().map_or(t, |n| &n.0)),
+                        &mut pa[i],
+                    ),
                     point_float: side_a.point_float(na[i].as_ref().map_or(s, |n| &n.0)),
                     kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
                     contact_order: order,
@@ -808,6 +835,52 @@ mod filter_tests {
         }
         // the proof may decline a crossing (the exact comparison then decides), but not most
         assert!(crossings > 0 && 4 * proved >= 3 * crossings, "{proved} of {crossings} crossings proved");
+    }
+
+    /// The divided-difference proof that a point is irrational ([`Side::irrational_at`]) never
+    /// errs, checked against the exact point: on random rational cubics every irrational root of
+    /// a resultant with a line (whose intersections are a double point or not); and it declines
+    /// at the double point `(0, 0)` of `(s² − 2, s³ − 2s)`, reached at `s = ±√2`.
+    #[test]
+    fn irrational_point_proof_agrees_with_exact_points() {
+        let b = |v: &[i64]| v.iter().map(|&c| BigInt::from(c)).collect::<Vec<_>>();
+        let nodal = [b(&[-2, 0, 1]), b(&[0, -2, 0, 1]), b(&[1])];
+        let side = Side::new(&nodal);
+        let sqrt2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
+        let (narrow, _) = sqrt2.narrowed_with_f64();
+        assert!(!filter::no_common_root(
+            &divided_difference(&nodal[0], &nodal[2]),
+            &divided_difference(&nodal[1], &nodal[2]),
+            &narrow
+        ));
+        assert!(!side.irrational_at(&sqrt2, &narrow));
+        let sqrt3 = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
+        assert!(side.irrational_at(&sqrt3, &sqrt3.narrowed_with_f64().0)); // (1, √3)
+        let mut next = crate::num::symmetric(0x2545_F491_4F6C_DD1D);
+        let mut proved = 0;
+        for _ in 0..40 {
+            let f: [Vec<BigInt>; 3] = [
+                b(&[next(9), next(9), next(9), next(9)]),
+                b(&[next(9), next(9), next(9), next(9)]),
+                b(&[next(3).abs() + 1, next(2), next(2)]),
+            ];
+            let line = [b(&[next(9), next(9)]), b(&[next(9), next(9)]), b(&[1])];
+            let r = eliminate(&f, &line);
+            if r.is_empty() {
+                continue;
+            }
+            let side = Side::new(&f);
+            for x in roots(&r, Domain::All).0.into_iter().filter(|x| x.to_rational().is_none()) {
+                if x.sign_of(&to_rational(&f[2])) == Ordering::Equal {
+                    continue;
+                }
+                if side.irrational_at(&x, &x.narrowed_with_f64().0) {
+                    assert!(rational_point(&point_at(&f, &x)).is_none(), "proved irrational, but rational at {x}");
+                    proved += 1;
+                }
+            }
+        }
+        assert!(proved > 20, "{proved} irrational points proved");
     }
 
     /// The subdivision filter never changes an answer: random font-like pairs, and pairs that
