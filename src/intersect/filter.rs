@@ -267,46 +267,101 @@ impl Enclosure {
     }
 }
 
-/// A homogeneous control polygon `(wᵢxᵢ, wᵢyᵢ, wᵢ)`, enclosed.
-type Polygon = Vec<[Enclosure; 3]>;
+/// The most control points a curve handed to [`candidate_regions`] has.
+const MAX_POINTS: usize = super::MAX_INTERSECT_DEGREE + 1;
 
-/// The two halves of a control polygon at `t = 1/2` (de Casteljau), enclosed.
-fn halves(c: &[[Enclosure; 3]]) -> (Polygon, Polygon) {
-    let mut row: Polygon = c.to_vec();
-    let (mut left, mut right) = (Vec::with_capacity(c.len()), Vec::with_capacity(c.len()));
-    left.push(row[0]);
-    right.push(row[row.len() - 1]);
-    while row.len() > 1 {
-        row = row.windows(2).map(|w| std::array::from_fn(|k| w[0][k].midpoint(w[1][k]))).collect();
-        left.push(row[0]);
-        right.push(row[row.len() - 1]);
-    }
-    right.reverse();
-    (left, right)
+/// A homogeneous control polygon `(wᵢxᵢ, wᵢyᵢ, wᵢ)`, enclosed: the first `len` points.
+#[derive(Clone, Copy)]
+struct Polygon {
+    len: usize,
+    points: [[Enclosure; 3]; MAX_POINTS],
 }
 
-/// The bounding box of the projected control points `(wx/w, wy/w)`: it holds the curve when
-/// every weight is positive (convex hull property). `None` when an enclosure says nothing.
-fn bounding_box(c: &[[Enclosure; 3]]) -> Option<[Enclosure; 2]> {
-    let mut out: Option<[Enclosure; 2]> = None;
-    for p in c {
-        let q = [p[0].div(p[2]), p[1].div(p[2])];
-        if q.iter().any(|e| e.0.is_nan() || e.1.is_nan() || !e.0.is_finite() || !e.1.is_finite()) {
-            return None;
-        }
-        out = Some(match out {
-            None => q,
-            Some(b) => [b[0].hull(q[0]), b[1].hull(q[1])],
-        });
+impl Polygon {
+    fn points(&self) -> &[[Enclosure; 3]] {
+        &self.points[..self.len]
     }
-    out
+
+    /// The two halves at `t = 1/2` (de Casteljau), enclosed.
+    fn halves(&self) -> (Polygon, Polygon) {
+        let (mut left, mut right) = (*self, *self);
+        let mut row = self.points;
+        let n = self.len;
+        left.points[0] = row[0];
+        right.points[n - 1] = row[n - 1];
+        for level in 1..n {
+            for i in 0..n - level {
+                row[i] = std::array::from_fn(|k| row[i][k].midpoint(row[i + 1][k]));
+            }
+            left.points[level] = row[0];
+            right.points[n - 1 - level] = row[n - 1 - level];
+        }
+        (left, right)
+    }
+
+    /// The bounding box of the projected control points `(wx/w, wy/w)`: it holds the curve when
+    /// every weight is positive (convex hull property). `None` when an enclosure says nothing.
+    fn bounding_box(&self) -> Option<[Enclosure; 2]> {
+        let mut out: Option<[Enclosure; 2]> = None;
+        for p in self.points() {
+            let q = [p[0].div(p[2]), p[1].div(p[2])];
+            if q.iter().any(|e| !e.0.is_finite() || !e.1.is_finite()) {
+                return None;
+            }
+            out = Some(match out {
+                None => q,
+                Some(b) => [b[0].hull(q[0]), b[1].hull(q[1])],
+            });
+        }
+        out
+    }
 }
 
 /// At most this many pairs of pieces are compared by [`candidate_regions`].
-const PIECE_PAIRS: usize = 48;
+const PIECE_PAIRS: usize = 128;
 
-/// A parameter interval `[k/2^d, (k+1)/2^d]` of a piece, as `(k, d)`.
-type Piece = (u64, u32);
+/// Pieces are halved at most this often, so that their ends `k/2^d` are exact `f64`s.
+const MAX_DEPTH: u32 = 52;
+
+/// A parameter interval `[k/2^d, (k+1)/2^d]` of a curve, its control polygon and bounding box,
+/// and its halves once made (indices into the same arena).
+struct Piece {
+    polygon: Polygon,
+    bbox: Option<[Enclosure; 2]>,
+    k: u64,
+    d: u32,
+    halves: Option<(usize, usize)>,
+}
+
+impl Piece {
+    fn new(polygon: Polygon, k: u64, d: u32) -> Self {
+        Piece { bbox: polygon.bounding_box(), polygon, k, d, halves: None }
+    }
+
+    fn size(&self) -> f64 {
+        self.bbox.map_or(f64::INFINITY, |b| b[0].width().max(b[1].width()))
+    }
+
+    /// `[k/2^d, (k+1)/2^d]`, exactly.
+    fn ends(&self) -> [f64; 2] {
+        let scale = (1u64 << self.d) as f64;
+        [self.k as f64 / scale, (self.k + 1) as f64 / scale]
+    }
+}
+
+/// The halves of `arena[i]`, made on first use.
+fn halves_of(arena: &mut Vec<Piece>, i: usize) -> (usize, usize) {
+    if let Some(h) = arena[i].halves {
+        return h;
+    }
+    let (l, r) = arena[i].polygon.halves();
+    let (k, d) = (arena[i].k, arena[i].d);
+    arena.push(Piece::new(l, 2 * k, d + 1));
+    arena.push(Piece::new(r, 2 * k + 1, d + 1));
+    let h = (arena.len() - 2, arena.len() - 1);
+    arena[i].halves = Some(h);
+    h
+}
 
 /// What the subdivision filter found about two curves on `[0, 1]²`.
 #[derive(Debug)]
@@ -325,52 +380,56 @@ pub(super) enum Regions {
 
 /// The subdivision filter on curves with homogeneous control points `a` and `b` (weights
 /// positive): pairs of pieces are compared by bounding boxes (which hold the pieces, by the
-/// convex hull property), the larger piece halved while they overlap. Pairs with disjoint boxes
-/// hold no common point; after [`PIECE_PAIRS`] comparisons the pairs left over hold every one.
-/// Boxes that touch do not count as disjoint, so hits at ends are never filtered out.
+/// convex hull property), breadth first, the larger piece halved while they overlap (each piece
+/// halved once, its halves shared by every pair it is in). Pairs with disjoint boxes hold no
+/// common point; after [`PIECE_PAIRS`] comparisons the pairs left over hold every one. Boxes
+/// that touch do not count as disjoint, so hits at ends are never filtered out.
 pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) -> Regions {
     let enclosed = |rows: &[[BigRational; 3]]| -> Option<Polygon> {
-        rows.iter()
-            .map(|r| {
-                let e: [Enclosure; 3] = std::array::from_fn(|k| Enclosure::of_rational(&r[k]));
-                (e[2].0 > 0.0).then_some(e)
-            })
-            .collect()
+        if rows.is_empty() || rows.len() > MAX_POINTS {
+            return None;
+        }
+        let mut p = Polygon { len: rows.len(), points: [[Enclosure(0.0, 0.0); 3]; MAX_POINTS] };
+        for (q, r) in p.points.iter_mut().zip(rows) {
+            *q = std::array::from_fn(|k| Enclosure::of_rational(&r[k]));
+            if !(q[2].0 > 0.0) {
+                return None;
+            }
+        }
+        Some(p)
     };
     let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else { return Regions::Anywhere };
-    let mut stack: Vec<(Polygon, Piece, Polygon, Piece)> = vec![(a, (0, 0), b, (0, 0))];
-    let mut left: Vec<(Piece, Piece)> = vec![];
+    let mut arena = vec![Piece::new(a, 0, 0), Piece::new(b, 0, 0)];
+    let mut queue = std::collections::VecDeque::from([(0usize, 1usize)]);
+    let mut left: Vec<(usize, usize)> = vec![];
     let mut compared = 0;
-    while let Some((a, ia, b, ib)) = stack.pop() {
+    while let Some((i, j)) = queue.pop_front() {
         compared += 1;
-        let (Some(ba), Some(bb)) = (bounding_box(&a), bounding_box(&b)) else { return Regions::Anywhere };
+        let (Some(ba), Some(bb)) = (arena[i].bbox, arena[j].bbox) else { return Regions::Anywhere };
         if ba[0].apart(bb[0]) || ba[1].apart(bb[1]) {
             continue;
         }
-        if compared >= PIECE_PAIRS {
-            left.push((ia, ib));
+        let split_a = arena[i].size() >= arena[j].size();
+        let depth = if split_a { arena[i].d } else { arena[j].d };
+        if compared >= PIECE_PAIRS || depth >= MAX_DEPTH {
+            left.push((i, j));
             continue;
         }
-        let size = |b: &[Enclosure; 2]| b[0].width().max(b[1].width());
-        if size(&ba) >= size(&bb) {
-            let (l, r) = halves(&a);
-            stack.push((r, (2 * ia.0 + 1, ia.1 + 1), b.clone(), ib));
-            stack.push((l, (2 * ia.0, ia.1 + 1), b, ib));
+        if split_a {
+            let (l, r) = halves_of(&mut arena, i);
+            queue.extend([(l, j), (r, j)]);
         } else {
-            let (l, r) = halves(&b);
-            stack.push((a.clone(), ia, r, (2 * ib.0 + 1, ib.1 + 1)));
-            stack.push((a, ia, l, (2 * ib.0, ib.1 + 1)));
+            let (l, r) = halves_of(&mut arena, j);
+            queue.extend([(i, l), (i, r)]);
         }
     }
     if left.is_empty() {
         return Regions::Apart;
     }
-    // depth ≤ PIECE_PAIRS < 53: the piece ends are exact f64s
-    let ends = |(k, d): Piece| [k as f64 / (1u64 << d) as f64, (k + 1) as f64 / (1u64 << d) as f64];
     let boxes = left
         .iter()
-        .map(|&(a, b)| {
-            let (s, t) = (ends(a), ends(b));
+        .map(|&(i, j)| {
+            let (s, t) = (arena[i].ends(), arena[j].ends());
             [s[0], s[1], t[0], t[1]]
         })
         .collect();
