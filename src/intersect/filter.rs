@@ -392,7 +392,7 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         let mut p = Polygon { len: rows.len(), points: [[Enclosure(0.0, 0.0); 3]; MAX_POINTS] };
         for (q, r) in p.points.iter_mut().zip(rows) {
             *q = std::array::from_fn(|k| Enclosure::of_rational(&r[k]));
-            if !(q[2].0 > 0.0) {
+            if q[2].0.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return None;
             }
         }
