@@ -94,7 +94,7 @@ fn algebraic_floats_are_correctly_rounded_against_a_decimal_oracle() {
 #[test]
 fn algebraic_display_spells_rationals_quadratics_and_general_roots() {
     let r = RealAlgebraic::real_roots(&[rat(-1), rat(-3), rat(0), rat(1)]);
-    assert_eq!(r[2].to_string(), "root 3 of t^3 - 3*t - 1 in [15/8, 245/128]");
+    assert_eq!(r[2].to_string(), "root 3 of t^3 - 3*t - 1 in [15/8, 31/16]");
     let q = RealAlgebraic::real_roots(&[rat(1), rat(-4), rat(2)]); // 2t² − 4t + 1
     assert_eq!(q[0].to_string(), "1 - 1/2*sqrt(2)");
     assert_eq!(serde_json::to_string(&q[1]).unwrap(), "\"1 + 1/2*sqrt(2)\"");

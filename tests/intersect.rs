@@ -279,7 +279,7 @@ mod overlaps {
         // of degree 1) against the segment [1, 3]
         assert_eq!(
             o("0 0, 1 0, 2 0, 4 0", "1 0, 3 0"),
-            ["s [root 1 of t^3 + 3*t - 1 in [5/16, 11/32], root 1 of t^3 + 3*t - 3 in [13/16, 27/32]] t 0 -> 1"]
+            ["s [root 1 of t^3 + 3*t - 1 in [5/16, 3/8], root 1 of t^3 + 3*t - 3 in [13/16, 7/8]] t 0 -> 1"]
         );
         // x = 6s − 15s² + 10s³ turns back at s = 1/2 ∓ √5/10: three arcs against [0, 1]
         let r = o("0 0, 2 0, -1 0, 1 0", "0 0, 1 0");

@@ -435,3 +435,176 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         .collect();
     Regions::Within { boxes }
 }
+
+/// Enclosures of an integer polynomial's coefficients (lowest first), made once so that
+/// evaluations convert nothing.
+pub(super) struct Coeffs(Vec<Enclosure>);
+
+impl Coeffs {
+    pub(super) fn new(p: &[BigInt]) -> Self {
+        Coeffs(p.iter().map(Enclosure::of_integer).collect())
+    }
+
+    /// An enclosure of the polynomial over `x` (Horner).
+    fn at(&self, x: Enclosure) -> Enclosure {
+        self.0.iter().rev().fold(Enclosure(0.0, 0.0), |acc, &c| acc.mul(x).add(c))
+    }
+
+    /// The polynomial provably keeps away from 0 on `[lo, hi]`.
+    pub(super) fn nonzero_on(&self, lo: f64, hi: f64) -> bool {
+        let v = self.at(Enclosure(lo.next_down(), hi.next_up()));
+        v.0 > 0.0 || v.1 < 0.0
+    }
+}
+
+/// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` for two polynomial curves
+/// (constant weights `w_A`, `w_B` of the integer forms), whose zeros are the intersections, as
+/// enclosures: the four polynomials and their derivatives.
+pub(super) struct System {
+    /// `X_A·w_B`, `Y_A·w_B` (in σ), `X_B·w_A`, `Y_B·w_A` (in τ).
+    p: [Coeffs; 4],
+    /// Their derivatives.
+    d: [Coeffs; 4],
+}
+
+/// A box `[σ, τ]`.
+pub(super) type Box2 = [Enclosure; 2];
+
+impl System {
+    /// `None` for curves with a weight that is not constant.
+    pub(super) fn new(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> Option<Self> {
+        if fa[2].len() != 1 || fb[2].len() != 1 {
+            return None;
+        }
+        let (wa, wb) = (&fa[2][0], &fb[2][0]);
+        let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
+        let polys = [scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa)];
+        let deriv = crate::poly::polynomial::derivative_integer;
+        Some(System {
+            p: std::array::from_fn(|k| Coeffs::new(&polys[k])),
+            d: std::array::from_fn(|k| Coeffs::new(&deriv(&polys[k]))),
+        })
+    }
+
+    fn f(&self, x: Box2) -> [Enclosure; 2] {
+        [self.p[0].at(x[0]).add(self.p[2].at(x[1]).neg()), self.p[1].at(x[0]).add(self.p[3].at(x[1]).neg())]
+    }
+
+    fn jacobian(&self, x: Box2) -> [[Enclosure; 2]; 2] {
+        [[self.d[0].at(x[0]), self.d[2].at(x[1]).neg()], [self.d[1].at(x[0]), self.d[3].at(x[1]).neg()]]
+    }
+
+    /// Krawczyk's operator on the box `x`: `K = m − Y·F(m) + (I − Y·J(x))·(x − m)`, `m` the
+    /// midpoint, `Y` an `f64` inverse of `J(m)` (any matrix keeps the proof valid). Every zero of
+    /// `F` in `x` lies in `K`; `K` inside the interior of `x` proves exactly one zero there (and
+    /// a non-singular Jacobian at it). `None` when `J(m)` cannot be inverted.
+    fn krawczyk(&self, x: Box2) -> Option<Box2> {
+        let mid = |e: Enclosure| {
+            let m = e.0 + (e.1 - e.0) / 2.0;
+            Enclosure(m, m)
+        };
+        let m = [mid(x[0]), mid(x[1])];
+        let fm = self.f(m);
+        let jm = self.jacobian(m);
+        let c = |e: Enclosure| (e.0 + e.1) / 2.0;
+        let (a, b, cc, d) = (c(jm[0][0]), c(jm[0][1]), c(jm[1][0]), c(jm[1][1]));
+        let det = a * d - b * cc;
+        let y = [[d / det, -b / det], [-cc / det, a / det]];
+        if det == 0.0 || y.iter().flatten().any(|v| !v.is_finite()) {
+            return None;
+        }
+        let yk = |r: usize, k: usize| Enclosure(y[r][k], y[r][k]);
+        let j = self.jacobian(x);
+        let dx = [x[0].add(m[0].neg()), x[1].add(m[1].neg())];
+        let k: Box2 = std::array::from_fn(|r| {
+            let yf = yk(r, 0).mul(fm[0]).add(yk(r, 1).mul(fm[1]));
+            let mut k_r = m[r].add(yf.neg());
+            for (col, dxk) in dx.iter().enumerate() {
+                let yj = yk(r, 0).mul(j[0][col]).add(yk(r, 1).mul(j[1][col]));
+                let delta = Enclosure(f64::from(u8::from(r == col)), f64::from(u8::from(r == col)));
+                k_r = k_r.add(delta.add(yj.neg()).mul(*dxk));
+            }
+            k_r
+        });
+        (!k.iter().any(|e| e.0.is_nan() || e.1.is_nan())).then_some(k)
+    }
+}
+
+/// At most this many boxes are examined by [`solve`].
+const SOLVER_STEPS: usize = 96;
+
+/// Every zero of the system in the closed `boxes` (`[σ_lo, σ_hi, τ_lo, τ_hi]`, the
+/// [`Regions::Within`] ones): each box is proved empty (`F` keeps away from 0 on it, or
+/// Krawczyk's operator misses it), proved to hold exactly one zero (the operator maps it into
+/// its interior; the box is then shrunk by `x ← K(x) ∩ x`, which keeps the zero), or halved.
+/// The returned boxes each hold exactly one zero, at which the curves cross transversally (two
+/// boxes may hold the same zero, when it lies on an edge they share). `None` when
+/// [`SOLVER_STEPS`] examinations do not settle every box (a tangency, a zero on an edge of the
+/// square): the exact route decides then.
+pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
+    let mut stack: Vec<Box2> = boxes.iter().map(|b| [Enclosure(b[0], b[1]), Enclosure(b[2], b[3])]).collect();
+    let mut zeros = vec![];
+    let mut steps = 0;
+    while let Some(x) = stack.pop() {
+        steps += 1;
+        if steps > SOLVER_STEPS {
+            return None;
+        }
+        let f = sys.f(x);
+        if f.iter().any(|e| e.0 > 0.0 || e.1 < 0.0) {
+            continue; // F keeps away from 0
+        }
+        let k = sys.krawczyk(x);
+        if let Some(k) = k {
+            if k[0].apart(x[0]) || k[1].apart(x[1]) {
+                continue; // no zero
+            }
+            if (0..2).all(|r| k[r].0 > x[r].0 && k[r].1 < x[r].1) {
+                zeros.push(shrink(sys, k));
+                continue;
+            }
+        }
+        // halve the wider side (of x ∩ K, which holds every zero of x)
+        let y: Box2 = match k {
+            Some(k) => std::array::from_fn(|r| Enclosure(x[r].0.max(k[r].0), x[r].1.min(k[r].1))),
+            None => x,
+        };
+        let r = usize::from(y[1].width() > y[0].width());
+        let m = y[r].0 + (y[r].1 - y[r].0) / 2.0;
+        if y[r].0.partial_cmp(&m) != Some(std::cmp::Ordering::Less)
+            || m.partial_cmp(&y[r].1) != Some(std::cmp::Ordering::Less)
+        {
+            return None; // cannot be halved in f64
+        }
+        let (mut lo, mut hi) = (y, y);
+        lo[r] = Enclosure(y[r].0, m);
+        hi[r] = Enclosure(m, y[r].1);
+        stack.extend([hi, lo]);
+    }
+    Some(zeros)
+}
+
+/// A box holding exactly one zero, shrunk by `x ← K(x) ∩ x` (every zero of `x` lies in `K(x)`)
+/// while that gains.
+fn shrink(sys: &System, mut x: Box2) -> Box2 {
+    for _ in 0..8 {
+        let Some(k) = sys.krawczyk(x) else { break };
+        let y: Box2 = std::array::from_fn(|r| Enclosure(x[r].0.max(k[r].0), x[r].1.min(k[r].1)));
+        if y.iter().any(|e| e.0.partial_cmp(&e.1).is_none_or(|o| o == std::cmp::Ordering::Greater)) {
+            break;
+        }
+        let gain = y[0].width() < x[0].width() * 0.5 || y[1].width() < x[1].width() * 0.5;
+        x = y;
+        if !gain {
+            break;
+        }
+    }
+    x
+}
+
+impl Enclosure {
+    /// The ends.
+    pub(super) fn ends(self) -> (f64, f64) {
+        (self.0, self.1)
+    }
+}

@@ -492,6 +492,11 @@ fn intersect_forms(
         return overlap::overlap(fa, fb, domain);
     }
     let t_poly = eliminate(fb, fa);
+    if let Regions::Within { boxes } = regions
+        && let Some(found) = solved_in_boxes(fa, fb, &r, &t_poly, boxes)
+    {
+        return Ok(found);
+    }
     // with every real parameter allowed, a root where a weight vanishes is a common point at
     // infinity, not an intersection in the plane
     let ((ss, r_simple), (ts, t_simple)) = (roots(&r, domain), roots(&t_poly, domain));
@@ -569,6 +574,99 @@ fn intersect_forms(
         }
     }
     Ok(Intersections { intersections: out, overlaps: vec![] })
+}
+
+/// The fast route of [`intersect_forms`] for polynomial curves on the unit square (resultants
+/// `r` in `s` and `t_poly` in `t`, non-zero): the filter's candidate `boxes` solved by
+/// [`filter::solve`] (each proved empty or holding exactly one transversal crossing), then
+/// each crossing's parameters made exact without isolating the resultants' roots: the
+/// square-free part `p` of a resultant vanishes at the crossing's parameter `σ` (the system has
+/// a common root there); when `p` has no rational root and `p′` keeps its sign on the crossing's
+/// box and on the rounding cell of an `f64` `u` near `σ` (the `f64`s nearer to `u` than to its
+/// neighbours), and `p` changes sign across that cell, the cell holds exactly one root of `p`,
+/// and it is `σ`: so `σ` is that root, `u` is `σ` correctly rounded, and the cell is an
+/// isolating interval. `None` (the exact route decides) whenever a step is not proved, or the
+/// resultants are both not square-free (contact orders then come from multiplicities).
+fn solved_in_boxes(
+    fa: &[Vec<BigInt>; 3],
+    fb: &[Vec<BigInt>; 3],
+    r: &[BigInt],
+    t_poly: &[BigInt],
+    boxes: &[[f64; 4]],
+) -> Option<Intersections> {
+    use crate::poly::polynomial::{derivative_integer, primitive_part, square_free_integer};
+    let sys = filter::System::new(fa, fb)?;
+    let zeros = filter::solve(&sys, boxes)?;
+    if zeros.is_empty() {
+        return Some(Intersections { intersections: vec![], overlaps: vec![] });
+    }
+    let square_free = |p: &[BigInt]| {
+        let p = primitive_part(p.to_vec());
+        let sf = square_free_integer(p.clone());
+        let simple = sf.len() == p.len();
+        (sf, simple)
+    };
+    let ((ps, s_simple), (pt, t_simple)) = (square_free(r), square_free(t_poly));
+    if !(s_simple || t_simple) || ps.len() < 2 || pt.len() < 2 {
+        return None;
+    }
+    let no_rational = crate::poly::algebraic::no_rational_roots;
+    if !no_rational(&ps) || !no_rational(&pt) {
+        return None;
+    }
+    let (dps, dpt) = (derivative_integer(&ps), derivative_integer(&pt));
+    let (dpsc, dptc) = (filter::Coeffs::new(&dps), filter::Coeffs::new(&dpt));
+    let (side_a, side_b) = (Side::new(fa), Side::new(fb));
+    let mut out: Vec<Intersection> = vec![];
+    for z in zeros {
+        let (s, s_float) = root_in_cell(&ps, (&dps, &dpsc), z[0].ends())?;
+        let (t, t_float) = root_in_cell(&pt, (&dpt, &dptc), z[1].ends())?;
+        if out.iter().any(|x| x.s_float == s_float && x.t_float == t_float) {
+            continue; // the same crossing, from a box sharing an edge
+        }
+        let mut cached = None;
+        out.push(Intersection {
+            s_float,
+            t_float,
+            point: common_point((&side_a, &s, &s), (&side_b, &t, &t), &mut cached),
+            point_float: side_a.point_float(&s),
+            kind: Kind::Transversal,
+            contact_order: 1,
+            s,
+            t,
+        });
+    }
+    out.sort_by(|a, b| a.s_float.total_cmp(&b.s_float).then(a.t_float.total_cmp(&b.t_float)));
+    Some(Intersections { intersections: out, overlaps: vec![] })
+}
+
+/// The root of `p` (square-free, primitive, no rational root; `dp` its derivative) that lies in
+/// `[lo, hi]`, where a zero of the system puts one, with its correctly rounded `f64`: the
+/// rounding cell of an `f64` `u` in `[lo, hi]` (the midpoint, then its neighbours) where `p`
+/// changes sign, with `p′` of one sign on the cell and on `[lo, hi]` (so one root in both: the
+/// one in `[lo, hi]`). `None` when no candidate is proved.
+fn root_in_cell(
+    p: &[BigInt],
+    (dp, dpc): (&[BigInt], &filter::Coeffs),
+    (lo, hi): (f64, f64),
+) -> Option<(RealAlgebraic, f64)> {
+    let mid = lo + (hi - lo) / 2.0;
+    // the box is some ulps wide: one exact Newton step from its midpoint finds the f64
+    let m = crate::poly::algebraic::newton_step_f64(p, dp, mid).filter(|u| lo <= *u && *u <= hi).unwrap_or(mid);
+    for u in [m, m.next_up(), m.next_down()] {
+        let (below, above) = (u.next_down(), u.next_up());
+        if !(u > 0.0 && above.is_finite() && dpc.nonzero_on(lo.min(below), hi.max(above))) {
+            continue;
+        }
+        let exact = |x: f64| BigRational::from_float(x);
+        let (Some(b), Some(c), Some(a)) = (exact(below), exact(u), exact(above)) else { continue };
+        let two = rat(2);
+        let cell = ((b + &c) / &two, (c + a) / two);
+        if let Some(x) = RealAlgebraic::certified_root(p.to_vec(), cell.0, cell.1) {
+            return Some((x, u));
+        }
+    }
+    None
 }
 
 /// `(F(s)W(t) − F(t)W(s)) / (s − t)` as a polynomial in `t` with coefficients in `Z[s]`.
@@ -881,6 +979,43 @@ mod filter_tests {
             }
         }
         assert!(proved > 20, "{proved} irrational points proved");
+    }
+
+    /// The box solver's route ([`solved_in_boxes`]) gives the exact route's answer, strings
+    /// included (the displayed interval does not depend on the route), on random font-like
+    /// cubic pairs, random quadratic × cubic pairs and cubics against lines; and it answers most
+    /// of the pairs that meet.
+    #[test]
+    fn box_solver_agrees_with_the_exact_route() {
+        let mut next = crate::num::symmetric(0x0DDB_1A5E_5BAD_5EED);
+        let rows =
+            |v: &[i64]| -> Vec<[BigRational; 3]> { v.chunks(2).map(|p| [rat(p[0]), rat(p[1]), rat(1)]).collect() };
+        let (mut meeting, mut fast, mut crossings) = (0, 0, 0);
+        for k in 0..90 {
+            let degree_a = [3, 2, 3][k % 3];
+            let degree_b = [3, 3, 1][k % 3];
+            let a: Vec<i64> = (0..2 * (degree_a + 1)).map(|_| next(2048)).collect();
+            let b: Vec<i64> = (0..2 * (degree_b + 1)).map(|_| next(2048)).collect();
+            let (ra, rb) = (rows(&a), rows(&b));
+            let (fa, fb) = (forms_from_homogeneous(&ra), forms_from_homogeneous(&rb));
+            let exact = intersect_forms(&fa, &fb, Domain::Unit, &Regions::Anywhere).unwrap();
+            if exact.intersections.is_empty() {
+                continue;
+            }
+            meeting += 1;
+            crossings += exact.intersections.len();
+            let Regions::Within { boxes } = candidate_regions(&ra, &rb) else { panic!("they meet") };
+            let Some(found) = solved_in_boxes(&fa, &fb, &eliminate(&fa, &fb), &eliminate(&fb, &fa), &boxes) else {
+                continue;
+            };
+            fast += 1;
+            assert_eq!(found, exact, "{a:?} × {b:?}");
+            let text = |r: &Intersections| {
+                r.intersections.iter().map(|x| format!("{} {} {:?}", x.s, x.t, x.point)).collect::<Vec<_>>()
+            };
+            assert_eq!(text(&found), text(&exact));
+        }
+        assert!(meeting > 20 && crossings > meeting && 5 * fast >= 4 * meeting, "{fast} of {meeting} answered");
     }
 
     /// The subdivision filter never changes an answer: random font-like pairs, and pairs that

@@ -3,7 +3,9 @@
 //! itself. Comparison and sign are exact (intervals are refined until they separate, and
 //! equality is decided by a gcd); `to_f64` is correctly rounded; `Display` writes a rational as
 //! a rational, a root of a quadratic polynomial as `a + b*sqrt(d)`, anything else as
-//! `root k of <poly> in [lo, hi]` (the `k`-th real root, ascending). The polynomial is the
+//! `root k of <poly> in [lo, hi]` (the `k`-th real root, ascending; `[lo, hi]` the coarsest
+//! dyadic interval `[k/2^j, (k+1)/2^j]`, `j ≥ 4`, with no other root inside, so one number
+//! prints alike whatever interval it carries). The polynomial is the
 //! square-free part of the one the number came from, not factored further: a number whose
 //! polynomial is reducible (√2 as a root of `t⁴ − 4`) keeps the general spelling.
 //!
@@ -29,7 +31,7 @@
 //! let r = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)]);
 //! assert_eq!(r.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["-sqrt(2)", "sqrt(2)"]);
 //! let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
-//! assert_eq!(c[0].to_string(), "root 1 of t^3 - 2 in [5/4, 41/32]");
+//! assert_eq!(c[0].to_string(), "root 1 of t^3 - 2 in [5/4, 21/16]");
 //! assert_eq!(c[0].to_f64(), 2f64.cbrt());
 //! assert!(c[0] < r[1] && r[0] < RealAlgebraic::from(ratio(-1, 1)));
 //! // (2t − 1)(t² − 3): the rational root is a rational
@@ -180,7 +182,7 @@ fn isolate_power(p: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<Root> 
 /// `q` not dividing the leading coefficient (a rational root `a/b` has `b | lc`, so `b` is
 /// invertible mod `q` and `a·b⁻¹` would be a root mod `q`). `false` means "not proved"; the
 /// slower exact search of `detect_rational` then decides.
-fn no_rational_roots(p: &[BigInt]) -> bool {
+pub(crate) fn no_rational_roots(p: &[BigInt]) -> bool {
     const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
     let Some(lc) = p.last() else { return false };
     let residue = |c: &BigInt, q: u64| {
@@ -332,6 +334,21 @@ impl RealAlgebraic {
             .collect()
     }
 
+    /// The root of `poly` in `(lo, hi)` (`lo < hi`), taken as irrational, when the exact signs of
+    /// `poly` at the ends are non-zero and opposite; `None` otherwise. The caller has proved the
+    /// rest of the representation's invariant: `poly` square-free and primitive, without
+    /// rational roots ([`no_rational_roots`]), and at most one root in `(lo, hi)` (a derivative
+    /// that keeps its sign there, say). The intersection oracle's fast route builds parameters
+    /// this way from `f64` rounding cells.
+    pub(crate) fn certified_root(poly: Vec<BigInt>, lo: BigRational, hi: BigRational) -> Option<Self> {
+        let (a, b) = (sign_at(&poly, &lo), sign_at(&poly, &hi));
+        (a != Ordering::Equal && b != Ordering::Equal && a != b && lo < hi).then_some(RealAlgebraic(Repr::Root {
+            poly,
+            lo,
+            hi,
+        }))
+    }
+
     /// The root of `poly` (square-free, primitive) in `(lo, hi)`, where it changes sign; made
     /// rational when it is.
     fn from_isolated(poly: Vec<BigInt>, mut lo: BigRational, mut hi: BigRational, irrational: bool) -> Self {
@@ -436,7 +453,7 @@ impl RealAlgebraic {
     /// compared with the rational `r`, exactly.
     fn cmp_rational(&mut self, r: &BigRational) -> Ordering {
         let Repr::Root { lo, hi, .. } = &self.0 else { return self.position_given(r, Ordering::Equal) };
-        if r <= lo || r >= hi {
+        if qcmp(r, lo) != Ordering::Greater || qcmp(r, hi) != Ordering::Less {
             return self.position_given(r, Ordering::Equal); // decided by the ends alone
         }
         let o = self.position_given(r, self.sign_at_lo());
@@ -498,10 +515,10 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Rational(r) => r.cmp(m),
             Repr::Root { poly, lo, hi } => {
-                if m <= lo {
+                if qcmp(m, lo) != Ordering::Greater {
                     return Ordering::Greater;
                 }
-                if m >= hi {
+                if qcmp(m, hi) != Ordering::Less {
                     return Ordering::Less;
                 }
                 match sign_at(poly, m) {
@@ -982,6 +999,25 @@ fn aligned(a: &BigRational, b: &BigRational) -> Option<(BigInt, BigInt, u64)> {
     Some((ma << (k - ka), mb << (k - kb), k))
 }
 
+/// `a` against `b`, exactly: by a shift when both are dyadic (the usual case here), else by
+/// cross-multiplication — `Ratio`'s own comparison divides, which costs more on these sizes.
+fn qcmp(a: &BigRational, b: &BigRational) -> Ordering {
+    if let Some((ma, mb, _)) = aligned(a, b) {
+        return ma.cmp(&mb);
+    }
+    (a.numer() * b.denom()).cmp(&(b.numer() * a.denom()))
+}
+
+/// The larger of `a` and `b` ([`qcmp`]).
+fn qmax(a: BigRational, b: &BigRational) -> BigRational {
+    if qcmp(&a, b) == Ordering::Less { b.clone() } else { a }
+}
+
+/// The smaller of `a` and `b` ([`qcmp`]).
+fn qmin(a: BigRational, b: &BigRational) -> BigRational {
+    if qcmp(&a, b) == Ordering::Greater { b.clone() } else { a }
+}
+
 /// `m / 2^k` as a reduced ratio, by trailing zeros (no gcd).
 fn dyadic(m: BigInt, k: u64) -> BigRational {
     if m.is_zero() {
@@ -1025,6 +1061,26 @@ fn newton_proposal(p: &[BigInt], dp: &[BigInt], cm: &BigInt, ck: u64) -> Option<
     let x = (cm << (kn - ck)) - q;
     let unit = BigInt::from(256);
     Some((dyadic(&x - &unit, kn), dyadic(x + unit, kn)))
+}
+
+/// One exact Newton step `u − p(u)/p′(u)` for the integer polynomial `p` (derivative `dp`) from
+/// the `f64` `u`, rounded to `f64`: near a simple root, `u` within `ε` of it gives a point within
+/// about `ε²` (times `p″/p′`), so this is the root correctly rounded unless the root lies that
+/// close to a rounding boundary. Only a proposal (the caller proves what it uses). `None` where
+/// `p′(u) = 0` or `u` is not finite.
+pub(crate) fn newton_step_f64(p: &[BigInt], dp: &[BigInt], u: f64) -> Option<f64> {
+    let c = exact_f64(u)?;
+    let (m, k) = dyadic_parts(&c)?;
+    // p(u) = P/2^(kn), p′(u) = D/2^(k(n−1)): u − p(u)/p′(u) = (m·D − P)/(D·2^k)
+    let n = p.len().checked_sub(1)?;
+    let (pv, dv) = (homogeneous_value(p, m, k), homogeneous_value(dp, m, k));
+    // dp has formal degree n − 1 when dp.len() = n
+    if dv.is_zero() || dp.len() != n {
+        return None;
+    }
+    let (num, den) = (m * &dv - pv, dv << k);
+    let (num, den) = if den.is_negative() { (-num, -den) } else { (num, den) };
+    Some(ratio_to_f64(&BigRational::new_raw(num, den)))
 }
 
 /// `2^(k·n)·p(m/2^k)` for an integer polynomial of formal degree `n = p.len() − 1`.
@@ -1083,7 +1139,15 @@ impl RealAlgebraic {
     fn refine_newton(&mut self, bits: u64) -> bool {
         let Repr::Root { lo, hi, .. } = &self.0 else { return false };
         let (flo, fhi) = (ratio_to_f64(lo), ratio_to_f64(hi));
-        let f = if flo == fhi { flo } else { self.narrow_to_f64_cell().unwrap_or(0.0) };
+        // the magnitude, for the target: the ends' when they are a few f64s apart (an f64
+        // rounding cell, say; the smaller end's, so the target is no coarser), else found by
+        // narrowing to a cell first (Newton from a wide interval's midpoint may not converge)
+        let close = flo != 0.0 && flo.is_sign_negative() == fhi.is_sign_negative() && fhi <= flo.next_up().next_up();
+        let f = if close {
+            if flo.abs() < fhi.abs() { flo } else { fhi }
+        } else {
+            self.narrow_to_f64_cell().unwrap_or(0.0)
+        };
         if f == 0.0 || !f.is_finite() {
             return false;
         }
@@ -1100,8 +1164,7 @@ impl RealAlgebraic {
             }
             // Newton from the midpoint (ml + mh) / 2^(k+1)
             let dp = derivative_integer(poly);
-            let proposed =
-                newton_proposal(poly, &dp, &(&ml + &mh), k + 1).map(|(a, b)| (a.max(lo.clone()), b.min(hi.clone())));
+            let proposed = newton_proposal(poly, &dp, &(&ml + &mh), k + 1).map(|(a, b)| (qmax(a, lo), qmin(b, hi)));
             let sign_lo = *sign_lo.get_or_insert_with(|| self.sign_at_lo());
             let proved = proposed.filter(|(a, b)| {
                 self.position_given(a, sign_lo) == Ordering::Greater
@@ -1138,7 +1201,7 @@ impl RealAlgebraic {
         let (cm, ck) = dyadic_parts(&c)?;
         let dp = derivative_integer(poly);
         let (a, b) = newton_proposal(poly, &dp, cm, ck)?;
-        let (a, b) = (a.max(lo.clone()), b.min(hi.clone()));
+        let (a, b) = (qmax(a, lo), qmin(b, hi));
         let rounded = ratio_to_f64(&a);
         if rounded != ratio_to_f64(&b) || rounded == 0.0 || !rounded.is_finite() {
             return None;
@@ -1340,12 +1403,49 @@ fn poly_text(p: &[BigInt]) -> String {
     s
 }
 
+impl RealAlgebraic {
+    /// For an irrational number: the coarsest dyadic interval `[k/2^j, (k+1)/2^j]`, `j ≥ 4`, that
+    /// holds it and no other root of its polynomial inside — a function of the number alone, not
+    /// of the interval it happens to carry (so every route to one number prints it alike).
+    fn canonical_interval(&self) -> Option<(BigRational, BigRational)> {
+        let Repr::Root { poly, .. } = &self.0 else { return None };
+        let mut x = self.clone();
+        for j in 4u64.. {
+            let cell = BigRational::new(BigInt::one(), BigInt::one() << j);
+            x.refine(&cell);
+            let Repr::Root { lo, hi, .. } = &x.0 else { return None };
+            // x lies in the grid cell of lo or in the next one (the width is below a cell)
+            let k = (lo.clone() / &cell).floor();
+            let next = (k.clone() + BigRational::one()) * &cell;
+            let k = if qcmp(&next, hi) == Ordering::Less && x.cmp_rational(&next) == Ordering::Greater {
+                k + BigRational::one()
+            } else {
+                k
+            };
+            let (a, b) = (k.clone() * &cell, (k + BigRational::one()) * &cell);
+            let inside = isolate_power(poly, &a, &b)
+                .iter()
+                .filter(|r| !matches!(r, Root::Exact(e) if *e == a || *e == b))
+                .count();
+            if inside == 1 {
+                return Some((a, b));
+            }
+        }
+        None
+    }
+}
+
 impl fmt::Display for RealAlgebraic {
-    /// A rational, `a + b*sqrt(d)`, or `root k of <poly> in [lo, hi]` with the interval refined
-    /// below width 1/16 (short dyadic ends).
+    /// A rational, `a + b*sqrt(d)`, or `root k of <poly> in [lo, hi]` with `[lo, hi]` the
+    /// coarsest dyadic interval `[k/2^j, (k+1)/2^j]`, `j ≥ 4`, that holds no other root of the
+    /// polynomial inside (the same string for the same number, whatever interval it carries).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let mut shown = self.clone();
-        shown.refine(&BigRational::new(1.into(), 16.into()));
+        if let Some((lo, hi)) = self.canonical_interval()
+            && let Repr::Root { poly, .. } = &self.0
+        {
+            shown = RealAlgebraic(Repr::Root { poly: poly.clone(), lo, hi });
+        }
         match &shown.0 {
             Repr::Rational(r) => write!(f, "{r}"),
             Repr::Root { poly, lo, hi } if poly.len() == 3 => {
@@ -1456,7 +1556,7 @@ mod tests {
         let b = RealAlgebraic::real_roots(&[rat(-4), rat(0), rat(0), rat(0), rat(1)])[1].clone();
         assert_eq!(a, b);
         // the polynomial is kept as given (square-free, not factored): √2 is spelled as a root of it
-        assert_eq!(b.to_string(), "root 2 of t^4 - 4 in [45/32, 93/64]");
+        assert_eq!(b.to_string(), "root 2 of t^4 - 4 in [11/8, 23/16]");
         let c = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
         assert!(a < c);
         assert_eq!(a.sign(), Ordering::Greater);
