@@ -658,10 +658,7 @@ fn root_in_cell(
         if !(u > 0.0 && above.is_finite() && dpc.nonzero_on(lo.min(below), hi.max(above))) {
             continue;
         }
-        let exact = |x: f64| BigRational::from_float(x);
-        let (Some(b), Some(c), Some(a)) = (exact(below), exact(u), exact(above)) else { continue };
-        let two = rat(2);
-        let cell = ((b + &c) / &two, (c + a) / two);
+        let Some(cell) = crate::poly::algebraic::f64_cell(u) else { continue };
         if let Some(x) = RealAlgebraic::certified_root(p.to_vec(), cell.0, cell.1) {
             return Some((x, u));
         }

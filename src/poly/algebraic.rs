@@ -1018,6 +1018,26 @@ fn qmin(a: BigRational, b: &BigRational) -> BigRational {
     if qcmp(&a, b) == Ordering::Greater { b.clone() } else { a }
 }
 
+/// A finite positive `f64` as `m·2^e` (`m` an integer).
+fn dyadic_parts_f64(x: f64) -> (u64, i64) {
+    let (m, e, _) = num_traits::Float::integer_decode(x);
+    (m, i64::from(e))
+}
+
+/// The rounding cell of the finite non-zero `f64` `u`: the numbers nearer to `u` than to its
+/// neighbours, `[(u⁻ + u)/2, (u + u⁺)/2]`, exactly (`None` at the ends of the range).
+pub(crate) fn f64_cell(u: f64) -> Option<(BigRational, BigRational)> {
+    let (below, above) = (u.next_down(), u.next_up());
+    if !(below.is_finite() && above.is_finite()) || u == 0.0 {
+        return None;
+    }
+    let mid = |a: f64, b: f64| -> Option<BigRational> {
+        let (ma, mb, k) = aligned(&exact_f64(a)?, &exact_f64(b)?)?;
+        Some(dyadic(ma + mb, k + 1))
+    };
+    Some((mid(below, u)?, mid(u, above)?))
+}
+
 /// `m / 2^k` as a reduced ratio, by trailing zeros (no gcd).
 fn dyadic(m: BigInt, k: u64) -> BigRational {
     if m.is_zero() {
@@ -1250,9 +1270,63 @@ impl RealAlgebraic {
         })
     }
 
+    /// [`Self::map_rational_to_f64`] for a constant denominator `d` (a polynomial image), by the
+    /// mean value theorem: over a narrow dyadic interval `[lo, hi]` of the number `x`,
+    /// `|num(x) − num(lo)| ≤ B·(hi − lo)` with `B = Σ k|c_k|·R^(k−1) ≥ max |num′|` (`R ≥
+    /// |lo|, |hi|`; `B` summed in `f64` rounded upwards), so `num(x)/d` lies within
+    /// `B·(hi − lo)/|d|` of `num(lo)/d` (exact); once both ends of that interval round to one
+    /// `f64`, so does the value. One exact evaluation instead of the Bernstein conversions of
+    /// the general route. `None` when it does not settle.
+    fn map_polynomial_to_f64(&self, num: &[BigInt], d: &BigInt) -> Option<f64> {
+        use num_traits::ToPrimitive;
+        let n = num.len().checked_sub(1)?;
+        if d.is_zero() {
+            return None;
+        }
+        let mut x = self.clone();
+        for bits in [60, 120] {
+            if !x.refine_newton(bits) {
+                return None;
+            }
+            let Repr::Root { lo, hi, .. } = &x.0 else { return None };
+            let (ml, mh, k) = aligned(lo, hi)?;
+            let r = ratio_to_f64(lo).abs().max(ratio_to_f64(hi).abs()).next_up();
+            let mut b = 0.0f64;
+            for (i, c) in num.iter().enumerate().skip(1).rev() {
+                let term = ((i as f64) * c.abs().to_f64()?.next_up()).next_up();
+                b = ((b * r).next_up() + term).next_up();
+            }
+            if !b.is_finite() || !r.is_finite() {
+                return None;
+            }
+            let (bm, be) = dyadic_parts_f64(b);
+            // over the denominator 2^(kn + s)·|d|: num(lo)/d and δ = B·(hi − lo)/|d|
+            let h = homogeneous_value(num, &ml, k); // 2^(kn)·num(lo)
+            let h = if d.is_negative() { -h } else { h };
+            let kn1 = (k * n.saturating_sub(1) as u64) as i64;
+            let s = (-be - kn1).max(0);
+            let nv = h << s as u64;
+            let nd = (BigInt::from(bm) * (mh - ml)) << (be + kn1 + s) as u64;
+            let den = d.abs() << (k * n as u64 + s as u64);
+            let (a, c) = (
+                ratio_to_f64(&BigRational::new_raw(&nv - &nd, den.clone())),
+                ratio_to_f64(&BigRational::new_raw(nv + nd, den)),
+            );
+            if a == c {
+                return Some(a);
+            }
+        }
+        None
+    }
+
     /// The enclosure route of [`Self::map_rational_to_f64`] for an irrational number; `None`
     /// when it does not settle.
     fn map_rational_by_enclosure(&self, num: &[BigInt], den: &[BigInt]) -> Option<f64> {
+        if den.len() == 1
+            && let Some(v) = self.map_polynomial_to_f64(num, &den[0])
+        {
+            return Some(v);
+        }
         let degree = num.len().max(den.len()).max(1) - 1;
         let pad = |p: &[BigInt]| -> Vec<BigInt> {
             let mut v = p.to_vec();
@@ -1520,6 +1594,7 @@ mod tests {
     fn rounded_image_matches_the_exact_image() {
         let mut next = crate::num::symmetric(0x9E37_79B9_7F4A_7C15);
         let (mut checked, mut fast, mut irrational) = (0, 0, 0);
+        let (mut constant, mut mean_value) = (0, 0);
         for round in 0..60 {
             let n = 2 + round % 6;
             let p: Vec<BigRational> = (0..=n).map(|_| rat(next(2000))).collect();
@@ -1528,7 +1603,7 @@ mod tests {
             }
             let num: Vec<BigInt> = (0..4).map(|_| BigInt::from(next(3000))).collect();
             let den: Vec<BigInt> = if round % 2 == 0 {
-                vec![BigInt::from(next(50).abs() + 1)]
+                vec![BigInt::from((next(50).abs() + 1) * if round % 4 == 0 { -1 } else { 1 })]
             } else {
                 vec![BigInt::from(40), BigInt::from(next(9)), BigInt::from(next(9))]
             };
@@ -1543,10 +1618,18 @@ mod tests {
                 if r.to_rational().is_none() {
                     irrational += 1;
                     fast += usize::from(r.map_rational_by_enclosure(&num, &den).is_some());
+                    if den.len() == 1 {
+                        constant += 1;
+                        if let Some(v) = r.map_polynomial_to_f64(&num, &den[0]) {
+                            assert_eq!(v.to_bits(), exact.to_bits(), "{r}");
+                            mean_value += 1;
+                        }
+                    }
                 }
             }
         }
         assert!(checked > 50 && fast == irrational, "{checked} checked, {fast} of {irrational} by enclosures");
+        assert!(constant > 20 && mean_value == constant, "{mean_value} of {constant} by the mean value bound");
     }
 
     #[test]
