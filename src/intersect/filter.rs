@@ -245,19 +245,6 @@ fn krawczyk(
 }
 
 impl Enclosure {
-    /// A rational: its nearest `f64` widened by an ulp each way (`NaN` outside the range).
-    fn of_rational(x: &BigRational) -> Self {
-        let f = crate::num::scalar::ratio_to_f64(x);
-        if !f.is_finite() {
-            return Enclosure(f64::NAN, f64::NAN);
-        }
-        Enclosure(f.next_down(), f.next_up())
-    }
-    /// The midpoint of two enclosed numbers, enclosed.
-    fn midpoint(self, o: Self) -> Self {
-        let s = self.add(o);
-        Enclosure((s.0 * 0.5).next_down(), (s.1 * 0.5).next_up())
-    }
     /// The smallest interval holding both.
     fn hull(self, o: Self) -> Self {
         Enclosure(self.0.min(o.0), self.1.max(o.1))
@@ -265,24 +252,43 @@ impl Enclosure {
     fn width(self) -> f64 {
         self.1 - self.0
     }
+    /// `[c − r, c + r]`, rounded outwards.
+    fn around(c: f64, r: f64) -> Self {
+        Enclosure((c - r).next_down(), (c + r).next_up())
+    }
 }
 
 /// The most control points a curve handed to [`candidate_regions`] has.
 const MAX_POINTS: usize = super::MAX_INTERSECT_DEGREE + 1;
 
-/// A homogeneous control polygon `(wᵢxᵢ, wᵢyᵢ, wᵢ)`, enclosed: the first `len` points.
+/// A bound on the rounding error of `(a + b)·0.5` in `f64` for `|a|, |b| ≤ m`: half an ulp
+/// of the sum, halved, below `m·2^−53` (doubled for slack), plus the least subnormal.
+fn midpoint_error(m: f64) -> f64 {
+    m * f64::EPSILON + f64::from_bits(1)
+}
+
+/// A homogeneous control polygon `(wᵢxᵢ, wᵢyᵢ, wᵢ)` in plain `f64`s, the first `len` points,
+/// with error radii: every coordinate `wx`, `wy` lies within `r` of the exact piece's, every
+/// weight within `rw` (0 while the weights are exactly 1: a polynomial curve, whose halves'
+/// weights stay exactly 1). Halving in plain arithmetic and widening once by a proved bound
+/// costs far less than interval arithmetic at every step.
 #[derive(Clone, Copy)]
 struct Polygon {
     len: usize,
-    points: [[Enclosure; 3]; MAX_POINTS],
+    points: [[f64; 3]; MAX_POINTS],
+    r: f64,
+    rw: f64,
 }
 
 impl Polygon {
-    fn points(&self) -> &[[Enclosure; 3]] {
+    fn points(&self) -> &[[f64; 3]] {
         &self.points[..self.len]
     }
 
-    /// The two halves at `t = 1/2` (de Casteljau), enclosed.
+    /// The two halves at `t = 1/2` (de Casteljau in `f64`). Each level's midpoints add at most
+    /// [`midpoint_error`] of the largest coordinate to the error (the exact midpoints of the
+    /// exact points lie within the mean of the two radii, and the midpoints stay within the
+    /// largest coordinate), so the radii grow by `levels × midpoint_error`.
     fn halves(&self) -> (Polygon, Polygon) {
         let (mut left, mut right) = (*self, *self);
         let mut row = self.points;
@@ -291,20 +297,36 @@ impl Polygon {
         right.points[n - 1] = row[n - 1];
         for level in 1..n {
             for i in 0..n - level {
-                row[i] = std::array::from_fn(|k| row[i][k].midpoint(row[i + 1][k]));
+                row[i] = std::array::from_fn(|k| (row[i][k] + row[i + 1][k]) * 0.5);
             }
             left.points[level] = row[0];
             right.points[n - 1 - level] = row[n - 1 - level];
         }
+        let levels = (n - 1) as f64;
+        let largest = |k: usize| self.points().iter().map(|p| p[k].abs()).fold(0.0, f64::max);
+        let m = largest(0).max(largest(1));
+        let r = (self.r + levels * midpoint_error(m)).next_up();
+        let unit = self.rw == 0.0 && self.points().iter().all(|p| p[2] == 1.0);
+        let rw = if unit { 0.0 } else { (self.rw + levels * midpoint_error(largest(2))).next_up() };
+        left.r = r;
+        right.r = r;
+        left.rw = rw;
+        right.rw = rw;
         (left, right)
     }
 
-    /// The bounding box of the projected control points `(wx/w, wy/w)`: it holds the curve when
-    /// every weight is positive (convex hull property). `None` when an enclosure says nothing.
+    /// The bounding box of the projected control points `(wx/w, wy/w)`, their errors
+    /// included: it holds the curve when every weight is positive (convex hull property).
+    /// `None` when an enclosure says nothing.
     fn bounding_box(&self) -> Option<[Enclosure; 2]> {
         let mut out: Option<[Enclosure; 2]> = None;
         for p in self.points() {
-            let q = [p[0].div(p[2]), p[1].div(p[2])];
+            let q = if self.rw == 0.0 && p[2] == 1.0 {
+                [Enclosure::around(p[0], self.r), Enclosure::around(p[1], self.r)]
+            } else {
+                let w = Enclosure::around(p[2], self.rw);
+                [Enclosure::around(p[0], self.r).div(w), Enclosure::around(p[1], self.r).div(w)]
+            };
             if q.iter().any(|e| !e.0.is_finite() || !e.1.is_finite()) {
                 return None;
             }
@@ -389,12 +411,27 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         if rows.is_empty() || rows.len() > MAX_POINTS {
             return None;
         }
-        let mut p = Polygon { len: rows.len(), points: [[Enclosure(0.0, 0.0); 3]; MAX_POINTS] };
-        for (q, r) in p.points.iter_mut().zip(rows) {
-            *q = std::array::from_fn(|k| Enclosure::of_rational(&r[k]));
-            if q[2].0.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
-                return None;
+        let mut p = Polygon { len: rows.len(), points: [[0.0; 3]; MAX_POINTS], r: 0.0, rw: 0.0 };
+        for (q, row) in p.points.iter_mut().zip(rows) {
+            for k in 0..3 {
+                let f = crate::num::scalar::ratio_to_f64(&row[k]);
+                if !f.is_finite() {
+                    return None;
+                }
+                // nearest: within half an ulp; exact for integers below 2^53
+                let exact = row[k].is_integer() && f.abs() < 9007199254740992.0;
+                let err = if exact { 0.0 } else { midpoint_error(f.abs()) };
+                if k < 2 {
+                    p.r = p.r.max(err);
+                } else {
+                    p.rw = p.rw.max(err);
+                }
+                q[k] = f;
             }
+        }
+        // weights provably positive
+        if p.points().iter().any(|q| (q[2] - p.rw).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)) {
+            return None;
         }
         Some(p)
     };

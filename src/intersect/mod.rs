@@ -1030,6 +1030,22 @@ mod filter_tests {
                 (rows(&a), rows(&b))
             })
             .collect();
+        // rational curves with fractional coordinates (inexact in f64: the filter's error radii)
+        for _ in 0..12 {
+            let weighted = |next: &mut dyn FnMut(i64) -> i64| -> Rows {
+                (0..4)
+                    .map(|_| {
+                        let w = rat(next(4).abs() + 1);
+                        let (x, y) = (
+                            BigRational::new(next(2048).into(), 7.into()),
+                            BigRational::new(next(2048).into(), 7.into()),
+                        );
+                        [x * &w, y * &w, w]
+                    })
+                    .collect()
+            };
+            pairs.push((weighted(&mut next), weighted(&mut next)));
+        }
         // a parabola touching a line at its apex, a shared end point, boxes touching at a corner
         pairs.push((rows(&[0, 0, 1, 2, 2, 0]), rows(&[0, 1, 2, 1])));
         pairs.push((rows(&[0, 0, 1, 3, 2, 1, 4, 4]), rows(&[4, 4, 5, 0, 9, 9])));
