@@ -670,17 +670,16 @@ fn solved_in_boxes(
     if !(s_simple || t_simple) || ps.len() < 2 || pt.len() < 2 {
         return None;
     }
+    // without rational roots the cells' roots are irrational; else each is checked
     let no_rational = crate::poly::algebraic::no_rational_roots;
-    if !no_rational(&ps) || !no_rational(&pt) {
-        return None;
-    }
+    let (s_irrational, t_irrational) = (no_rational(&ps), no_rational(&pt));
     let (dps, dpt) = (derivative_integer(&ps), derivative_integer(&pt));
     let (dpsc, dptc) = (filter::Coeffs::new(&dps), filter::Coeffs::new(&dpt));
     let (side_a, side_b) = (Side::new(fa), Side::new(fb));
     let mut out: Vec<Intersection> = vec![];
     for z in zeros {
-        let (s, s_float) = root_in_cell(&ps, (&dps, &dpsc), z[0].ends())?;
-        let (t, t_float) = root_in_cell(&pt, (&dpt, &dptc), z[1].ends())?;
+        let (s, s_float) = root_in_cell(&ps, (&dps, &dpsc), z[0].ends(), s_irrational)?;
+        let (t, t_float) = root_in_cell(&pt, (&dpt, &dptc), z[1].ends(), t_irrational)?;
         if out.iter().any(|x| x.s_float == s_float && x.t_float == t_float) {
             continue; // the same crossing, from a box sharing an edge
         }
@@ -709,6 +708,7 @@ fn root_in_cell(
     p: &[BigInt],
     (dp, dpc): (&[BigInt], &filter::Coeffs),
     (lo, hi): (f64, f64),
+    irrational: bool,
 ) -> Option<(RealAlgebraic, f64)> {
     let mid = lo + (hi - lo) / 2.0;
     // the box is some ulps wide: one exact Newton step from its midpoint finds the f64
@@ -719,7 +719,7 @@ fn root_in_cell(
             continue;
         }
         let Some(cell) = crate::poly::algebraic::f64_cell(u) else { continue };
-        if let Some(x) = RealAlgebraic::certified_root(p.to_vec(), cell.0, cell.1) {
+        if let Some(x) = RealAlgebraic::certified_root(p.to_vec(), cell.0, cell.1, irrational) {
             return Some((x, u));
         }
     }
@@ -1073,6 +1073,36 @@ mod filter_tests {
             assert_eq!(text(&found), text(&exact));
         }
         assert!(meeting > 20 && crossings > meeting && 5 * fast >= 4 * meeting, "{fast} of {meeting} answered");
+    }
+
+    /// Rational crossing parameters on the box solver's route: a line through `A(1/3)` with
+    /// `B(1/3) = A(1/3)` makes both resultants' square-free parts have a rational root, so the
+    /// cells' roots are checked for rationals (`1/3` found, the point exact) and the answer is the
+    /// exact route's.
+    #[test]
+    fn box_solver_finds_rational_parameters() {
+        let mut next = crate::num::symmetric(0x7A11_0C0F_FEE5_1DE5);
+        let third = BigRational::new(1.into(), 3.into());
+        let mut answered = 0;
+        for _ in 0..20 {
+            let a = cubic(std::array::from_fn(|_| next(2048)));
+            let p = a.eval(&third).unwrap();
+            let d = [rat(next(1000)), rat(next(1000))];
+            let line =
+                |k: i64| Point::new(vec![p.coords[0].clone() + &d[0] * rat(k), p.coords[1].clone() + &d[1] * rat(k)]);
+            let b = RationalBezier::new(vec![line(-1), line(2)], vec![rat(1); 2]).unwrap();
+            let (ra, rb) = (homogeneous_rows(&a), homogeneous_rows(&b));
+            let (fa, fb) = (forms_from_homogeneous(&ra), forms_from_homogeneous(&rb));
+            let exact = intersect_forms(&fa, &fb, Domain::Unit, &Regions::Anywhere).unwrap();
+            let hit = exact.intersections.iter().find(|x| x.s.to_rational() == Some(&third)).expect("A(1/3) is on B");
+            assert_eq!((hit.t.to_rational(), hit.point.as_ref()), (Some(&third), Some(&Point::new(p.coords.clone()))));
+            let Regions::Within { boxes } = candidate_regions(&ra, &rb) else { panic!("they meet") };
+            if let Some(found) = solved_in_boxes(&fa, &fb, &eliminate(&fa, &fb), &eliminate(&fb, &fa), &boxes) {
+                assert_eq!(found, exact);
+                answered += 1;
+            }
+        }
+        assert!(answered >= 15, "{answered} of 20 answered by the box solver");
     }
 
     /// The subdivision filter never changes an answer: random font-like pairs, and pairs that

@@ -260,6 +260,49 @@ pub fn simplest_rational(lo: &BigRational, hi: &BigRational) -> BigRational {
     }
 }
 
+/// The simplest rational in the closed interval `[lo, hi]` (the least denominator, as
+/// [`simplest_rational`]) when its denominator is at most `max_den`; `None` otherwise. Integer
+/// continued fractions (no gcd), stopped as soon as a convergent's denominator — a lower bound
+/// for the answer's — exceeds `max_den`.
+pub(crate) fn simplest_rational_bounded(lo: &BigRational, hi: &BigRational, max_den: &BigInt) -> Option<BigRational> {
+    if lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less {
+        return Some(rat(0));
+    }
+    if hi.sign() == Ordering::Less {
+        return simplest_rational_bounded(&-hi.clone(), &-lo.clone(), max_den).map(|x| -x);
+    }
+    // 0 < a/b ≤ c/d (b, d > 0)
+    let (mut a, mut b, mut c, mut d) = (lo.numer().clone(), lo.denom().clone(), hi.numer().clone(), hi.denom().clone());
+    let mut parts: Vec<BigInt> = vec![];
+    // convergent denominators k_(−1) = 0, k_0 = 1: k_n = q_n·k_(n−1) + k_(n−2)
+    let (mut k1, mut k2) = (BigInt::zero(), BigInt::one());
+    loop {
+        let (q, r) = num_integer::Integer::div_rem(&a, &b);
+        // the least integer ≥ a/b, if it is ≤ c/d, ends the expansion
+        let ceil = if r.is_zero() { q.clone() } else { &q + 1 };
+        if &ceil * &d <= c {
+            let (mut num, mut den) = (ceil, BigInt::one());
+            for f in parts.into_iter().rev() {
+                // f + 1/(num/den) = (f·num + den)/num
+                let next = &f * &num + den;
+                den = num;
+                num = next;
+            }
+            return (den <= *max_den).then(|| BigRational::new_raw(num, den));
+        }
+        // both in (q, q+1): subtract q and invert (the order flips)
+        let k = &q * &k1 + &k2;
+        if k > *max_den {
+            return None;
+        }
+        (k2, k1) = (k1, k);
+        let (na, nb) = (d.clone(), &c - &q * &d);
+        let (nc, nd) = (b.clone(), &a - &q * &b);
+        (a, b, c, d) = (na, nb, nc, nd);
+        parts.push(q);
+    }
+}
+
 impl RealAlgebraic {
     /// The distinct real roots of `p` (power form, lowest degree first), ascending; empty for a
     /// non-zero constant.
@@ -334,19 +377,28 @@ impl RealAlgebraic {
             .collect()
     }
 
-    /// The root of `poly` in `(lo, hi)` (`lo < hi`), taken as irrational, when the exact signs of
-    /// `poly` at the ends are non-zero and opposite; `None` otherwise. The caller has proved the
-    /// rest of the representation's invariant: `poly` square-free and primitive, without
-    /// rational roots ([`no_rational_roots`]), and at most one root in `(lo, hi)` (a derivative
-    /// that keeps its sign there, say). The intersection oracle's fast route builds parameters
-    /// this way from `f64` rounding cells.
-    pub(crate) fn certified_root(poly: Vec<BigInt>, lo: BigRational, hi: BigRational) -> Option<Self> {
+    /// The root of `poly` in `(lo, hi)` (`lo < hi`) when the exact signs of `poly` at the ends
+    /// are non-zero and opposite; `None` otherwise. The caller has proved the rest of the
+    /// representation's invariant: `poly` square-free and primitive, and at most one root in
+    /// `(lo, hi)` (a derivative that keeps its sign there, say); `irrational` when it has also
+    /// proved that `poly` has no rational root ([`no_rational_roots`]), else the root is checked
+    /// for a rational. The intersection oracle's fast route builds parameters this way from `f64`
+    /// rounding cells.
+    pub(crate) fn certified_root(
+        poly: Vec<BigInt>,
+        lo: BigRational,
+        hi: BigRational,
+        irrational: bool,
+    ) -> Option<Self> {
         let (a, b) = (sign_at(&poly, &lo), sign_at(&poly, &hi));
-        (a != Ordering::Equal && b != Ordering::Equal && a != b && lo < hi).then_some(RealAlgebraic(Repr::Root {
-            poly,
-            lo,
-            hi,
-        }))
+        if a == Ordering::Equal || b == Ordering::Equal || a == b || qcmp(&lo, &hi) != Ordering::Less {
+            return None;
+        }
+        let mut x = RealAlgebraic(Repr::Root { poly, lo, hi });
+        if !irrational {
+            x.detect_rational();
+        }
+        Some(x)
     }
 
     /// The root of `poly` (square-free, primitive) in `(lo, hi)`, where it changes sign; made
@@ -393,10 +445,19 @@ impl RealAlgebraic {
         }
         let lc = poly.last().expect("non-constant").abs();
         let bound = BigRational::from_integer(&lc * &lc).recip();
+        // below width 1/lc² by Newton steps (quadratic) when they apply, else by bisection
+        let (lo, hi) = self.interval();
+        let magnitude = ratio_to_f64(&lo).abs().max(ratio_to_f64(&hi).abs());
+        let e = if magnitude.is_finite() && magnitude > 0.0 { magnitude.log2().ceil() as i64 } else { 0 };
+        let bits = (e + 2 * lc.bits() as i64 + 2).max(1) as u64;
+        self.refine_newton(bits);
         self.refine(&bound);
         let Repr::Root { poly, lo, hi } = &self.0 else { return };
-        let c = simplest_rational(lo, hi);
-        if c.denom() <= &lc && sign_at(poly, &c) == Ordering::Equal {
+        // two fractions with denominators ≤ lc are 1/lc² apart or more: at most one lies inside,
+        // the simplest one if any
+        if let Some(c) = simplest_rational_bounded(lo, hi, &lc)
+            && sign_at(poly, &c) == Ordering::Equal
+        {
             self.0 = Repr::Rational(c);
         }
     }
@@ -1551,6 +1612,23 @@ impl serde::Serialize for RealAlgebraic {
 mod tests {
     use super::*;
     use crate::num::scalar::ratio;
+
+    /// The bounded search agrees with the plain one: the same fraction when its denominator is
+    /// within the bound, `None` otherwise (random intervals, several bounds).
+    #[test]
+    fn bounded_simplest_rational_matches_the_plain_one() {
+        let mut next = crate::num::symmetric(0x005E_ED0F_F4AC_7105);
+        for _ in 0..400 {
+            let (a, b) = (ratio(next(5000), next(400).abs() + 1), ratio(next(5000), next(400).abs() + 1));
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            let plain = simplest_rational(&lo, &hi);
+            for bound in [1, 3, 17, 400, 100000] {
+                let bounded = simplest_rational_bounded(&lo, &hi, &BigInt::from(bound));
+                let expected = (*plain.denom() <= BigInt::from(bound)).then(|| plain.clone());
+                assert_eq!(bounded, expected, "[{lo}, {hi}] bound {bound}");
+            }
+        }
+    }
 
     #[test]
     fn simplest_rationals_of_intervals() {
