@@ -3,7 +3,9 @@
 //! inflection tangent, a line starting on it, a line through its cusp; control points exact
 //! `f64`s). Criterion times each batch (the mean per pair); `per_pair_medians` then times every
 //! pair on its own and prints the median per pair of both routes and their ratio (the issue's
-//! target is stated for the median). `cargo bench --bench intersect`.
+//! target is stated for the median); `command_line` times `casteljau intersect --json -i FILE`
+//! end to end on 1,024 such pairs (eight times the 128), on 1 and 2 threads.
+//! `cargo bench --bench intersect`.
 
 use casteljau::BezierCurve;
 use casteljau::intersect::{Domain, intersect_polynomial};
@@ -156,5 +158,39 @@ fn per_pair_medians(_: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench, per_pair_medians);
+/// The random pairs as batch lines, `A ; B`.
+fn batch_text(pairs: &[(Curve, Curve)]) -> String {
+    let curve = |c: &Curve| {
+        c.points().iter().map(|p| format!("{} {}", p.coords[0], p.coords[1])).collect::<Vec<_>>().join(", ")
+    };
+    pairs.iter().map(|(a, b)| format!("{} ; {}\n", curve(a), curve(b))).collect()
+}
+
+/// `casteljau intersect --json -i FILE` end to end on 1,024 random font-like pairs (the 128 eight
+/// times), output discarded, on 1 and 2 threads.
+fn command_line(c: &mut Criterion) {
+    let text = batch_text(&font_like(RANDOM_PAIRS)).repeat(8);
+    let path = std::env::temp_dir().join(format!("casteljau-bench-{}-intersect", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let mut g = c.benchmark_group("intersect_cli");
+    g.sample_size(10).measurement_time(Duration::from_secs(8)).warm_up_time(Duration::from_secs(1));
+    for threads in [1, 2] {
+        g.bench_function(format!("cli_1024_pairs_{threads}_thread"), |bn| {
+            bn.iter(|| {
+                let status = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau"))
+                    .args(["intersect", "--json", "-i"])
+                    .arg(&path)
+                    .args(["--threads", &threads.to_string()])
+                    .stdout(std::process::Stdio::null())
+                    .status()
+                    .unwrap();
+                assert!(status.success());
+            })
+        });
+    }
+    g.finish();
+    let _ = std::fs::remove_file(&path);
+}
+
+criterion_group!(benches, bench, per_pair_medians, command_line);
 criterion_main!(benches);

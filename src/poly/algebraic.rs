@@ -220,7 +220,23 @@ fn rational_guess(p: &[BigInt], a: &BigRational, b: &BigRational) -> Option<BigR
 fn integer_root_bound(p: &[BigInt]) -> BigInt {
     let lc = p.last().expect("non-zero polynomial").abs();
     let m = p[..p.len() - 1].iter().map(|c| c.abs()).max().unwrap_or_default();
-    m / lc + 2
+    let cauchy = m / &lc + 2;
+    // Fujiwara's bound 2·max_k |c_(n−k)/c_n|^(1/k) (the last term halved) is often far smaller:
+    // the k-th roots taken from bit lengths, rounded up (|c| < 2^bits)
+    let n = p.len() - 1;
+    let lc_bits = lc.bits() as f64 - 1.0; // |lc| ≥ 2^(bits − 1)
+    let exponent = (1..=n)
+        .filter(|&k| !p[n - k].is_zero())
+        .map(|k| {
+            let bits = p[n - k].bits() as f64 - if k == n { 1.0 } else { 0.0 };
+            (bits - lc_bits) / k as f64
+        })
+        .fold(f64::NEG_INFINITY, f64::max);
+    if exponent.is_finite() && exponent < 60.0 {
+        let fujiwara = BigInt::from((2.0 * exponent.exp2()).ceil() as u64 + 1);
+        return fujiwara.min(cauchy);
+    }
+    cauchy
 }
 
 /// `1 + max |c_i / c_n|`: every real root lies strictly inside `(−B, B)` (Cauchy).
@@ -700,7 +716,24 @@ impl RealAlgebraic {
         if *lo <= -b.clone() {
             return 1;
         }
-        isolate_power(poly, &-b, lo).len() + 1
+        if lo.sign() != Ordering::Greater {
+            return isolate_power(poly, &-b, lo).len() + 1;
+        }
+        // the negative roots, counted by Descartes' rule on p(−t) when that is exact (no sign
+        // change: none; one: exactly one), else by isolation; then the roots in [0, lo]
+        let signs = poly
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| !c.is_zero())
+            .map(|(i, c)| c.is_negative() != (i % 2 == 1))
+            .collect::<Vec<bool>>();
+        let changes = signs.windows(2).filter(|w| w[0] != w[1]).count();
+        let negative = if changes <= 1 {
+            changes
+        } else {
+            isolate_power(poly, &-b, &rat(0)).iter().filter(|r| !matches!(r, Root::Exact(x) if x.is_zero())).count()
+        };
+        negative + isolate_power(poly, &rat(0), lo).len() + 1
     }
 }
 
@@ -1628,6 +1661,40 @@ mod tests {
                 assert_eq!(bounded, expected, "[{lo}, {hi}] bound {bound}");
             }
         }
+    }
+
+    /// The displayed root index and interval agree with the ascending order of `real_roots` on
+    /// random polynomials (negative roots counted by Descartes' rule or by isolation, the root
+    /// bound Fujiwara's or Cauchy's), and the interval holds the number.
+    #[test]
+    fn displayed_index_and_interval_match_the_roots() {
+        let mut next = crate::num::symmetric(0x0B5E_55ED_D15B_1A7E);
+        let mut shown = 0;
+        for round in 0..80 {
+            let n = 2 + round % 7;
+            let p: Vec<BigRational> = (0..=n).map(|_| rat(next(1 << (round % 40)) + next(9))).collect();
+            if p[n] == rat(0) {
+                continue;
+            }
+            for x in RealAlgebraic::real_roots(&p) {
+                let Some((lo, hi)) = x.canonical_interval() else { continue };
+                let text = x.to_string();
+                let Repr::Root { poly, .. } = &x.0 else { continue };
+                if !text.starts_with("root ") {
+                    continue; // quadratic
+                }
+                // the index among the real roots of the displayed polynomial (rational roots of p
+                // are divided out of it)
+                let q: Vec<BigRational> = poly.iter().map(|c| BigRational::from_integer(c.clone())).collect();
+                let i = RealAlgebraic::real_roots(&q).iter().position(|y| *y == x).expect("a root of its polynomial");
+                assert!(text.starts_with(&format!("root {} of", i + 1)), "{text} is root {}", i + 1);
+                assert!(
+                    x.clone().cmp_rational(&lo) == Ordering::Greater && x.clone().cmp_rational(&hi) == Ordering::Less
+                );
+                shown += 1;
+            }
+        }
+        assert!(shown > 40, "{shown} roots shown");
     }
 
     #[test]
