@@ -2,11 +2,19 @@
 //! outward-rounded interval arithmetic ([`Enclosure`]) and Krawczyk's interval Newton operator —
 //! and that say "undecided" rather than guess, leaving the exact route to decide.
 //!
-//! - [`candidate_regions`]: the curves' control polygons, halved, have disjoint bounding boxes
-//!   everywhere (convex hull property): no intersection on `[0, 1]²`; or every intersection
-//!   lies in the boxes left over.
+//! - [`candidate_regions`]: the curves' control polygons, halved (plain `f64` with a proved
+//!   error radius), have disjoint bounding boxes everywhere (convex hull property): no
+//!   intersection on `[0, 1]²`; or every intersection lies in the boxes left over.
+//! - [`solve`]: each candidate box proved empty or holding exactly one transversal crossing
+//!   (Krawczyk's operator on the [`System`] `A(σ) − B(τ)`), for the box solver's route.
 //! - [`apart`]: two root parameters map to provably different points.
 //! - [`proved_common`]: two root parameters map to the same point (a transversal crossing).
+//! - [`no_common_root`]: two polynomials with coefficients in `Z[x]` share no root at a real
+//!   `x` (a Bézout determinant kept from 0), for the irrationality proof of a point.
+//!
+//! Written by hand: the interval type is a few outward-rounded operations on `f64` pairs
+//! (`next_up`/`next_down` after each operation, portable and dependency-free), where interval
+//! crates bring directed-rounding intrinsics of particular processors or a C library (MPFR).
 
 use crate::poly::algebraic::RealAlgebraic;
 use num_bigint::BigInt;
