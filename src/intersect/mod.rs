@@ -641,12 +641,13 @@ fn intersect_forms(
 /// [`filter::solve`] (each proved empty or holding exactly one transversal crossing), then
 /// each crossing's parameters made exact without isolating the resultants' roots: the
 /// square-free part `p` of a resultant vanishes at the crossing's parameter `σ` (the system has
-/// a common root there); when `p` has no rational root and `p′` keeps its sign on the crossing's
-/// box and on the rounding cell of an `f64` `u` near `σ` (the `f64`s nearer to `u` than to its
-/// neighbours), and `p` changes sign across that cell, the cell holds exactly one root of `p`,
-/// and it is `σ`: so `σ` is that root, `u` is `σ` correctly rounded, and the cell is an
-/// isolating interval. `None` (the exact route decides) whenever a step is not proved, or the
-/// resultants are both not square-free (contact orders then come from multiplicities).
+/// a common root there); when `p′` keeps its sign on the crossing's box and on the rounding cell
+/// of an `f64` `u` near `σ` (the numbers nearer to `u` than to its neighbours), and `p` changes
+/// sign across that cell, the cell holds exactly one root of `p`, and it is `σ`: so `σ` is that
+/// root, `u` is `σ` correctly rounded, and the cell is an isolating interval. `σ` is irrational
+/// when `p` provably has no rational root, else checked for one. `None` (the exact route
+/// decides) whenever a step is not proved, or the resultants are both not square-free (contact
+/// orders then come from multiplicities).
 fn solved_in_boxes(
     fa: &[Vec<BigInt>; 3],
     fb: &[Vec<BigInt>; 3],
@@ -699,11 +700,12 @@ fn solved_in_boxes(
     Some(Intersections { intersections: out, overlaps: vec![] })
 }
 
-/// The root of `p` (square-free, primitive, no rational root; `dp` its derivative) that lies in
-/// `[lo, hi]`, where a zero of the system puts one, with its correctly rounded `f64`: the
-/// rounding cell of an `f64` `u` in `[lo, hi]` (the midpoint, then its neighbours) where `p`
-/// changes sign, with `p′` of one sign on the cell and on `[lo, hi]` (so one root in both: the
-/// one in `[lo, hi]`). `None` when no candidate is proved.
+/// The root of `p` (square-free, primitive; `dp` its derivative, exact and enclosed) that lies
+/// in `[lo, hi]`, where a zero of the system puts one, with its correctly rounded `f64`: the
+/// rounding cell of an `f64` `u` (one exact Newton step from the midpoint, then its neighbours)
+/// where `p` changes sign, with `p′` of one sign on the cell and on `[lo, hi]` (so one root in
+/// both: the one in `[lo, hi]`); `irrational` when `p` has no rational root, else the root is
+/// checked for one. `None` when no candidate is proved.
 fn root_in_cell(
     p: &[BigInt],
     (dp, dpc): (&[BigInt], &filter::Coeffs),

@@ -215,8 +215,9 @@ fn rational_guess(p: &[BigInt], a: &BigRational, b: &BigRational) -> Option<BigR
     (x > *a && x < *b && sign_at(p, &x) == Ordering::Equal).then_some(x)
 }
 
-/// `2 + ⌊max |c_i| / |c_n|⌋`, an integer above Cauchy's bound `1 + max |c_i / c_n|`: every
-/// root lies strictly inside `(−B, B)`.
+/// An integer `B` with every root strictly inside `(−B, B)`: the smaller of `2 + ⌊max |c_i| /
+/// |c_n|⌋` (above Cauchy's bound `1 + max |c_i / c_n|`) and one more than an upper bound of
+/// Fujiwara's `2·max_k |c_(n−k)/c_n|^(1/k)` (`|c_0/(2c_n)|^(1/n)` for the last term).
 fn integer_root_bound(p: &[BigInt]) -> BigInt {
     let lc = p.last().expect("non-zero polynomial").abs();
     let m = p[..p.len() - 1].iter().map(|c| c.abs()).max().unwrap_or_default();
