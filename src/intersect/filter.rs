@@ -71,11 +71,27 @@ fn enclose(p: &[BigInt], x: Enclosure) -> Enclosure {
     p.iter().rev().fold(Enclosure(0.0, 0.0), |acc, c| acc.mul(x).add(Enclosure::of_integer(c)))
 }
 
+/// The interval of `x` in `f64`, widened outwards: it holds `x`.
+pub(super) fn outward(x: &RealAlgebraic) -> (f64, f64) {
+    let (lo, hi) = x.interval();
+    (crate::num::scalar::ratio_to_f64(&lo).next_down(), crate::num::scalar::ratio_to_f64(&hi).next_up())
+}
+
+impl Enclosure {
+    /// An enclosure of `x` ([`outward`]).
+    fn of_number(x: &RealAlgebraic) -> Self {
+        let (lo, hi) = outward(x);
+        Enclosure(lo, hi)
+    }
+    /// The common part of two intervals (empty, `lo > hi`, when they miss each other).
+    fn meet(self, o: Self) -> Self {
+        Enclosure(self.0.max(o.0), self.1.min(o.1))
+    }
+}
+
 /// The point of `f` over the isolating interval of `x`.
 fn enclose_point(f: &[Vec<BigInt>; 3], x: &RealAlgebraic) -> [Enclosure; 2] {
-    let (lo, hi) = x.interval();
-    let (lo, hi) = (crate::num::scalar::ratio_to_f64(&lo), crate::num::scalar::ratio_to_f64(&hi));
-    let x = Enclosure(lo.next_down(), hi.next_up());
+    let x = Enclosure::of_number(x);
     let w = enclose(&f[2], x);
     [enclose(&f[0], x).div(w), enclose(&f[1], x).div(w)]
 }
@@ -105,21 +121,10 @@ pub(super) fn no_common_root(f: &[Vec<BigInt>], g: &[Vec<BigInt>], x: &RealAlgeb
     if m == 0 || m > MAX_BEZOUT_ORDER {
         return false;
     }
-    let (lo, hi) = x.interval();
-    let (lo, hi) = (crate::num::scalar::ratio_to_f64(&lo), crate::num::scalar::ratio_to_f64(&hi));
-    let xe = Enclosure(lo.next_down(), hi.next_up());
-    let zero = Enclosure(0.0, 0.0);
-    let at = |p: &[Vec<BigInt>], k: usize| p.get(k).map_or(zero, |c| enclose(c, xe));
-    let (a, b): (Vec<Enclosure>, Vec<Enclosure>) = (0..=m).map(|k| (at(f, k), at(g, k))).unzip();
-    // B_(i−1)j = P_ij + B_i(j−1), P_ij = a_i b_j − a_j b_i (as for the exact Bézoutian)
-    let mut bz = vec![vec![zero; m + 1]; m + 1];
-    for j in 0..=m {
-        for i in (1..=m).rev() {
-            let prev = if j > 0 { bz[i][j - 1] } else { zero };
-            bz[i - 1][j] = a[i].mul(b[j]).add(a[j].mul(b[i]).neg()).add(prev);
-        }
-    }
-    let d = det(&bz[..m].iter().map(|r| r[..m].to_vec()).collect::<Vec<_>>());
+    let xe = Enclosure::of_number(x);
+    let at = |p: &[Vec<BigInt>]| -> Vec<Enclosure> { p.iter().map(|c| enclose(c, xe)).collect() };
+    let Some(bz) = super::bezoutian(&at(f), &at(g), m) else { return false };
+    let d = det(&bz);
     d.0 > 0.0 || d.1 < 0.0
 }
 
@@ -139,77 +144,25 @@ fn det(m: &[Vec<Enclosure>]) -> Enclosure {
     }
 }
 
-/// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator (interval Newton) on
-/// `F(σ, τ) = (X_A(σ)·w_B − X_B(τ)·w_A, Y_A(σ)·w_B − Y_B(τ)·w_A)` over a small box around an
-/// `f64` Newton solution (from `start`, the two parameters rounded) inside the isolating
-/// intervals of `s` and `t`: when the operator maps the box into its interior, `F` has exactly
-/// one zero `(σ*, τ*)` there; then `σ*` is a root of the resultant in `s`'s isolating interval,
-/// so `σ* = s`, and likewise `τ* = t`. False when that does not succeed (a tangency, rational
-/// curves, a box outside the intervals): the exact comparison decides then. Every decision it
+/// `A(s) = B(t)` for polynomial curves, proved by Krawczyk's operator ([`System::krawczyk`]) over
+/// a small box around an `f64` Newton solution (from `start`, the two parameters rounded) inside
+/// the isolating intervals of `s` and `t`: when the operator maps the box into its interior, the
+/// system has exactly one zero `(σ*, τ*)` there; then `σ*` is a root of the resultant in `s`'s
+/// isolating interval, so `σ* = s`, and likewise `τ* = t`. False when that does not succeed (a
+/// tangency, a box outside the intervals): the exact comparison decides then. Every decision it
 /// makes is a proof; `f64` only proposes the box.
-pub(super) fn proved_common(
-    fa: &[Vec<BigInt>; 3],
-    s: &RealAlgebraic,
-    fb: &[Vec<BigInt>; 3],
-    t: &RealAlgebraic,
-    start: (f64, f64),
-) -> bool {
-    use num_traits::ToPrimitive;
-    if fa[2].len() != 1 || fb[2].len() != 1 {
-        return false;
-    }
-    let (wa, wb) = (&fa[2][0], &fb[2][0]);
-    let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
-    let deriv = crate::poly::polynomial::derivative_integer;
-    // F's coordinates as polynomials in σ (first curve) and τ (second curve)
-    let (xa, ya, xb, yb) = (scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa));
-    let (dxa, dya, dxb, dyb) = (deriv(&xa), deriv(&ya), deriv(&xb), deriv(&yb));
-    let floats =
-        |p: &[BigInt]| -> Option<Vec<f64>> { p.iter().map(|c| c.to_f64().filter(|x| x.is_finite())).collect() };
-    let (Some(fxa), Some(fya), Some(fxb), Some(fyb)) = (floats(&xa), floats(&ya), floats(&xb), floats(&yb)) else {
-        return false;
-    };
-    let (Some(fdxa), Some(fdya), Some(fdxb), Some(fdyb)) = (floats(&dxa), floats(&dya), floats(&dxb), floats(&dyb))
-    else {
-        return false;
-    };
-    let horner = |p: &[f64], x: f64| p.iter().rev().fold(0.0, |acc, c| acc * x + c);
+pub(super) fn proved_common(sys: &System, s: &RealAlgebraic, t: &RealAlgebraic, start: (f64, f64)) -> bool {
     let (mut u, mut v) = start;
     for _ in 0..4 {
-        let (f1, f2) = (horner(&fxa, u) - horner(&fxb, v), horner(&fya, u) - horner(&fyb, v));
-        let (a, b, c, d) = (horner(&fdxa, u), -horner(&fdxb, v), horner(&fdya, u), -horner(&fdyb, v));
-        let det = a * d - b * c;
-        if det == 0.0 || !det.is_finite() {
-            return false;
-        }
-        u -= (d * f1 - b * f2) / det;
-        v -= (a * f2 - c * f1) / det;
+        let m = [Enclosure(u, u), Enclosure(v, v)];
+        let Some(y) = sys.newton_matrix(m) else { return false };
+        let f = sys.f(m).map(|e| (e.0 + e.1) / 2.0);
+        u -= y[0][0] * f[0] + y[0][1] * f[1];
+        v -= y[1][0] * f[0] + y[1][1] * f[1];
     }
     if !u.is_finite() || !v.is_finite() {
         return false;
     }
-    // the box: some hundreds of ulps around the Newton point (wider if that fails), inside both
-    // isolating intervals
-    [256.0, 65536.0, 1.6e7]
-        .iter()
-        .any(|&ulps| krawczyk(&[&xa, &ya, &xb, &yb], &[&dxa, &dya, &dxb, &dyb], s, t, u, v, ulps))
-}
-
-/// The Krawczyk test of [`proved_common`] on the box of `ulps` around `(u, v)`: polynomials
-/// `[X_A, Y_A, X_B, Y_B]` (scaled) and their derivatives.
-fn krawczyk(
-    polys: &[&Vec<BigInt>; 4],
-    derivs: &[&Vec<BigInt>; 4],
-    s: &RealAlgebraic,
-    t: &RealAlgebraic,
-    u: f64,
-    v: f64,
-    ulps: f64,
-) -> bool {
-    let [xa, ya, xb, yb] = *polys;
-    let [dxa, dya, dxb, dyb] = *derivs;
-    let radius = |x: f64| ulps * f64::EPSILON * x.abs().max(1.0);
-    let (su, sv) = (Enclosure(u - radius(u), u + radius(u)), Enclosure(v - radius(v), v + radius(v)));
     let inside = |e: Enclosure, x: &RealAlgebraic| {
         let (lo, hi) = x.interval();
         match (BigRational::from_float(e.0), BigRational::from_float(e.1)) {
@@ -217,39 +170,38 @@ fn krawczyk(
             _ => false,
         }
     };
-    if !inside(su, s) || !inside(sv, t) {
-        return false;
-    }
-    let point = |x: f64| Enclosure(x, x);
-    let (mu, mv) = (point(u), point(v));
-    // F(m) and J(box), enclosed
-    let f1 = enclose(xa, mu).add(enclose(xb, mv).neg());
-    let f2 = enclose(ya, mu).add(enclose(yb, mv).neg());
-    let j = [[enclose(dxa, su), enclose(dxb, sv).neg()], [enclose(dya, su), enclose(dyb, sv).neg()]];
-    // Y ≈ J(m)⁻¹ (any matrix will do; the proof holds for it as given)
-    let mid = |e: Enclosure| (e.0 + e.1) / 2.0;
-    let (a, b, c, d) = (mid(enclose(dxa, mu)), -mid(enclose(dxb, mv)), mid(enclose(dya, mu)), -mid(enclose(dyb, mv)));
-    let det = a * d - b * c;
-    let y = [[d / det, -b / det], [-c / det, a / det]];
-    if y.iter().flatten().any(|x| !x.is_finite()) {
-        return false;
-    }
-    let yk = |r: usize, k: usize| point(y[r][k]);
-    let dx = [su.add(mu.neg()), sv.add(mv.neg())];
-    let m = [mu, mv];
-    let f = [f1, f2];
-    let bx = [su, sv];
-    (0..2).all(|r| {
-        // K_r = m_r − (Y F(m))_r + Σ_k (δ_rk − (Y J)_rk)(X_k − m_k)
-        let yf = yk(r, 0).mul(f[0]).add(yk(r, 1).mul(f[1]));
-        let mut k_r = m[r].add(yf.neg());
-        for k in 0..2 {
-            let yj = yk(r, 0).mul(j[0][k]).add(yk(r, 1).mul(j[1][k]));
-            let delta = if r == k { Enclosure(1.0, 1.0) } else { Enclosure(0.0, 0.0) };
-            k_r = k_r.add(delta.add(yj.neg()).mul(dx[k]));
-        }
-        k_r.0 > bx[r].0 && k_r.1 < bx[r].1
+    // the box: some hundreds of ulps around the Newton point (wider if that fails), inside both
+    // isolating intervals
+    [256.0, 65536.0, 1.6e7].iter().any(|&ulps| {
+        let around = |x: f64| {
+            let r = ulps * f64::EPSILON * x.abs().max(1.0);
+            Enclosure(x - r, x + r)
+        };
+        let x = [around(u), around(v)];
+        inside(x[0], s) && inside(x[1], t) && sys.krawczyk(x).is_some_and(|k| strictly_inside(k, x))
     })
+}
+
+/// `k` lies in the interior of `x`.
+fn strictly_inside(k: Box2, x: Box2) -> bool {
+    (0..2).all(|r| k[r].0 > x[r].0 && k[r].1 < x[r].1)
+}
+
+/// Interval arithmetic for the shared Bézoutian (never fails: an enclosure that says nothing
+/// holds `NaN`, and the caller's test then fails).
+impl super::Ring for Enclosure {
+    fn zero() -> Self {
+        Enclosure(0.0, 0.0)
+    }
+    fn plus(&self, o: &Self) -> Option<Self> {
+        Some(self.add(*o))
+    }
+    fn minus(&self, o: &Self) -> Option<Self> {
+        Some(self.add(o.neg()))
+    }
+    fn times(&self, o: &Self) -> Option<Self> {
+        Some(self.mul(*o))
+    }
 }
 
 impl Enclosure {
@@ -539,6 +491,17 @@ impl System {
         [[self.d[0].at(x[0]), self.d[2].at(x[1]).neg()], [self.d[1].at(x[0]), self.d[3].at(x[1]).neg()]]
     }
 
+    /// An `f64` inverse of the Jacobian at the point `m` (the midpoints of its enclosures):
+    /// Newton's matrix. `None` when it cannot be inverted.
+    fn newton_matrix(&self, m: Box2) -> Option<[[f64; 2]; 2]> {
+        let jm = self.jacobian(m);
+        let c = |e: Enclosure| (e.0 + e.1) / 2.0;
+        let (a, b, cc, d) = (c(jm[0][0]), c(jm[0][1]), c(jm[1][0]), c(jm[1][1]));
+        let det = a * d - b * cc;
+        let y = [[d / det, -b / det], [-cc / det, a / det]];
+        (det != 0.0 && y.iter().flatten().all(|v| v.is_finite())).then_some(y)
+    }
+
     /// Krawczyk's operator on the box `x`: `K = m − Y·F(m) + (I − Y·J(x))·(x − m)`, `m` the
     /// midpoint, `Y` an `f64` inverse of `J(m)` (any matrix keeps the proof valid). Every zero of
     /// `F` in `x` lies in `K`; `K` inside the interior of `x` proves exactly one zero there (and
@@ -550,14 +513,7 @@ impl System {
         };
         let m = [mid(x[0]), mid(x[1])];
         let fm = self.f(m);
-        let jm = self.jacobian(m);
-        let c = |e: Enclosure| (e.0 + e.1) / 2.0;
-        let (a, b, cc, d) = (c(jm[0][0]), c(jm[0][1]), c(jm[1][0]), c(jm[1][1]));
-        let det = a * d - b * cc;
-        let y = [[d / det, -b / det], [-cc / det, a / det]];
-        if det == 0.0 || y.iter().flatten().any(|v| !v.is_finite()) {
-            return None;
-        }
+        let y = self.newton_matrix(m)?;
         let yk = |r: usize, k: usize| Enclosure(y[r][k], y[r][k]);
         let j = self.jacobian(x);
         let dx = [x[0].add(m[0].neg()), x[1].add(m[1].neg())];
@@ -620,14 +576,14 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
             if k[0].apart(x[0]) || k[1].apart(x[1]) {
                 continue; // no zero
             }
-            if (0..2).all(|r| k[r].0 > x[r].0 && k[r].1 < x[r].1) {
+            if strictly_inside(k, x) {
                 zeros.push(shrink(sys, k));
                 continue;
             }
         }
         // halve the wider side (of x ∩ K, which holds every zero of x)
         let y: Box2 = match k {
-            Some(k) => std::array::from_fn(|r| Enclosure(x[r].0.max(k[r].0), x[r].1.min(k[r].1))),
+            Some(k) => std::array::from_fn(|r| x[r].meet(k[r])),
             None => x,
         };
         let r = usize::from(y[1].width() > y[0].width());
@@ -650,7 +606,7 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
 fn shrink(sys: &System, mut x: Box2) -> Box2 {
     for _ in 0..8 {
         let Some(k) = sys.krawczyk(x) else { break };
-        let y: Box2 = std::array::from_fn(|r| Enclosure(x[r].0.max(k[r].0), x[r].1.min(k[r].1)));
+        let y: Box2 = std::array::from_fn(|r| x[r].meet(k[r]));
         if y.iter().any(|e| e.0.partial_cmp(&e.1).is_none_or(|o| o == std::cmp::Ordering::Greater)) {
             break;
         }

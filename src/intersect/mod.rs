@@ -200,28 +200,90 @@ fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
         return resultant_zv(&f, &g);
     }
     let m = df.unwrap_or_default();
-    if let Some(matrix) = implicit_matrix_small(fa, fb, m) {
-        return zv::det(matrix);
+    // in checked i128 when the coefficients allow (no allocation), else in BigInt
+    let small = |f: &[Vec<BigInt>; 3]| -> Option<[Vec<i128>; 3]> {
+        let row = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
+        Some([row(&f[0])?, row(&f[1])?, row(&f[2])?])
+    };
+    let matrix: Vec<Vec<zv::P>> = match small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m)) {
+        Some(mm) => mm
+            .into_iter()
+            .map(|row| row.into_iter().map(|e| zv::trim(e.into_iter().map(BigInt::from).collect())).collect())
+            .collect(),
+        None => implicit_matrix(fa, fb, m)
+            .expect("BigInt arithmetic does not overflow")
+            .into_iter()
+            .map(|row| row.into_iter().map(zv::trim).collect())
+            .collect(),
+    };
+    zv::det(matrix)
+}
+
+/// The arithmetic of [`bezoutian`] and [`implicit_matrix`], fallible where the type overflows
+/// (checked `i128`; `BigInt` and the filter's enclosures never fail).
+trait Ring: Clone {
+    fn zero() -> Self;
+    fn plus(&self, o: &Self) -> Option<Self>;
+    fn minus(&self, o: &Self) -> Option<Self>;
+    fn times(&self, o: &Self) -> Option<Self>;
+}
+
+impl Ring for BigInt {
+    fn zero() -> Self {
+        BigInt::default()
     }
-    let (b1, b2, b3) = (bezoutian(&fb[2], &fb[1], m), bezoutian(&fb[0], &fb[2], m), bezoutian(&fb[0], &fb[1], m));
+    fn plus(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+    fn minus(&self, o: &Self) -> Option<Self> {
+        Some(self - o)
+    }
+    fn times(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+}
+
+impl Ring for i128 {
+    fn zero() -> Self {
+        0
+    }
+    fn plus(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    fn minus(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    fn times(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+}
+
+/// The coefficient of `t^k` (zero past the end).
+fn coefficient<T: Ring>(p: &[T], k: usize) -> T {
+    p.get(k).cloned().unwrap_or_else(T::zero)
+}
+
+/// [`eliminate`]'s implicit matrix `M(A(s))` of order `m`, entries polynomials in `s`:
+/// `M_ij = W_A·Bz(X_B, Y_B)_ij − X_A·Bz(W_B, Y_B)_ij − Y_A·Bz(X_B, W_B)_ij`. `None` on an overflow.
+fn implicit_matrix<T: Ring>(fa: &[Vec<T>; 3], fb: &[Vec<T>; 3], m: usize) -> Option<Vec<Vec<Vec<T>>>> {
+    let (b1, b2, b3) = (bezoutian(&fb[2], &fb[1], m)?, bezoutian(&fb[0], &fb[2], m)?, bezoutian(&fb[0], &fb[1], m)?);
     let len = fa.iter().map(Vec::len).max().unwrap_or(0);
-    let get = |p: &[BigInt], k: usize| p.get(k).cloned().unwrap_or_default();
-    let matrix: Vec<Vec<zv::P>> = (0..m)
+    (0..m)
         .map(|i| {
             (0..m)
                 .map(|j| {
-                    zv::trim(
-                        (0..len)
-                            .map(|k| {
-                                get(&fa[2], k) * &b3[i][j] - get(&fa[0], k) * &b1[i][j] - get(&fa[1], k) * &b2[i][j]
-                            })
-                            .collect(),
-                    )
+                    (0..len)
+                        .map(|k| {
+                            let w = coefficient(&fa[2], k).times(&b3[i][j])?;
+                            let x = coefficient(&fa[0], k).times(&b1[i][j])?;
+                            let y = coefficient(&fa[1], k).times(&b2[i][j])?;
+                            w.minus(&x)?.minus(&y)
+                        })
+                        .collect()
                 })
                 .collect()
         })
-        .collect();
-    zv::det(matrix)
+        .collect()
 }
 
 /// The degree in `t` of [`cross_system`]`(fa, wa, fb, wb)` (`None` when it vanishes), without
@@ -235,74 +297,33 @@ fn cross_degree(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> O
     })
 }
 
-/// [`eliminate`]'s implicit matrix `M(A(s))` (order `m`) in `i128` arithmetic, every operation
-/// checked: `None` on an overflow (the `BigInt` route then builds it). Font-sized coordinates
-/// stay far below the limits, and `i128` costs no allocation.
-fn implicit_matrix_small(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3], m: usize) -> Option<Vec<Vec<zv::P>>> {
-    use num_traits::ToPrimitive;
-    let small = |p: &[BigInt]| -> Option<Vec<i128>> { p.iter().map(ToPrimitive::to_i128).collect() };
-    let (pa, pb): (Vec<Vec<i128>>, Vec<Vec<i128>>) =
-        (fa.iter().map(|p| small(p)).collect::<Option<_>>()?, fb.iter().map(|p| small(p)).collect::<Option<_>>()?);
-    let get = |p: &[i128], i: usize| p.get(i).copied().unwrap_or(0);
-    let bez = |p: &[i128], q: &[i128]| -> Option<Vec<Vec<i128>>> {
-        let n = m + 1;
-        let mut out = vec![vec![0i128; n]; n];
-        for j in 0..n {
-            for i in (1..n).rev() {
-                let prev = if j > 0 { out[i][j - 1] } else { 0 };
-                let v = get(p, i).checked_mul(get(q, j))?.checked_sub(get(p, j).checked_mul(get(q, i))?)?;
-                out[i - 1][j] = v.checked_add(prev)?;
-            }
-        }
-        Some(out)
-    };
-    let (b1, b2, b3) = (bez(&pb[2], &pb[1])?, bez(&pb[0], &pb[2])?, bez(&pb[0], &pb[1])?);
-    let len = pa.iter().map(Vec::len).max().unwrap_or(0);
-    (0..m)
-        .map(|i| {
-            (0..m)
-                .map(|j| {
-                    (0..len)
-                        .map(|k| {
-                            let w = get(&pa[2], k).checked_mul(b3[i][j])?;
-                            let x = get(&pa[0], k).checked_mul(b1[i][j])?;
-                            let y = get(&pa[1], k).checked_mul(b2[i][j])?;
-                            Some(BigInt::from(w.checked_sub(x)?.checked_sub(y)?))
-                        })
-                        .collect::<Option<Vec<BigInt>>>()
-                        .map(zv::trim)
-                })
-                .collect()
-        })
-        .collect()
-}
-
-/// The Bézoutian of `p` and `q` in formal degree `m`: the `m × m` integer matrix `Q` with
+/// The Bézoutian of `p` and `q` in formal degree `m`: the `m × m` matrix `Q` with
 /// `p(t)q(u) − p(u)q(t) = (t − u)·Σ Q_ij t^i u^j`. From `P_ij = p_i q_j − p_j q_i` and
-/// `P_ij = Q_(i−1)j − Q_i(j−1)`: `Q_(i−1)j = P_ij + Q_i(j−1)`.
-fn bezoutian(p: &[BigInt], q: &[BigInt], m: usize) -> Vec<Vec<BigInt>> {
-    let get = |v: &[BigInt], i: usize| v.get(i).cloned().unwrap_or_default();
+/// `P_ij = Q_(i−1)j − Q_i(j−1)`: `Q_(i−1)j = P_ij + Q_i(j−1)`. One recurrence for every use:
+/// integers (the implicit matrix, in `i128` or `BigInt`; the divided differences) and `f64`
+/// enclosures ([`filter::no_common_root`]). `None` on an overflow.
+fn bezoutian<T: Ring>(p: &[T], q: &[T], m: usize) -> Option<Vec<Vec<T>>> {
     let n = m + 1;
-    let mut out = vec![vec![BigInt::default(); n]; n];
+    let mut out = vec![vec![T::zero(); n]; n];
     for j in 0..n {
         for i in (1..n).rev() {
-            let prev = if j > 0 { out[i][j - 1].clone() } else { BigInt::default() };
-            out[i - 1][j] = get(p, i) * get(q, j) - get(p, j) * get(q, i) + prev;
+            let prev = if j > 0 { out[i][j - 1].clone() } else { T::zero() };
+            let pij =
+                coefficient(p, i).times(&coefficient(q, j))?.minus(&coefficient(p, j).times(&coefficient(q, i))?)?;
+            out[i - 1][j] = pij.plus(&prev)?;
         }
     }
     out.truncate(m);
     for row in &mut out {
         row.truncate(m);
     }
-    out
+    Some(out)
 }
 
 /// The distinct roots of `r` (integer coefficients, non-zero) in the domain, and whether `r` is
 /// square-free (every root simple).
 fn roots(r: &[BigInt], domain: Domain) -> (Vec<RealAlgebraic>, bool) {
-    let p = crate::poly::polynomial::primitive_part(r.to_vec());
-    let sf = crate::poly::polynomial::square_free_integer(p.clone());
-    let simple = sf.len() == p.len();
+    let (sf, simple) = square_free_part(r);
     if sf.len() <= 1 {
         return (vec![], simple);
     }
@@ -311,6 +332,15 @@ fn roots(r: &[BigInt], domain: Domain) -> (Vec<RealAlgebraic>, bool) {
         Domain::All => RealAlgebraic::real_roots(&to_rational(&sf)),
     };
     (roots, simple)
+}
+
+/// The primitive square-free part of `r` (integer coefficients, non-zero), and whether `r`
+/// was square-free already.
+fn square_free_part(r: &[BigInt]) -> (Vec<BigInt>, bool) {
+    let p = crate::poly::polynomial::primitive_part(r.to_vec());
+    let sf = crate::poly::polynomial::square_free_integer(p.clone());
+    let simple = sf.len() == p.len();
+    (sf, simple)
 }
 
 /// The roots where the curve's weight does not vanish (with every real parameter allowed, a
@@ -552,8 +582,10 @@ fn intersect_forms(
         return overlap::overlap(fa, fb, domain);
     }
     let t_poly = eliminate(fb, fa);
-    if let Regions::Within { boxes } = regions
-        && let Some(found) = solved_in_boxes(fa, fb, &r, &t_poly, boxes)
+    // the system A(σ) − B(τ) in f64 enclosures, for the certified steps (polynomial curves)
+    let sys = filter::System::new(fa, fb);
+    if let (Regions::Within { boxes }, Some(sys)) = (regions, &sys)
+        && let Some(found) = solved_in_boxes(sys, (fa, fb), (&r, &t_poly), boxes)
     {
         return Ok(found);
     }
@@ -562,10 +594,7 @@ fn intersect_forms(
     let ((ss, r_simple), (ts, t_simple)) = (roots(&r, domain), roots(&t_poly, domain));
     let (mut ss, mut ts) = (finite_roots(ss, fa), finite_roots(ts, fb));
     // each root's interval in f64, widened outwards, for the filter's candidate boxes
-    let outward = |x: &RealAlgebraic| {
-        let (lo, hi) = x.interval();
-        (crate::num::scalar::ratio_to_f64(&lo).next_down(), crate::num::scalar::ratio_to_f64(&hi).next_up())
-    };
+    let outward = filter::outward;
     let boxes = match regions {
         Regions::Within { boxes } => Some(&boxes[..]),
         _ => None,
@@ -609,7 +638,7 @@ fn intersect_forms(
                 continue;
             }
             let (s_float, t_float) = (*s_float, *t_float);
-            let same = proved_common(fa, s, fb, t, (s_float, t_float)) || {
+            let same = sys.as_ref().is_some_and(|sys| proved_common(sys, s, t, (s_float, t_float))) || {
                 let p = pa[i].get_or_insert_with(|| point_at(fa, s)).clone();
                 let q = pb[j].get_or_insert_with(|| point_at(fb, t));
                 p[0] == q[0] && p[1] == q[1]
@@ -636,8 +665,8 @@ fn intersect_forms(
     Ok(Intersections { intersections: out, overlaps: vec![] })
 }
 
-/// The fast route of [`intersect_forms`] for polynomial curves on the unit square (resultants
-/// `r` in `s` and `t_poly` in `t`, non-zero): the filter's candidate `boxes` solved by
+/// The fast route of [`intersect_forms`] for polynomial curves on the unit square (their system
+/// `sys`, resultants `r` in `s` and `t_poly` in `t`, non-zero): the filter's candidate `boxes` solved by
 /// [`filter::solve`] (each proved empty or holding exactly one transversal crossing), then
 /// each crossing's parameters made exact without isolating the resultants' roots: the
 /// square-free part `p` of a resultant vanishes at the crossing's parameter `σ` (the system has
@@ -649,25 +678,17 @@ fn intersect_forms(
 /// decides) whenever a step is not proved, or the resultants are both not square-free (contact
 /// orders then come from multiplicities).
 fn solved_in_boxes(
-    fa: &[Vec<BigInt>; 3],
-    fb: &[Vec<BigInt>; 3],
-    r: &[BigInt],
-    t_poly: &[BigInt],
+    sys: &filter::System,
+    (fa, fb): (&[Vec<BigInt>; 3], &[Vec<BigInt>; 3]),
+    (r, t_poly): (&[BigInt], &[BigInt]),
     boxes: &[[f64; 4]],
 ) -> Option<Intersections> {
-    use crate::poly::polynomial::{derivative_integer, primitive_part, square_free_integer};
-    let sys = filter::System::new(fa, fb)?;
-    let zeros = filter::solve(&sys, boxes)?;
+    use crate::poly::polynomial::derivative_integer;
+    let zeros = filter::solve(sys, boxes)?;
     if zeros.is_empty() {
         return Some(Intersections { intersections: vec![], overlaps: vec![] });
     }
-    let square_free = |p: &[BigInt]| {
-        let p = primitive_part(p.to_vec());
-        let sf = square_free_integer(p.clone());
-        let simple = sf.len() == p.len();
-        (sf, simple)
-    };
-    let ((ps, s_simple), (pt, t_simple)) = (square_free(r), square_free(t_poly));
+    let ((ps, s_simple), (pt, t_simple)) = (square_free_part(r), square_free_part(t_poly));
     if !(s_simple || t_simple) || ps.len() < 2 || pt.len() < 2 {
         return None;
     }
@@ -730,18 +751,9 @@ fn root_in_cell(
 
 /// `(F(s)W(t) − F(t)W(s)) / (s − t)` as a polynomial in `t` with coefficients in `Z[s]`.
 fn divided_difference(f: &[BigInt], w: &[BigInt]) -> Vec<zv::P> {
+    // Q[i][j], the coefficient of s^i t^j: the Bézoutian of f and w in formal degree n
     let n = f.len().max(w.len());
-    let get = |p: &[BigInt], i: usize| p.get(i).cloned().unwrap_or_default();
-    // P[i][j]: coefficient of s^i t^j
-    let p = |i: usize, j: usize| get(f, i) * get(w, j) - get(f, j) * get(w, i);
-    // P = (s − t)·Q: P[i][j] = Q[i−1][j] − Q[i][j−1], so Q[i−1][j] = P[i][j] + Q[i][j−1]
-    let mut q = vec![vec![BigInt::default(); n]; n];
-    for j in 0..n {
-        for i in (1..n).rev() {
-            let prev = if j > 0 { q[i][j - 1].clone() } else { BigInt::default() };
-            q[i - 1][j] = p(i, j) + prev;
-        }
-    }
+    let q = bezoutian(f, w, n).expect("BigInt arithmetic does not overflow");
     let mut out: Vec<zv::P> = (0..n).map(|j| zv::trim((0..n).map(|i| q[i][j].clone()).collect())).collect();
     while out.last().is_some_and(|c| c.is_empty()) {
         out.pop();
@@ -967,6 +979,7 @@ mod filter_tests {
         for _ in 0..12 {
             let (a, b) = (cubic(std::array::from_fn(|_| next(2048))), cubic(std::array::from_fn(|_| next(2048))));
             let (fa, fb) = (integer_forms(&a), integer_forms(&b));
+            let sys = filter::System::new(&fa, &fb).expect("polynomial curves");
             let r = resultant_zv(
                 &cross_system(&fa[0], &fa[2], &fb[0], &fb[2]),
                 &cross_system(&fa[1], &fa[2], &fb[1], &fb[2]),
@@ -982,7 +995,7 @@ mod filter_tests {
                     if apart(&fa, &s, &fb, &t) {
                         assert!(!equal, "apart, but A(s) = B(t)");
                     }
-                    if proved_common(&fa, &s, &fb, &t, (s.to_f64(), t.to_f64())) {
+                    if proved_common(&sys, &s, &t, (s.to_f64(), t.to_f64())) {
                         assert!(equal, "proved common, but A(s) ≠ B(t)");
                         proved += 1;
                     }
@@ -1064,7 +1077,9 @@ mod filter_tests {
             meeting += 1;
             crossings += exact.intersections.len();
             let Regions::Within { boxes } = candidate_regions(&ra, &rb) else { panic!("they meet") };
-            let Some(found) = solved_in_boxes(&fa, &fb, &eliminate(&fa, &fb), &eliminate(&fb, &fa), &boxes) else {
+            let sys = filter::System::new(&fa, &fb).expect("polynomial curves");
+            let Some(found) = solved_in_boxes(&sys, (&fa, &fb), (&eliminate(&fa, &fb), &eliminate(&fb, &fa)), &boxes)
+            else {
                 continue;
             };
             fast += 1;
@@ -1099,7 +1114,9 @@ mod filter_tests {
             let hit = exact.intersections.iter().find(|x| x.s.to_rational() == Some(&third)).expect("A(1/3) is on B");
             assert_eq!((hit.t.to_rational(), hit.point.as_ref()), (Some(&third), Some(&Point::new(p.coords.clone()))));
             let Regions::Within { boxes } = candidate_regions(&ra, &rb) else { panic!("they meet") };
-            if let Some(found) = solved_in_boxes(&fa, &fb, &eliminate(&fa, &fb), &eliminate(&fb, &fa), &boxes) {
+            let sys = filter::System::new(&fa, &fb).expect("polynomial curves");
+            if let Some(found) = solved_in_boxes(&sys, (&fa, &fb), (&eliminate(&fa, &fb), &eliminate(&fb, &fa)), &boxes)
+            {
                 assert_eq!(found, exact);
                 answered += 1;
             }
@@ -1211,6 +1228,7 @@ mod filter_tests {
         assert_eq!(k.intersections.len(), 1);
         assert_eq!(k.intersections[0].kind, Kind::Tangent);
         let i = &k.intersections[0];
-        assert!(!proved_common(&fa, &i.s, &fb, &i.t, (i.s_float, i.t_float)));
+        let sys = filter::System::new(&fa, &fb).expect("polynomial curves");
+        assert!(!proved_common(&sys, &i.s, &i.t, (i.s_float, i.t_float)));
     }
 }

@@ -553,6 +553,13 @@ pub(crate) fn rem_u64(n: &num_bigint::BigUint, m: u64) -> u64 {
     n.iter_u64_digits().rev().fold(0u64, |r, d| ((u128::from(r) << 64 | u128::from(d)) % u128::from(m)) as u64)
 }
 
+/// `n mod m` in `[0, m)` for a signed `n` and `m < 2^64` ([`rem_u64`] of the magnitude, negated
+/// modulo `m` for a negative `n`).
+pub(crate) fn residue(n: &num_bigint::BigInt, m: u64) -> u64 {
+    let r = rem_u64(n.magnitude(), m);
+    if n.sign() == num_bigint::Sign::Minus && r != 0 { m - r } else { r }
+}
+
 /// [`extract_small_squares`] of a big number: `(k, m)` with `n = k²·m` and `m` free of the
 /// squares of primes below 1000 (the rule of [`QuadraticExt::sqrt`](crate::QuadraticExt)).
 /// Divisibility is read from one remainder per group of primes ([`PRIME_GROUPS`]), not one big

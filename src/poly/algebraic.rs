@@ -185,10 +185,7 @@ fn isolate_power(p: &[BigInt], lo: &BigRational, hi: &BigRational) -> Vec<Root> 
 pub(crate) fn no_rational_roots(p: &[BigInt]) -> bool {
     const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
     let Some(lc) = p.last() else { return false };
-    let residue = |c: &BigInt, q: u64| {
-        let r = crate::num::small::rem_u64(c.magnitude(), q);
-        if c.is_negative() && r != 0 { q - r } else { r }
-    };
+    let residue = crate::num::small::residue;
     PRIMES.iter().any(|&q| {
         if residue(lc, q) == 0 {
             return false;
@@ -248,46 +245,29 @@ fn cauchy_bound(p: &[BigRational]) -> BigRational {
 }
 
 /// The simplest rational (smallest denominator, then numerator) in the closed interval
-/// `[lo, hi]`, by continued fractions (Stern–Brocot).
+/// `[lo, hi]`, by continued fractions (Stern–Brocot; the crate's bounded search without a
+/// bound).
 pub fn simplest_rational(lo: &BigRational, hi: &BigRational) -> BigRational {
     debug_assert!(lo <= hi);
-    if lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less {
-        return rat(0);
-    }
-    if hi.sign() == Ordering::Less {
-        return -simplest_rational(&-hi.clone(), &-lo.clone());
-    }
-    // 0 < lo ≤ hi: integer parts until an integer fits, then fold back (iteratively)
-    let (mut lo, mut hi) = (lo.clone(), hi.clone());
-    let mut parts: Vec<BigRational> = vec![];
-    loop {
-        let c = lo.ceil();
-        if c <= hi {
-            let mut x = c;
-            for f in parts.into_iter().rev() {
-                x = f + x.recip();
-            }
-            return x;
-        }
-        let f = lo.floor();
-        let (l2, h2) = ((hi.clone() - &f).recip(), (lo.clone() - &f).recip());
-        parts.push(f);
-        lo = l2;
-        hi = h2;
-    }
+    simplest_rational_bounded(lo, hi, None).expect("no bound on the denominator")
 }
 
-/// The simplest rational in the closed interval `[lo, hi]` (the least denominator, as
-/// [`simplest_rational`]) when its denominator is at most `max_den`; `None` otherwise. Integer
-/// continued fractions (no gcd), stopped as soon as a convergent's denominator — a lower bound
-/// for the answer's — exceeds `max_den`.
-pub(crate) fn simplest_rational_bounded(lo: &BigRational, hi: &BigRational, max_den: &BigInt) -> Option<BigRational> {
+/// The simplest rational in the closed interval `[lo, hi]` (as [`simplest_rational`]) when its
+/// denominator is at most `max_den` (any, for `None`); `None` otherwise. Integer continued
+/// fractions (no gcd), stopped as soon as a convergent's denominator — a lower bound for the
+/// answer's — exceeds `max_den`.
+pub(crate) fn simplest_rational_bounded(
+    lo: &BigRational,
+    hi: &BigRational,
+    max_den: Option<&BigInt>,
+) -> Option<BigRational> {
     if lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less {
         return Some(rat(0));
     }
     if hi.sign() == Ordering::Less {
         return simplest_rational_bounded(&-hi.clone(), &-lo.clone(), max_den).map(|x| -x);
     }
+    let within = |k: &BigInt| max_den.is_none_or(|m| k <= m);
     // 0 < a/b ≤ c/d (b, d > 0)
     let (mut a, mut b, mut c, mut d) = (lo.numer().clone(), lo.denom().clone(), hi.numer().clone(), hi.denom().clone());
     let mut parts: Vec<BigInt> = vec![];
@@ -305,11 +285,11 @@ pub(crate) fn simplest_rational_bounded(lo: &BigRational, hi: &BigRational, max_
                 den = num;
                 num = next;
             }
-            return (den <= *max_den).then(|| BigRational::new_raw(num, den));
+            return within(&den).then(|| BigRational::new_raw(num, den));
         }
         // both in (q, q+1): subtract q and invert (the order flips)
         let k = &q * &k1 + &k2;
-        if k > *max_den {
+        if !within(&k) {
             return None;
         }
         (k2, k1) = (k1, k);
@@ -472,7 +452,7 @@ impl RealAlgebraic {
         let Repr::Root { poly, lo, hi } = &self.0 else { return };
         // two fractions with denominators ≤ lc are 1/lc² apart or more: at most one lies inside,
         // the simplest one if any
-        if let Some(c) = simplest_rational_bounded(lo, hi, &lc)
+        if let Some(c) = simplest_rational_bounded(lo, hi, Some(&lc))
             && sign_at(poly, &c) == Ordering::Equal
         {
             self.0 = Repr::Rational(c);
@@ -1647,19 +1627,40 @@ mod tests {
     use super::*;
     use crate::num::scalar::ratio;
 
-    /// The bounded search agrees with the plain one: the same fraction when its denominator is
-    /// within the bound, `None` otherwise (random intervals, several bounds).
+    /// The simplest rational against a search by denominators (the least `q` with a fraction
+    /// `p/q` inside, `p` the least in magnitude), and the bounded search against it: the same
+    /// fraction when its denominator is within the bound, `None` otherwise.
     #[test]
-    fn bounded_simplest_rational_matches_the_plain_one() {
+    fn simplest_rational_matches_a_search_by_denominators() {
+        let search = |lo: &BigRational, hi: &BigRational| -> BigRational {
+            if lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less {
+                return rat(0);
+            }
+            let (l, h, sign) = if lo.sign() == Ordering::Greater {
+                (lo.clone(), hi.clone(), 1)
+            } else {
+                (-hi.clone(), -lo.clone(), -1)
+            };
+            (1i64..)
+                .find_map(|q| {
+                    let p = (l.clone() * rat(q)).ceil();
+                    (p <= h.clone() * rat(q)).then(|| p / rat(q) * rat(sign))
+                })
+                .expect("a fraction in every interval")
+        };
         let mut next = crate::num::symmetric(0x005E_ED0F_F4AC_7105);
         for _ in 0..400 {
             let (a, b) = (ratio(next(5000), next(400).abs() + 1), ratio(next(5000), next(400).abs() + 1));
             let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
-            let plain = simplest_rational(&lo, &hi);
+            let expected = search(&lo, &hi);
+            assert_eq!(simplest_rational(&lo, &hi), expected, "[{lo}, {hi}]");
             for bound in [1, 3, 17, 400, 100000] {
-                let bounded = simplest_rational_bounded(&lo, &hi, &BigInt::from(bound));
-                let expected = (*plain.denom() <= BigInt::from(bound)).then(|| plain.clone());
-                assert_eq!(bounded, expected, "[{lo}, {hi}] bound {bound}");
+                let bounded = simplest_rational_bounded(&lo, &hi, Some(&BigInt::from(bound)));
+                assert_eq!(
+                    bounded,
+                    (*expected.denom() <= BigInt::from(bound)).then(|| expected.clone()),
+                    "[{lo}, {hi}] bound {bound}"
+                );
             }
         }
     }

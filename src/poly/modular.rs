@@ -27,7 +27,7 @@
 //! assert_eq!(min_factor_degree(&p(&[-1, -1, -1, 0, 0, 1]), 5), 2);
 //! ```
 
-use num_bigint::{BigInt, Sign};
+use num_bigint::BigInt;
 
 /// Primes between `2^8` and `2^9`, of every residue class mod 8 and mod 3 (primes of one class
 /// would split the same small factors every time): raising to the `q`-th power takes eight
@@ -113,14 +113,7 @@ fn factor_degrees(p: &[BigInt], q: u32, below: usize) -> Option<Vec<usize>> {
 
 /// `p mod q`, residues in `[0, q)`.
 fn reduce(p: &[BigInt], q: u32) -> Poly {
-    trim(
-        p.iter()
-            .map(|c| {
-                let r = crate::num::small::rem_u64(c.magnitude(), u64::from(q)) as u32;
-                if c.sign() == Sign::Minus && r != 0 { q - r } else { r }
-            })
-            .collect(),
-    )
+    trim(p.iter().map(|c| crate::num::small::residue(c, u64::from(q)) as u32).collect())
 }
 
 fn trim(mut p: Poly) -> Poly {

@@ -197,13 +197,7 @@ const MODULAR_PRIMES: [u64; 3] = [2_147_483_647, 2_147_483_629, 2_147_483_587];
 /// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
 fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
     let reduce = |p: &[BigInt]| -> Vec<u64> {
-        let mut v: Vec<u64> = p
-            .iter()
-            .map(|x| {
-                let r = crate::num::small::rem_u64(x.magnitude(), q);
-                if x.is_negative() && r != 0 { q - r } else { r }
-            })
-            .collect();
+        let mut v: Vec<u64> = p.iter().map(|x| crate::num::small::residue(x, q)).collect();
         while v.last() == Some(&0) {
             v.pop();
         }
