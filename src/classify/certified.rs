@@ -21,19 +21,14 @@
 use crate::classify::{CurveClass, NodeType, SegmentCategory, SegmentFeatures};
 use crate::curve::bezier::BezierCurve;
 use crate::curve::fraction_free::IntegerCurve;
+use crate::num::CheckedRing;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 
-/// Ring arithmetic with a possibly undecided sign.
-pub trait SignRing: Clone + Sized {
-    /// `a + b`, `None` on overflow.
-    fn add(&self, o: &Self) -> Option<Self>;
-    /// `a − b`, `None` on overflow.
-    fn sub(&self, o: &Self) -> Option<Self>;
-    /// `a · b`, `None` on overflow.
-    fn mul(&self, o: &Self) -> Option<Self>;
+/// Ring arithmetic ([`CheckedRing`]) with a possibly undecided sign.
+pub trait SignRing: CheckedRing {
     /// `k · a` for a small integer `k`.
     fn scale(&self, k: i64) -> Option<Self>;
     /// The sign, or `None` when it cannot be certified.
@@ -41,15 +36,6 @@ pub trait SignRing: Clone + Sized {
 }
 
 impl SignRing for i128 {
-    fn add(&self, o: &Self) -> Option<Self> {
-        self.checked_add(*o)
-    }
-    fn sub(&self, o: &Self) -> Option<Self> {
-        self.checked_sub(*o)
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        self.checked_mul(*o)
-    }
     fn scale(&self, k: i64) -> Option<Self> {
         self.checked_mul(k as i128)
     }
@@ -59,15 +45,6 @@ impl SignRing for i128 {
 }
 
 impl SignRing for BigInt {
-    fn add(&self, o: &Self) -> Option<Self> {
-        Some(self + o)
-    }
-    fn sub(&self, o: &Self) -> Option<Self> {
-        Some(self - o)
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        Some(self * o)
-    }
     fn scale(&self, k: i64) -> Option<Self> {
         Some(self * k)
     }
@@ -91,7 +68,10 @@ pub struct SmallInt(pub i128);
 /// Largest |coordinate| (exclusive) for which [`SmallInt`] arithmetic cannot overflow.
 pub const SMALL_INT_LIMIT: i64 = 1 << 24;
 
-impl SignRing for SmallInt {
+impl CheckedRing for SmallInt {
+    fn zero() -> Self {
+        SmallInt(0)
+    }
     fn add(&self, o: &Self) -> Option<Self> {
         Some(SmallInt(self.0 + o.0))
     }
@@ -101,6 +81,9 @@ impl SignRing for SmallInt {
     fn mul(&self, o: &Self) -> Option<Self> {
         Some(SmallInt(self.0 * o.0))
     }
+}
+
+impl SignRing for SmallInt {
     fn scale(&self, k: i64) -> Option<Self> {
         Some(SmallInt(self.0 * k as i128))
     }
@@ -111,7 +94,10 @@ impl SignRing for SmallInt {
 
 /// Plain `f64`: **not exact** — the baseline a float classifier would be. Its signs are taken
 /// at face value.
-impl SignRing for f64 {
+impl CheckedRing for f64 {
+    fn zero() -> Self {
+        0.0
+    }
     fn add(&self, o: &Self) -> Option<Self> {
         Some(self + o)
     }
@@ -121,6 +107,9 @@ impl SignRing for f64 {
     fn mul(&self, o: &Self) -> Option<Self> {
         Some(self * o)
     }
+}
+
+impl SignRing for f64 {
     fn scale(&self, k: i64) -> Option<Self> {
         Some(self * k as f64)
     }
@@ -165,7 +154,10 @@ impl Certified {
     }
 }
 
-impl SignRing for Certified {
+impl CheckedRing for Certified {
+    fn zero() -> Self {
+        Certified::exact(0.0)
+    }
     fn add(&self, o: &Self) -> Option<Self> {
         Certified::round(self.v + o.v, self.e + o.e, self.is_exact_int() && o.is_exact_int())
     }
@@ -176,6 +168,9 @@ impl SignRing for Certified {
         let e = self.v.abs() * o.e + o.v.abs() * self.e + self.e * o.e;
         Certified::round(self.v * o.v, e * (1.0 + 4.0 * U), self.is_exact_int() && o.is_exact_int())
     }
+}
+
+impl SignRing for Certified {
     fn scale(&self, k: i64) -> Option<Self> {
         self.mul(&Certified::exact(k as f64))
     }

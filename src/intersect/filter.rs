@@ -189,18 +189,18 @@ fn strictly_inside(k: Box2, x: Box2) -> bool {
 
 /// Interval arithmetic for the shared Bézoutian (never fails: an enclosure that says nothing
 /// holds `NaN`, and the caller's test then fails).
-impl super::Ring for Enclosure {
+impl crate::num::CheckedRing for Enclosure {
     fn zero() -> Self {
         Enclosure(0.0, 0.0)
     }
-    fn plus(&self, o: &Self) -> Option<Self> {
-        Some(self.add(*o))
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(Enclosure::add(*self, *o))
     }
-    fn minus(&self, o: &Self) -> Option<Self> {
-        Some(self.add(o.neg()))
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(Enclosure::add(*self, o.neg()))
     }
-    fn times(&self, o: &Self) -> Option<Self> {
-        Some(self.mul(*o))
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(Enclosure::mul(*self, *o))
     }
 }
 

@@ -36,6 +36,7 @@ use filter::{Regions, apart, candidate_regions, proved_common};
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
+use crate::num::CheckedRing;
 use crate::num::point::Point;
 use crate::num::scalar::rat;
 use crate::poly::algebraic::{RealAlgebraic, resultant_zv, zv};
@@ -219,53 +220,14 @@ fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
     zv::det(matrix)
 }
 
-/// The arithmetic of [`bezoutian`] and [`implicit_matrix`], fallible where the type overflows
-/// (checked `i128`; `BigInt` and the filter's enclosures never fail).
-trait Ring: Clone {
-    fn zero() -> Self;
-    fn plus(&self, o: &Self) -> Option<Self>;
-    fn minus(&self, o: &Self) -> Option<Self>;
-    fn times(&self, o: &Self) -> Option<Self>;
-}
-
-impl Ring for BigInt {
-    fn zero() -> Self {
-        BigInt::default()
-    }
-    fn plus(&self, o: &Self) -> Option<Self> {
-        Some(self + o)
-    }
-    fn minus(&self, o: &Self) -> Option<Self> {
-        Some(self - o)
-    }
-    fn times(&self, o: &Self) -> Option<Self> {
-        Some(self * o)
-    }
-}
-
-impl Ring for i128 {
-    fn zero() -> Self {
-        0
-    }
-    fn plus(&self, o: &Self) -> Option<Self> {
-        self.checked_add(*o)
-    }
-    fn minus(&self, o: &Self) -> Option<Self> {
-        self.checked_sub(*o)
-    }
-    fn times(&self, o: &Self) -> Option<Self> {
-        self.checked_mul(*o)
-    }
-}
-
 /// The coefficient of `t^k` (zero past the end).
-fn coefficient<T: Ring>(p: &[T], k: usize) -> T {
+fn coefficient<T: CheckedRing>(p: &[T], k: usize) -> T {
     p.get(k).cloned().unwrap_or_else(T::zero)
 }
 
 /// [`eliminate`]'s implicit matrix `M(A(s))` of order `m`, entries polynomials in `s`:
 /// `M_ij = W_A·Bz(X_B, Y_B)_ij − X_A·Bz(W_B, Y_B)_ij − Y_A·Bz(X_B, W_B)_ij`. `None` on an overflow.
-fn implicit_matrix<T: Ring>(fa: &[Vec<T>; 3], fb: &[Vec<T>; 3], m: usize) -> Option<Vec<Vec<Vec<T>>>> {
+fn implicit_matrix<T: CheckedRing>(fa: &[Vec<T>; 3], fb: &[Vec<T>; 3], m: usize) -> Option<Vec<Vec<Vec<T>>>> {
     let (b1, b2, b3) = (bezoutian(&fb[2], &fb[1], m)?, bezoutian(&fb[0], &fb[2], m)?, bezoutian(&fb[0], &fb[1], m)?);
     let len = fa.iter().map(Vec::len).max().unwrap_or(0);
     (0..m)
@@ -274,10 +236,10 @@ fn implicit_matrix<T: Ring>(fa: &[Vec<T>; 3], fb: &[Vec<T>; 3], m: usize) -> Opt
                 .map(|j| {
                     (0..len)
                         .map(|k| {
-                            let w = coefficient(&fa[2], k).times(&b3[i][j])?;
-                            let x = coefficient(&fa[0], k).times(&b1[i][j])?;
-                            let y = coefficient(&fa[1], k).times(&b2[i][j])?;
-                            w.minus(&x)?.minus(&y)
+                            let w = coefficient(&fa[2], k).mul(&b3[i][j])?;
+                            let x = coefficient(&fa[0], k).mul(&b1[i][j])?;
+                            let y = coefficient(&fa[1], k).mul(&b2[i][j])?;
+                            w.sub(&x)?.sub(&y)
                         })
                         .collect()
                 })
@@ -302,15 +264,14 @@ fn cross_degree(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> O
 /// `P_ij = Q_(i−1)j − Q_i(j−1)`: `Q_(i−1)j = P_ij + Q_i(j−1)`. One recurrence for every use:
 /// integers (the implicit matrix, in `i128` or `BigInt`; the divided differences) and `f64`
 /// enclosures ([`filter::no_common_root`]). `None` on an overflow.
-fn bezoutian<T: Ring>(p: &[T], q: &[T], m: usize) -> Option<Vec<Vec<T>>> {
+fn bezoutian<T: CheckedRing>(p: &[T], q: &[T], m: usize) -> Option<Vec<Vec<T>>> {
     let n = m + 1;
     let mut out = vec![vec![T::zero(); n]; n];
     for j in 0..n {
         for i in (1..n).rev() {
             let prev = if j > 0 { out[i][j - 1].clone() } else { T::zero() };
-            let pij =
-                coefficient(p, i).times(&coefficient(q, j))?.minus(&coefficient(p, j).times(&coefficient(q, i))?)?;
-            out[i - 1][j] = pij.plus(&prev)?;
+            let pij = coefficient(p, i).mul(&coefficient(q, j))?.sub(&coefficient(p, j).mul(&coefficient(q, i))?)?;
+            out[i - 1][j] = pij.add(&prev)?;
         }
     }
     out.truncate(m);

@@ -17,6 +17,58 @@ pub use point::Point;
 pub use quadratic_field::{QuadraticExt, Radical};
 pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};
 
+/// Ring arithmetic that may fail: checked fixed-width integers give `None` on overflow, exact
+/// and interval types never do. One home for the code written once over several number types:
+/// the certified cubic classification ([`crate::classify::certified::SignRing`] adds signs) and
+/// the intersection oracle's Bézoutians (checked `i128`, `BigInt`, `f64` enclosures).
+///
+/// # Example
+/// ```
+/// use casteljau::num::CheckedRing;
+/// assert_eq!(i128::MAX.add(&1), None);
+/// assert_eq!(<i128 as CheckedRing>::zero().mul(&5), Some(0));
+/// ```
+pub trait CheckedRing: Clone + Sized {
+    /// `0`.
+    fn zero() -> Self;
+    /// `a + b`, `None` on overflow.
+    fn add(&self, o: &Self) -> Option<Self>;
+    /// `a − b`, `None` on overflow.
+    fn sub(&self, o: &Self) -> Option<Self>;
+    /// `a · b`, `None` on overflow.
+    fn mul(&self, o: &Self) -> Option<Self>;
+}
+
+impl CheckedRing for i128 {
+    fn zero() -> Self {
+        0
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+}
+
+impl CheckedRing for num_bigint::BigInt {
+    fn zero() -> Self {
+        num_bigint::BigInt::default()
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(self - o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+}
+
 /// Deterministic pseudo-random integers in `[−m, m]` for tests, from [`xorshift`] words.
 #[cfg(test)]
 pub(crate) fn symmetric(seed: u64) -> impl FnMut(i64) -> i64 {
