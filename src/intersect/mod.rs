@@ -171,8 +171,7 @@ fn cross_system(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> V
     let len = fb.len().max(wb.len());
     let mut out: Vec<zv::P> = (0..len)
         .map(|j| {
-            let w = wb.get(j).cloned().unwrap_or_default();
-            let g = fb.get(j).cloned().unwrap_or_default();
+            let (w, g) = (coefficient(wb, j), coefficient(fb, j));
             // fa·w_j − g_j·wa
             let a: zv::P = fa.iter().map(|c| c * &w).collect();
             let b: zv::P = wa.iter().map(|c| c * &g).collect();
@@ -251,11 +250,10 @@ fn implicit_matrix<T: CheckedRing>(fa: &[Vec<T>; 3], fb: &[Vec<T>; 3], m: usize)
 /// The degree in `t` of [`cross_system`]`(fa, wa, fb, wb)` (`None` when it vanishes), without
 /// building it: the largest `j` with `fa·w_j ≠ g_j·wa` (`w_j`, `g_j` the coefficients of `t^j`).
 fn cross_degree(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> Option<usize> {
-    let get = |p: &[BigInt], j: usize| p.get(j).cloned().unwrap_or_default();
+    let n = fa.len().max(wa.len());
     (0..fb.len().max(wb.len())).rev().find(|&j| {
-        let (w, g) = (get(wb, j), get(fb, j));
-        let n = fa.len().max(wa.len());
-        (0..n).any(|k| get(fa, k) * &w != get(wa, k) * &g)
+        let (w, g) = (coefficient(wb, j), coefficient(fb, j));
+        (0..n).any(|k| coefficient(fa, k) * &w != coefficient(wa, k) * &g)
     })
 }
 

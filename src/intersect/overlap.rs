@@ -30,7 +30,7 @@
 //! Arcs are always reported inside `[0, 1]²` (a shared component is unbounded over all real
 //! parameters); with [`Domain::All`] only the isolated intersections use every real parameter.
 
-use super::{Domain, Intersection, Intersections, Overlap, finite_roots, to_rational};
+use super::{Domain, Intersection, Intersections, Overlap, coefficient, finite_roots, to_rational};
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
 use crate::poly::algebraic::{RealAlgebraic, resultant_in_v, simplest_rational, value_at, zv};
@@ -59,7 +59,8 @@ pub(super) fn reduced(f: &Forms) -> Forms {
 pub(super) fn is_point(f: &Forms) -> bool {
     let parallel = |a: &[BigInt], w: &[BigInt]| {
         let n = a.len().max(w.len());
-        (0..n).all(|i| (i + 1..n).all(|j| get_int(a, i) * get_int(w, j) == get_int(a, j) * get_int(w, i)))
+        (0..n)
+            .all(|i| (i + 1..n).all(|j| coefficient(a, i) * coefficient(w, j) == coefficient(a, j) * coefficient(w, i)))
     };
     parallel(&f[0], &f[2]) && parallel(&f[1], &f[2])
 }
@@ -180,7 +181,7 @@ fn preimages(f: &Forms, p: &Forms) -> Vec<RealAlgebraic> {
 /// `(α, β, γ)` with `αX + βY + γW ≡ 0` when the curve lies on a line (reduced forms, degree ≥ 1).
 fn line_of(f: &Forms) -> Option<[BigInt; 3]> {
     let n = f.iter().map(Vec::len).max().unwrap_or(0);
-    let col = |k: usize| -> [BigInt; 3] { [0, 1, 2].map(|i| f[i].get(k).cloned().unwrap_or_default()) };
+    let col = |k: usize| -> [BigInt; 3] { [0, 1, 2].map(|i| coefficient(&f[i], k)) };
     let cross = |a: &[BigInt; 3], b: &[BigInt; 3]| {
         [&a[1] * &b[2] - &a[2] * &b[1], &a[2] * &b[0] - &a[0] * &b[2], &a[0] * &b[1] - &a[1] * &b[0]]
     };
@@ -195,7 +196,7 @@ fn line_of(f: &Forms) -> Option<[BigInt; 3]> {
 fn on_line(line: &[BigInt; 3], f: &Forms) -> bool {
     let n = f.iter().map(Vec::len).max().unwrap_or(0);
     (0..n).all(|k| {
-        let c = |i: usize| f[i].get(k).cloned().unwrap_or_default();
+        let c = |i: usize| coefficient(&f[i], k);
         (&line[0] * c(0) + &line[1] * c(1) + &line[2] * c(2)).is_zero()
     })
 }
@@ -287,7 +288,7 @@ impl Pieces {
             None => {
                 let len = other.u.len().max(other.w.len());
                 let coeff = |k: usize| -> zv::P {
-                    let (uk, wk) = (get_int(&other.u, k), get_int(&other.w, k));
+                    let (uk, wk) = (coefficient(&other.u, k), coefficient(&other.w, k));
                     zv::sub(&zv::mul(&self.u, &vec![wk]), &zv::mul(&self.w, &vec![uk]))
                 };
                 let mut q: Vec<zv::P> = (0..len).map(coeff).collect();
@@ -313,10 +314,6 @@ impl Pieces {
 
 fn get(p: &[BigRational], k: usize) -> BigRational {
     p.get(k).cloned().unwrap_or_else(|| rat(0))
-}
-
-fn get_int(p: &[BigInt], k: usize) -> BigInt {
-    p.get(k).cloned().unwrap_or_default()
 }
 
 /// A rational strictly between `x < y`.
@@ -462,7 +459,7 @@ impl Mobius {
         let den = vec![self.d.clone(), self.c.clone()];
         let pow = |p: &Vec<BigInt>, k: usize| (0..k).fold(vec![BigInt::one()], |acc, _| zv::mul(&acc, p));
         (0..=m).fold(vec![], |acc, k| {
-            let term = zv::mul(&zv::mul(&pow(&num, k), &pow(&den, m - k)), &vec![get_int(f, k)]);
+            let term = zv::mul(&zv::mul(&pow(&num, k), &pow(&den, m - k)), &vec![coefficient(f, k)]);
             zv::sub(&acc, &zv::mul(&term, &vec![BigInt::from(-1)]))
         })
     }
@@ -546,7 +543,7 @@ impl Mobius {
             if in_domain(&tp) && finite_roots(vec![tp.clone()], fb).len() == 1 {
                 let m = degree(fa);
                 let rev = fa.clone().map(|p| {
-                    let mut r: Vec<BigInt> = (0..=m).map(|k| get_int(&p, m - k)).collect();
+                    let mut r: Vec<BigInt> = (0..=m).map(|k| coefficient(&p, m - k)).collect();
                     r = zv::trim(r);
                     r
                 });
