@@ -1,8 +1,7 @@
 //! The `spline` command with knot vectors: clamped and multiple knots, JSON Lines batches,
 //! insertion, exact removal, elevation, evaluation, NURBS surfaces; and `subdivide --depth 1`.
 
-mod common;
-use common::run;
+use crate::common::run;
 use std::process::Output;
 
 fn json_lines(o: &Output) -> Vec<serde_json::Value> {

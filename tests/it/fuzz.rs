@@ -3,14 +3,12 @@
 //! exit code 0, 1 or 2, no signal, no panic text, a message on exit 2, JSON lines that parse,
 //! no half-written file.
 //!
-//! `cargo test --test fuzz` runs a bounded, seeded set (a few hundred cases). For releases:
-//! `CASTELJAU_FUZZ_CASES=100000 cargo test --release --test fuzz -- --nocapture` (any
+//! `cargo test --test it fuzz::` runs a bounded, seeded set (a few hundred cases). For releases:
+//! `CASTELJAU_FUZZ_CASES=100000 cargo test --release --test it fuzz:: -- --nocapture` (any
 //! `CASTELJAU_FUZZ_SEED`); failures print the exact invocation to reproduce.
 //!
 //! Written by hand rather than with a fuzzing crate: the cases are whole command lines for a
 //! process with a time cap, which coverage-guided in-process fuzzers do not drive.
-
-mod common;
 
 use std::io::Write;
 use std::time::{Duration, Instant};
@@ -236,7 +234,7 @@ fn claim_file(r: &mut Rng) -> (Vec<String>, Option<String>) {
 
 /// Runs one case with a time cap; returns a description of what broke the promise, if anything.
 fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> {
-    let mut child = common::spawn(args);
+    let mut child = crate::common::spawn(args);
     let mut pipe = child.stdin.take().expect("stdin");
     let input = stdin.unwrap_or("").to_string();
     let writer = std::thread::spawn(move || {
@@ -332,7 +330,7 @@ fn fuzz_failed_outputs_leave_no_file() {
     let dir = std::env::temp_dir().join(format!("casteljau-fuzz-out-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let svg = dir.join("x.svg");
-    let o = common::run(&["plot", "-o", svg.to_str().unwrap(), "0 0, 1 x"], None);
+    let o = crate::common::run(&["plot", "-o", svg.to_str().unwrap(), "0 0, 1 x"], None);
     assert_eq!(o.status.code(), Some(2));
     assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "a file was left behind");
     std::fs::remove_dir_all(&dir).ok();

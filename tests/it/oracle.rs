@@ -2,12 +2,11 @@
 //! promised features, the oracle passes the right answers (rounded to `f64`) and catches every
 //! injected wrong one, and `casteljau check` reports them with exit 1.
 
-mod common;
+use crate::common::{run, stderr, stdout};
 use casteljau::classify::oracle::{FloatAnswers, Kind, Tolerances, check_f64, compare};
 use casteljau::classify::{Classification, NodeType, classify};
 use casteljau::strategies::binary64;
 use casteljau::{Scalar, rat};
-use common::{run, stderr, stdout};
 use proptest::prelude::*;
 
 /// What a perfect float library would answer: the exact answers rounded to `f64`, parameters

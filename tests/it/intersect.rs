@@ -4,7 +4,7 @@
 //! the common points lie on both curves exactly, a cubic's self-intersection is `classify`'s
 //! double point).
 
-mod common;
+use crate::common::{run, stderr, stdout};
 use casteljau::classify::{NodeType, classify};
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::intersect::{Domain, intersect_polynomial, self_intersect};
@@ -12,7 +12,6 @@ use casteljau::num::parse::{NumberMode, parse_points_in};
 use casteljau::num::point::Point;
 use casteljau::poly::algebraic::RealAlgebraic;
 use casteljau::{RationalBezier, rat};
-use common::{run, stderr, stdout};
 use num_rational::BigRational;
 use proptest::prelude::*;
 

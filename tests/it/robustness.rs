@@ -1,8 +1,7 @@
 //! Inputs that once crashed the binary (panic, stack overflow) or printed nonsense: each is a
 //! regression test named after its case. Every one must end with exit 2 and a message.
 
-mod common;
-use common::{run, stderr};
+use crate::common::{run, stderr};
 
 fn refused(args: &[&str], needle: &str) {
     let o = run(args, None);
@@ -246,7 +245,8 @@ fn robustness_cr_only_line_endings_are_lines() {
     let o =
         run(&["eval", "--t", "1/2", "--json"], Some("0 0, 1 1, 2 0\r1 1, 2 2, 3 1\r\r# note\r4 4, 5 5\r\n6 6, 7 7\n"));
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let lines: Vec<serde_json::Value> = common::stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines: Vec<serde_json::Value> =
+        crate::common::stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     let numbers: Vec<u64> = lines.iter().map(|v| v["line"].as_u64().unwrap()).collect();
     assert_eq!(numbers, [1, 2, 5, 6]);
 }
@@ -255,7 +255,7 @@ fn robustness_cr_only_line_endings_are_lines() {
 fn robustness_plot_title_with_a_control_character_is_valid_xml() {
     let o = run(&["plot", "--title", "a\u{1}b<&\"", "0 0, 1 1, 2 0"], None);
     assert_eq!(o.status.code(), Some(0));
-    let svg = common::stdout(&o);
+    let svg = crate::common::stdout(&o);
     assert!(!svg.contains('\u{1}'));
     assert!(svg.contains("a\u{FFFD}b&lt;&amp;"));
 }
@@ -265,7 +265,7 @@ fn robustness_plot_features_of_a_glyph_cubic_with_a_far_double_point_keeps_the_c
     // the double point lies near (−1.1e10, −2.6e10): drawn as a labelled arrow
     let o = run(&["plot", "--features", "48 43, 22 23, 13 43, 1 56"], None);
     assert_eq!(o.status.code(), Some(0));
-    let svg = common::stdout(&o);
+    let svg = crate::common::stdout(&o);
     let view = svg.split("viewBox=\"").nth(1).unwrap().split('"').next().unwrap();
     let v: Vec<f64> = view.split(' ').map(|x| x.parse().unwrap()).collect();
     assert!(v[2] < 200.0 && v[3] < 200.0, "view box {view}");
@@ -293,7 +293,7 @@ fn robustness_text_batch_answers_name_their_lines() {
     let o = run(&["subdivide", "--input", "-"], Some("0 0, 1 1\n# skip\n1 1, 3 3\n"));
     assert_eq!(o.status.code(), Some(0));
     assert_eq!(
-        common::stdout(&o),
+        crate::common::stdout(&o),
         "line 1:\n  left:  0 0, 1/2 1/2\n  right: 1/2 1/2, 1 1\nline 3:\n  left:  1 1, 2 2\n  right: 2 2, 3 3\n"
     );
 }
@@ -304,7 +304,8 @@ fn robustness_an_over_long_line_is_an_error_for_that_line_only() {
     let input = format!("0 0, 1 1\n{}\n2 2, 3 3\n", "1 ".repeat(17 * 512 * 1024));
     let o = run(&["eval", "--t", "1/2", "--json", "--input", "-"], Some(&input));
     assert_eq!(o.status.code(), Some(2));
-    let lines: Vec<serde_json::Value> = common::stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines: Vec<serde_json::Value> =
+        crate::common::stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert_eq!(lines.len(), 3);
     assert!(lines[1]["error"].as_str().unwrap().contains("longer than"));
     assert_eq!(lines[2]["line"], 3);
@@ -347,7 +348,7 @@ fn robustness_line_numbers_survive_block_boundaries_with_every_line_end() {
         .map(|threads| {
             let o = run(&["classify", "--json", "--threads", threads, "--input", path.to_str().unwrap()], None);
             assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-            common::stdout(&o)
+            crate::common::stdout(&o)
         })
         .collect();
     std::fs::remove_file(&path).unwrap();

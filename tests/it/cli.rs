@@ -1,7 +1,6 @@
 //! The `casteljau` binary: answers, exit codes (0 ok, 1 check failed, 2 bad input), errors.
 
-mod common;
-use common::{run, stderr, stdout};
+use crate::common::{run, stderr, stdout};
 
 #[test]
 fn cli_subdivide_seed_001_example_prints_both_polygons() {

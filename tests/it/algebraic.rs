@@ -3,14 +3,13 @@
 //! routes: roots built from known factors, `Q(√d)` arithmetic for cubics, exact evaluation at
 //! many rational parameters, and a 200-digit decimal oracle for the floats.
 
-mod common;
+use crate::common::{run, stderr, stdout};
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::num::point::Point;
 use casteljau::poly::algebraic::RealAlgebraic;
 use casteljau::poly::polynomial::quadratic_roots;
 use casteljau::rational::extrema::{bounding_box, bounding_box_polynomial};
 use casteljau::{QuadraticExt, RationalBezier, rat, ratio};
-use common::{run, stderr, stdout};
 use num_rational::BigRational;
 use proptest::prelude::*;
 

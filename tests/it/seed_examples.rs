@@ -10,7 +10,7 @@ use num_rational::BigRational;
 use serde_json::Value;
 
 fn fixture() -> Value {
-    serde_json::from_str(include_str!("data/seeds_core.json")).unwrap()
+    serde_json::from_str(include_str!("../data/seeds_core.json")).unwrap()
 }
 fn num(v: &Value) -> BigRational {
     parse_number(v.as_str().unwrap(), Default::default()).unwrap()
