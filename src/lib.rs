@@ -34,6 +34,7 @@
 //! assert_eq!(right.to_string(), "-1/3 -1/27, 1/9 1/9, 5/9 -1/3, 1 1");
 //! ```
 
+#[cfg(feature = "catalogue")]
 pub mod catalogue;
 pub mod classify;
 pub mod curve;

@@ -8,7 +8,9 @@
 //! in place as [`Segment::Skipped`] with their endpoints and the reason, so that every piece of
 //! every outline is listed.
 
+#[cfg(feature = "fonts")]
 pub mod font;
+#[cfg(feature = "svg")]
 pub mod svg;
 pub mod svg_path;
 

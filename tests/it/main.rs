@@ -1,20 +1,33 @@
 //! The integration tests, one crate of modules so that `cargo test` links the library once.
 //!
 //! Run one area with a filter: `cargo test --test it intersect::` (module paths prefix the test names).
+//! Modules that run the binary need the `cli` feature; with `--no-default-features` the
+//! library's own tests still run.
 
+#[cfg(feature = "cli")]
 mod common;
 
+#[cfg(feature = "cli")]
 mod algebraic;
+#[cfg(feature = "catalogue")]
 mod catalogue;
 mod classify;
+#[cfg(feature = "cli")]
 mod cli;
+#[cfg(feature = "cli")]
 mod cli_spline;
+#[cfg(feature = "cli")]
 mod exactness_regressions;
+#[cfg(all(feature = "fonts", feature = "svg"))]
 mod formats;
+#[cfg(feature = "cli")]
 mod fuzz;
+#[cfg(feature = "cli")]
 mod golden;
 mod identity_8;
+#[cfg(feature = "cli")]
 mod intersect;
+#[cfg(feature = "cli")]
 mod oracle;
 mod parse_fuzz;
 mod parse_numbers;
@@ -22,6 +35,7 @@ mod plot;
 mod properties;
 mod rational_bezier;
 mod rational_cubic;
+#[cfg(feature = "cli")]
 mod robustness;
 mod seed_examples;
 mod spline_knots;
