@@ -9,6 +9,7 @@ pub mod algebraic;
 pub mod bernstein;
 pub mod modular;
 pub mod polynomial;
+pub(crate) mod resultant;
 pub mod roots;
 
 pub use roots::{Root, isolate_bernstein, isolate_bernstein_within, isolate_in, isolate_in_within};
