@@ -21,7 +21,7 @@ use std::cmp::Ordering;
 pub(crate) fn no_rational_roots(p: &[BigInt]) -> bool {
     const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
     let Some(lc) = p.last() else { return false };
-    let residue = crate::num::small::residue;
+    let residue = crate::num::word::residue;
     PRIMES.iter().any(|&q| {
         if residue(lc, q) == 0 {
             return false;
