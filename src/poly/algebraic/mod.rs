@@ -46,7 +46,7 @@
 //! `display` (`Display`, the root index, the canonical interval); with the helpers they share,
 //! `rational_roots` (rational-root search, the simplest rational in an interval), `evaluate`
 //! (integer polynomials at rationals and on rational intervals) and `dyadic` (exact dyadic
-//! rationals). Resultants over `Z[v]` are [`crate::poly::resultant`]'s.
+//! rationals). Resultants over `Z[v]` are `poly::resultant`'s.
 
 mod display;
 mod dyadic;
