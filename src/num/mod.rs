@@ -1,7 +1,8 @@
 //! Numbers: the [`Scalar`] field trait with its [`Exact`] marker, the integer-fast exact
-//! [`Rational`], exact quadratic extensions [`QuadraticExt`], points (vectors of scalars), and
-//! fixed-width exact rationals ([`small::SmallRational`], checked), and exact numbers and point
-//! lists read from text.
+//! [`Rational`], exact quadratic extensions [`QuadraticExt`], points (vectors of scalars),
+//! fixed-width exact rationals ([`small::SmallRational`], checked), word-sized number theory
+//! (gcds, residues, square extraction; crate-internal `word`), and exact numbers and point lists
+//! read from text.
 //!
 //! The lowest layer: it imports nothing else of the crate but [`crate::error`].
 
@@ -12,6 +13,7 @@ pub mod quadratic_field;
 pub mod scalar;
 pub mod serial;
 pub mod small;
+pub(crate) mod word;
 
 pub use point::Point;
 pub use quadratic_field::{QuadraticExt, Radical};

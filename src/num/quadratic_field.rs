@@ -144,13 +144,13 @@ impl QuadraticExt<BigRational> {
         }
         // √(p/q) = √(p·q)/q, then pull out square factors k² of p·q.
         let q = d.denom().clone();
-        let (k, m) = crate::num::small::extract_small_squares_big((d.numer() * &q).magnitude());
+        let (k, m) = crate::num::word::extract_small_squares_big((d.numer() * &q).magnitude());
         let m = BigInt::from(m);
         // b = k/q reduced; k (a product of primes below 1000) is usually a word: one remainder
         let b = match num_traits::ToPrimitive::to_u128(&k) {
             Some(w) => {
                 let r = num_traits::ToPrimitive::to_u128(&(q.magnitude() % w)).expect("below a u128");
-                let g = BigInt::from(crate::num::small::gcd_u128(w, r));
+                let g = BigInt::from(crate::num::word::gcd_u128(w, r));
                 BigRational::new_raw(BigInt::from(k) / &g, q / g)
             }
             None => BigRational::new(BigInt::from(k), q),

@@ -4,7 +4,7 @@
 //! `f64` (fast, approximate) and [`BigRational`] (exact). [`Exact`] marks the types whose
 //! `==` is numeric equality and whose [`Exact::sign`] is decided without rounding: identity
 //! checks and classifications require `S: Exact`. The quadratic extension
-//! [`QuadraticExt`](crate::QuadraticExt) is another `Exact` scalar built on any `Exact` one.
+//! [`QuadraticExt`](crate::num::quadratic_field::QuadraticExt) is another `Exact` scalar built on any `Exact` one.
 //!
 //! # Laws
 //! For every implementation (exactly for `Exact` types, up to rounding for `f64`):

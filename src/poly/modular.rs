@@ -113,7 +113,7 @@ fn factor_degrees(p: &[BigInt], q: u32, below: usize) -> Option<Vec<usize>> {
 
 /// `p mod q`, residues in `[0, q)`.
 fn reduce(p: &[BigInt], q: u32) -> Poly {
-    trim(p.iter().map(|c| crate::num::small::residue(c, u64::from(q)) as u32).collect())
+    trim(p.iter().map(|c| crate::num::word::residue(c, u64::from(q)) as u32).collect())
 }
 
 fn trim(mut p: Poly) -> Poly {

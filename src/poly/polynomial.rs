@@ -94,7 +94,7 @@ pub fn primitive_part(p: Vec<BigInt>) -> Vec<BigInt> {
     let Some(last) = p.last() else { return p };
     let mut content = <BigInt as num_traits::Zero>::zero();
     for x in &p {
-        content = crate::num::small::gcd_big(&content, x);
+        content = crate::num::word::gcd_big(&content, x);
         if content.is_one() {
             break;
         }
@@ -197,7 +197,7 @@ const MODULAR_PRIMES: [u64; 3] = [2_147_483_647, 2_147_483_629, 2_147_483_587];
 /// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
 fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
     let reduce = |p: &[BigInt]| -> Vec<u64> {
-        let mut v: Vec<u64> = p.iter().map(|x| crate::num::small::residue(x, q)).collect();
+        let mut v: Vec<u64> = p.iter().map(|x| crate::num::word::residue(x, q)).collect();
         while v.last() == Some(&0) {
             v.pop();
         }

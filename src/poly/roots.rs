@@ -16,7 +16,7 @@
 //! bits for degree `n` and `τ`-bit coefficients. The work list is explicit (no recursion), so
 //! deep subdivisions cannot overflow the stack.
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::num::scalar::{Exact, Scalar, rat};
 use crate::poly::bernstein::{split as split_at, split_integer};
 use crate::poly::polynomial::{square_free_integer, to_integer};
@@ -79,7 +79,7 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
 /// (the Bernstein polynomials are positive on `(0, 1)`), whatever the degree.
 ///
 /// # Errors
-/// [`crate::Error::WorkLimit`] when the work would exceed `budget`; nothing is guessed.
+/// [`Error::WorkLimit`] when the work would exceed `budget`; nothing is guessed.
 ///
 /// # Example
 /// ```
@@ -113,13 +113,11 @@ pub fn isolate_bernstein_within(c: &[BigRational], budget: &Budget) -> Result<Op
     }
     // signs and roots do not change under a positive factor: integers throughout
     let ints = power_to_bernstein_integer(&sf);
-    isolate_square_free_within(ints, budget.limit - upfront).map(Some).map_err(|(splits, spent)| {
-        crate::Error::WorkLimit {
-            what: format!("isolating the roots of a degree-{n} polynomial (stopped after {splits} subdivisions)"),
-            estimate: upfront + spent,
-            limit: budget.limit,
-            option: budget.option,
-        }
+    isolate_square_free_within(ints, budget.limit - upfront).map(Some).map_err(|(splits, spent)| Error::WorkLimit {
+        what: format!("isolating the roots of a degree-{n} polynomial (stopped after {splits} subdivisions)"),
+        estimate: upfront + spent,
+        limit: budget.limit,
+        option: budget.option,
     })
 }
 
@@ -269,7 +267,7 @@ pub fn isolate_in(c: &[BigRational], a: &BigRational, b: &BigRational) -> Option
 /// [`isolate_in`] within a work budget (see [`isolate_bernstein_within`]).
 ///
 /// # Errors
-/// [`crate::Error::WorkLimit`] when the work would exceed `budget`.
+/// [`Error::WorkLimit`] when the work would exceed `budget`.
 pub fn isolate_in_within(
     c: &[BigRational],
     a: &BigRational,
