@@ -2,9 +2,8 @@
 //! against the exact answer, on the shared matching of [`crate::oracle`].
 
 use super::{Domain, intersect_polynomial};
-use crate::curve::bezier::BezierCurve;
-use crate::error::{Error, Result};
-use crate::num::point::Point;
+use crate::error::Result;
+use crate::oracle::{Kind, Unmatched, Window, check_tolerance, exact_curve, match_floats};
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;
 
@@ -27,7 +26,7 @@ use num_rational::BigRational;
 /// ```
 ///
 /// # Errors
-/// As [`intersect`]; [`Error::InvalidArgument`] for non-finite coordinates or tolerance.
+/// As [`intersect`](super::intersect); [`Error::InvalidArgument`](crate::Error::InvalidArgument) for non-finite coordinates or tolerance.
 pub fn check_intersections_f64(
     a: &[[f64; 2]],
     b: &[[f64; 2]],
@@ -35,62 +34,54 @@ pub fn check_intersections_f64(
     tol: f64,
     domain: Domain,
 ) -> Result<Vec<IntersectionDisagreement>> {
-    let bad = |m: String| Error::InvalidArgument { message: m };
-    if !(tol.is_finite() && tol >= 0.0) {
-        return Err(bad(format!("tolerance {tol} must be finite and ≥ 0")));
-    }
-    let exact = |x: f64| BigRational::from_float(x).ok_or_else(|| bad(format!("{x} is not finite")));
-    let curve = |pts: &[[f64; 2]]| -> Result<BezierCurve<BigRational>> {
-        BezierCurve::new(
-            pts.iter().map(|p| Ok(Point::new(vec![exact(p[0])?, exact(p[1])?]))).collect::<Result<Vec<_>>>()?,
-        )
-    };
+    check_tolerance(tol)?;
+    let curve = |pts: &[[f64; 2]]| exact_curve(pts, |x| format!("{x} is not finite"));
     let r = intersect_polynomial(&curve(a)?, &curve(b)?, domain)?;
-    let tol_q = exact(tol)?;
-    let near = |e: &RealAlgebraic, f: &BigRational| {
-        *e >= RealAlgebraic::from(f.clone() - &tol_q) && *e <= RealAlgebraic::from(f.clone() + &tol_q)
-    };
-    let mut matched = vec![false; r.intersections.len()];
-    let mut out = vec![];
-    for &(s, t) in float {
-        let (Some(sq), Some(tq)) = (BigRational::from_float(s), BigRational::from_float(t)) else {
-            out.push(IntersectionDisagreement::spurious(s, t));
-            continue;
-        };
-        let on_overlap = r.overlaps.iter().any(|o| {
-            o.s[0] <= RealAlgebraic::from(sq.clone() + &tol_q) && o.s[1] >= RealAlgebraic::from(sq.clone() - &tol_q)
+    let tol = BigRational::from_float(tol).expect("finite tolerance");
+    // each pair's windows in s and t (none when not finite); a pair on an overlap is neither
+    // matched nor reported
+    let floats = float
+        .iter()
+        .map(|&(s, t)| {
+            let window = |x: f64| BigRational::from_float(x).map(|q| Window::around(&q, &tol));
+            ((s, t), window(s).zip(window(t)))
+        })
+        .filter(|(_, w)| {
+            !w.as_ref().is_some_and(|(ws, _)| {
+                r.overlaps.iter().any(|o| {
+                    o.s[0] <= RealAlgebraic::from(ws.hi.clone()) && o.s[1] >= RealAlgebraic::from(ws.lo.clone())
+                })
+            })
         });
-        if on_overlap {
-            continue;
-        }
-        let hits: Vec<usize> = (0..r.intersections.len())
-            .filter(|&i| near(&r.intersections[i].s, &sq) && near(&r.intersections[i].t, &tq))
-            .collect();
-        match hits.iter().find(|&&i| !matched[i]) {
-            Some(&i) => matched[i] = true,
-            None if !hits.is_empty() => {
-                let e = &r.intersections[hits[0]];
-                out.push(IntersectionDisagreement {
-                    kind: crate::classify::oracle::Kind::Duplicate,
+    let holds = |w: &Window, e: &RealAlgebraic| w.holds(|x| e.cmp(&RealAlgebraic::from(x.clone())));
+    let (unmatched, missed) = match_floats(r.intersections.len(), floats, |i, (_, w)| {
+        let e = &r.intersections[i];
+        w.as_ref().is_some_and(|(ws, wt)| holds(ws, &e.s) && holds(wt, &e.t))
+    });
+    let mut out = vec![];
+    for (((s, t), _), why) in unmatched {
+        out.push(match why {
+            Unmatched::Duplicate(i) => {
+                let e = &r.intersections[i];
+                IntersectionDisagreement {
+                    kind: Kind::Duplicate,
                     s: e.s.to_string(),
                     t: e.t.to_string(),
                     float: Some((s, t)),
                     exact_float: Some((e.s_float, e.t_float)),
-                });
+                }
             }
-            None => out.push(IntersectionDisagreement::spurious(s, t)),
-        }
+            Unmatched::Spurious => IntersectionDisagreement::spurious(s, t),
+        });
     }
-    for (e, m) in r.intersections.iter().zip(matched) {
-        if !m {
-            out.push(IntersectionDisagreement {
-                kind: crate::classify::oracle::Kind::Missed,
-                s: e.s.to_string(),
-                t: e.t.to_string(),
-                float: None,
-                exact_float: Some((e.s_float, e.t_float)),
-            });
-        }
+    for e in missed.into_iter().map(|i| &r.intersections[i]) {
+        out.push(IntersectionDisagreement {
+            kind: Kind::Missed,
+            s: e.s.to_string(),
+            t: e.t.to_string(),
+            float: None,
+            exact_float: Some((e.s_float, e.t_float)),
+        });
     }
     Ok(out)
 }
@@ -101,7 +92,7 @@ pub fn check_intersections_f64(
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct IntersectionDisagreement {
     /// What kind of disagreement.
-    pub kind: crate::classify::oracle::Kind,
+    pub kind: Kind,
     /// The exact `s` (empty when spurious).
     pub s: String,
     /// The exact `t` (empty when spurious).
@@ -115,7 +106,7 @@ pub struct IntersectionDisagreement {
 impl IntersectionDisagreement {
     fn spurious(s: f64, t: f64) -> Self {
         IntersectionDisagreement {
-            kind: crate::classify::oracle::Kind::Spurious,
+            kind: Kind::Spurious,
             s: String::new(),
             t: String::new(),
             float: Some((s, t)),
