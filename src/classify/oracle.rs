@@ -122,7 +122,7 @@ pub struct Disagreement {
 /// [`check`] for `f64` control points, each taken exactly.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] for a non-finite coordinate; otherwise as [`check`].
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a non-finite coordinate; otherwise as [`check`].
 pub fn check_f64(points: &[[f64; 2]], answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
     let curve = exact_curve(points, |x| format!("control point coordinate {x} is not finite"))?;
     check(&curve, answers, tol)
@@ -132,7 +132,7 @@ pub fn check_f64(points: &[[f64; 2]], answers: &FloatAnswers, tol: &Tolerances) 
 /// degree ≤ 3), in the order of the module table.
 ///
 /// # Errors
-/// As [`classify`]; [`Error::InvalidArgument`] for a negative or non-finite tolerance.
+/// As [`classify`]; [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a negative or non-finite tolerance.
 pub fn check(curve: &BezierCurve<BigRational>, answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
     for t in [tol.parameter, tol.point] {
         check_tolerance(t)?;

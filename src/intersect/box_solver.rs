@@ -8,7 +8,7 @@ use super::{Intersection, Intersections, Kind};
 use crate::poly::algebraic::RealAlgebraic;
 use num_bigint::BigInt;
 
-/// The fast route of [`intersect_forms`] for polynomial curves on the unit square (their system
+/// The fast route of [`intersect_forms`](super::pairing::intersect_forms) for polynomial curves on the unit square (their system
 /// `sys`, resultants `r` in `s` and `t_poly` in `t`, non-zero): the filter's candidate `boxes` solved by
 /// [`filter::solve`] (each proved empty or holding exactly one transversal crossing), then
 /// each crossing's parameters made exact without isolating the resultants' roots: the

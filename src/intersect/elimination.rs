@@ -97,7 +97,7 @@ fn cross_degree(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[BigInt]) -> O
 /// `p(t)q(u) − p(u)q(t) = (t − u)·Σ Q_ij t^i u^j`. From `P_ij = p_i q_j − p_j q_i` and
 /// `P_ij = Q_(i−1)j − Q_i(j−1)`: `Q_(i−1)j = P_ij + Q_i(j−1)`. One recurrence for every use:
 /// integers (the implicit matrix, in `i128` or `BigInt`; the divided differences) and `f64`
-/// enclosures ([`filter::no_common_root`]). `None` on an overflow.
+/// enclosures ([`filter::no_common_root`](super::filter::no_common_root)). `None` on an overflow.
 pub(super) fn bezoutian<T: CheckedRing>(p: &[T], q: &[T], m: usize) -> Option<Vec<Vec<T>>> {
     let n = m + 1;
     let mut out = vec![vec![T::zero(); n]; n];

@@ -231,10 +231,10 @@ pub fn self_intersect(a: &RationalBezier<BigRational>, domain: Domain) -> Result
     self_intersect_within(a, domain, &crate::work::Budget::unlimited())
 }
 
-/// [`self_intersect`] within a work budget, checked before any work starts.
+/// [`self_intersect()`] within a work budget, checked before any work starts.
 ///
 /// # Errors
-/// As [`self_intersect`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+/// As [`self_intersect()`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
 pub fn self_intersect_within(
     a: &RationalBezier<BigRational>,
     domain: Domain,

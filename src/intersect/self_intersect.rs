@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::poly::algebraic::{RealAlgebraic, resultant_zv};
 use num_bigint::BigInt;
 
-/// [`self_intersect`] of the curve with integer power forms `fa` (checked by the caller).
+/// [`self_intersect`](super::self_intersect()) of the curve with integer power forms `fa` (checked by the caller).
 pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain) -> Result<Intersections> {
     let dx = divided_difference(&fa[0], &fa[2]);
     let dy = divided_difference(&fa[1], &fa[2]);
