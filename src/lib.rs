@@ -23,7 +23,7 @@
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
 //!
-//! [`error`] and [`work`] (cost estimates checked before exact work starts) are shared by all. The command line lives in `src/bin/casteljau/` and is not part
+//! [`error`], [`work`] (cost estimates checked before exact work starts) and [`oracle`] (the float oracles' matching, for [`classify`] and [`intersect`]) are shared by all. The command line lives in `src/bin/casteljau/` and is not part
 //! of the library.
 //!
 //! ```
@@ -42,6 +42,7 @@ pub mod error;
 pub mod format;
 pub mod intersect;
 pub mod num;
+pub mod oracle;
 pub mod plot;
 pub mod poly;
 pub mod proof;

@@ -24,6 +24,9 @@
 //! spacing of `f64`s at the float value (one ulp), so the correctly rounded exact answer always
 //! agrees — a coordinate near 2·10⁷ cannot be written within 1e-9 in binary64.
 //!
+//! The window around a float answer, the matching and the disagreement kinds are
+//! [`crate::oracle`]'s, shared with the intersection oracle; a float value is a [`FloatValue`].
+//!
 //! # Example
 //! ```
 //! use casteljau::classify::oracle::{FloatAnswers, check_f64, Tolerances};
@@ -37,12 +40,13 @@
 
 use crate::classify::{Classification, NodeType, Parameter, classify};
 use crate::curve::bezier::BezierCurve;
-use crate::error::{Error, Result};
-use crate::num::point::Point;
+use crate::error::Result;
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, Scalar};
+use crate::oracle::{Unmatched, Window, check_tolerance, exact_curve, match_floats};
 use num_rational::BigRational;
-use std::cmp::Ordering;
+
+pub use crate::oracle::{FloatValue, Kind};
 
 /// A float library's answers about one curve (see the module table); absent fields are not
 /// checked.
@@ -97,37 +101,6 @@ impl Default for Tolerances {
     }
 }
 
-/// What kind of disagreement.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Kind {
-    /// A value (class, count, flag, point) differs.
-    Mismatch,
-    /// An exact parameter on `[0, 1]` has no float parameter within the tolerance.
-    Missed,
-    /// A float parameter (or point) has no exact counterpart.
-    Spurious,
-    /// A second float parameter for an exact parameter already matched.
-    Duplicate,
-}
-
-impl Kind {
-    /// `mismatch`, `missed`, `spurious` or `duplicate`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Kind::Mismatch => "mismatch",
-            Kind::Missed => "missed",
-            Kind::Spurious => "spurious",
-            Kind::Duplicate => "duplicate",
-        }
-    }
-}
-
-impl serde::Serialize for Kind {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        s.serialize_str(self.as_str())
-    }
-}
-
 /// One disagreement between a float answer and the exact one. JSON fields: `field`, `kind`,
 /// `exact` (the exact value as a string, `""` when there is none, e.g. for a spurious parameter),
 /// `exact_float` (its nearest `f64`, when it is a number), `float` (the library's value).
@@ -143,32 +116,26 @@ pub struct Disagreement {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exact_float: Option<f64>,
     /// The float library's value.
-    pub float: serde_json::Value,
+    pub float: FloatValue,
 }
 
 /// [`check`] for `f64` control points, each taken exactly.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] for a non-finite coordinate; otherwise as [`check`].
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a non-finite coordinate; otherwise as [`check`].
 pub fn check_f64(points: &[[f64; 2]], answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
-    let exact = |x: f64| {
-        BigRational::from_float(x)
-            .ok_or_else(|| Error::InvalidArgument { message: format!("control point coordinate {x} is not finite") })
-    };
-    let pts = points.iter().map(|p| Ok(Point::new(vec![exact(p[0])?, exact(p[1])?]))).collect::<Result<Vec<_>>>()?;
-    check(&BezierCurve::new(pts)?, answers, tol)
+    let curve = exact_curve(points, |x| format!("control point coordinate {x} is not finite"))?;
+    check(&curve, answers, tol)
 }
 
 /// Every disagreement between `answers` and the exact classification of `curve` (planar,
 /// degree ≤ 3), in the order of the module table.
 ///
 /// # Errors
-/// As [`classify`]; [`Error::InvalidArgument`] for a negative or non-finite tolerance.
+/// As [`classify`]; [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a negative or non-finite tolerance.
 pub fn check(curve: &BezierCurve<BigRational>, answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
     for t in [tol.parameter, tol.point] {
-        if !(t.is_finite() && t >= 0.0) {
-            return Err(Error::InvalidArgument { message: format!("tolerance {t} must be finite and ≥ 0") });
-        }
+        check_tolerance(t)?;
     }
     let k = classify(curve)?;
     Ok(compare(&k, answers, tol))
@@ -177,34 +144,34 @@ pub fn check(curve: &BezierCurve<BigRational>, answers: &FloatAnswers, tol: &Tol
 /// The comparison itself, on a classification already computed.
 pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> Vec<Disagreement> {
     let mut out = vec![];
-    let mut differ = |field, exact: String, float: serde_json::Value| {
+    let mut differ = |field, exact: String, float: FloatValue| {
         out.push(Disagreement { field, kind: Kind::Mismatch, exact, exact_float: None, float })
     };
     if let Some(n) = &answers.node_type {
         let exact = k.node_type.map(NodeType::as_str);
         if exact != n.as_deref() {
-            differ("node_type", exact.unwrap_or("null").into(), serde_json::json!(n));
+            differ("node_type", exact.unwrap_or("null").into(), FloatValue::from(n.as_deref()));
         }
     }
     if let Some(c) = &answers.category
         && c != k.segment.category.as_str()
     {
-        differ("category", k.segment.category.as_str().into(), serde_json::json!(c));
+        differ("category", k.segment.category.as_str().into(), c.as_str().into());
     }
     if let Some(b) = answers.has_loop
         && b != k.segment.has_loop
     {
-        differ("loop", k.segment.has_loop.to_string(), serde_json::json!(b));
+        differ("loop", k.segment.has_loop.to_string(), b.into());
     }
     if let Some(b) = answers.has_cusp
         && b != k.segment.has_cusp
     {
-        differ("cusp", k.segment.has_cusp.to_string(), serde_json::json!(b));
+        differ("cusp", k.segment.has_cusp.to_string(), b.into());
     }
     if let Some(n) = answers.inflections
         && n != k.segment.inflections
     {
-        differ("inflections", k.segment.inflections.to_string(), serde_json::json!(n));
+        differ("inflections", k.segment.inflections.to_string(), n.into());
     }
     if let Some(ps) = &answers.inflection_parameters {
         match_parameters(&mut out, "inflection_parameters", &k.inflection_parameters, ps, tol.parameter);
@@ -224,7 +191,7 @@ pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> 
                 kind: Kind::Spurious,
                 exact: String::new(),
                 exact_float: None,
-                float: serde_json::json!(p),
+                float: p.into(),
             }),
             Some(d) => {
                 let near = d.coords.iter().zip(p).all(|(e, f)| match BigRational::from_float(f) {
@@ -237,7 +204,7 @@ pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> 
                         kind: Kind::Mismatch,
                         exact: d.to_string(),
                         exact_float: None,
-                        float: serde_json::json!(p),
+                        float: p.into(),
                     });
                 }
             }
@@ -246,78 +213,47 @@ pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> 
     out
 }
 
-/// `tol`, but never tighter than one ulp at the float value `p`: the correctly rounded exact
-/// answer always agrees.
-fn effective_tolerance(p: &BigRational, tol: f64) -> BigRational {
-    let f = crate::num::scalar::ratio_to_f64(p).abs();
-    let ulp = if f.is_finite() { f.next_up() - f } else { 0.0 };
-    BigRational::from_float(tol.max(ulp)).expect("finite tolerance")
-}
-
-/// `|e − p| ≤ tol`, exactly.
+/// `|e − p| ≤ tol` exactly, `tol` widened to one ulp at `p` ([`Window::at_least_one_ulp`]).
 fn within(e: &Parameter, p: &BigRational, tol: f64) -> bool {
-    let tol = effective_tolerance(p, tol);
-    let lo = e.clone() - QuadraticExt::from_base(p.clone() + &tol);
-    let hi = e.clone() - QuadraticExt::from_base(p.clone() - &tol);
-    lo.sign() != Ordering::Greater && hi.sign() != Ordering::Less
+    Window::at_least_one_ulp(p, tol).holds(|x| (e.clone() - QuadraticExt::from_base(x.clone())).sign())
 }
 
-/// Matches float parameters to the exact ones (ascending) so that as many as possible agree: in
-/// ascending order each float takes the smallest unmatched exact parameter within `tol` (optimal
-/// for matching points to intervals of one width); what is left over is spurious, duplicate or
-/// missed.
+/// Matches float parameters to the exact ones (ascending) so that as many as possible agree:
+/// in ascending order each float takes the smallest unmatched exact parameter within `tol`
+/// ([`crate::oracle`]'s matching); what is left over is spurious, duplicate or missed (an exact
+/// parameter on `[0, 1]`).
 fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[Parameter], float: &[f64], tol: f64) {
-    let mut matched = vec![false; exact.len()];
     let mut sorted: Vec<f64> = float.to_vec();
     sorted.sort_by(f64::total_cmp);
-    let mut j = 0;
-    for p in sorted {
-        let Some(q) = BigRational::from_float(p) else {
-            out.push(Disagreement {
-                field,
-                kind: Kind::Spurious,
-                exact: String::new(),
-                exact_float: None,
-                float: serde_json::json!(p.to_string()),
-            });
-            continue;
-        };
-        // exact parameters below p − tol can match no later float
-        let low = QuadraticExt::from_base(q.clone() - effective_tolerance(&q, tol));
-        while j < exact.len() && (exact[j].clone() - low.clone()).sign() == Ordering::Less {
-            j += 1;
-        }
-        if j < exact.len() && within(&exact[j], &q, tol) {
-            matched[j] = true;
-            j += 1;
-            continue;
-        }
-        match exact.iter().zip(&matched).find(|(e, m)| **m && within(e, &q, tol)) {
-            Some((e, _)) => out.push(Disagreement {
+    let floats = sorted.into_iter().map(|p| (p, BigRational::from_float(p)));
+    let (unmatched, missed) =
+        match_floats(exact.len(), floats, |i, (_, q)| q.as_ref().is_some_and(|q| within(&exact[i], q, tol)));
+    for ((p, q), why) in unmatched {
+        out.push(match why {
+            Unmatched::Duplicate(i) => Disagreement {
                 field,
                 kind: Kind::Duplicate,
-                exact: e.to_string(),
-                exact_float: Some(e.to_f64()),
-                float: serde_json::json!(p),
-            }),
-            None => out.push(Disagreement {
+                exact: exact[i].to_string(),
+                exact_float: Some(exact[i].to_f64()),
+                float: p.into(),
+            },
+            Unmatched::Spurious => Disagreement {
                 field,
                 kind: Kind::Spurious,
                 exact: String::new(),
                 exact_float: None,
-                float: serde_json::json!(p),
-            }),
-        }
+                // a non-finite float is written out as text
+                float: if q.is_some() { p.into() } else { FloatValue::Text(p.to_string()) },
+            },
+        });
     }
-    for (e, m) in exact.iter().zip(matched) {
-        if !m && super::in_unit_interval(e) {
-            out.push(Disagreement {
-                field,
-                kind: Kind::Missed,
-                exact: e.to_string(),
-                exact_float: Some(e.to_f64()),
-                float: serde_json::Value::Null,
-            });
-        }
+    for e in missed.into_iter().map(|i| &exact[i]).filter(|e| super::in_unit_interval(e)) {
+        out.push(Disagreement {
+            field,
+            kind: Kind::Missed,
+            exact: e.to_string(),
+            exact_float: Some(e.to_f64()),
+            float: FloatValue::Null,
+        });
     }
 }

@@ -30,7 +30,9 @@
 //! Arcs are always reported inside `[0, 1]²` (a shared component is unbounded over all real
 //! parameters); with [`Domain::All`] only the isolated intersections use every real parameter.
 
-use super::{Domain, Intersection, Intersections, Overlap, coefficient, finite_roots, to_rational};
+use super::forms::{coefficient, to_rational};
+use super::pairing::finite_roots;
+use super::{Domain, Intersection, Intersections, Overlap};
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
 use crate::poly::algebraic::{RealAlgebraic, resultant_in_v, simplest_rational, value_at, zv};
@@ -525,7 +527,7 @@ impl Mobius {
         let q = |x: &BigInt| BigRational::from_integer(x.clone());
         let (num, den) = (vec![-q(&self.b), q(&self.d)], vec![q(&self.a), -q(&self.c)]);
         let mut out = vec![];
-        let finite = super::self_intersections_of_forms(fa, Domain::All)?;
+        let finite = super::self_intersect::self_intersections_of_forms(fa, Domain::All)?;
         for i in &finite.intersections {
             for (s, other, s_float) in [(&i.s, &i.t, i.s_float), (&i.t, &i.s, i.t_float)] {
                 if !in_domain(s) || other.sign_of(&den) == Ordering::Equal {
@@ -548,7 +550,7 @@ impl Mobius {
                     r
                 });
                 let zero = RealAlgebraic::from(rat(0));
-                for i in super::self_intersections_of_forms(&rev, Domain::All)?.intersections {
+                for i in super::self_intersect::self_intersections_of_forms(&rev, Domain::All)?.intersections {
                     for (u, other) in [(&i.s, &i.t), (&i.t, &i.s)] {
                         if *other == zero && *u != zero {
                             let s = u.map_rational(&[rat(1)], &[rat(0), rat(1)]);

@@ -1,0 +1,67 @@
+//! Self-intersections `A(s) = A(t)`, `s < t`, from the resultant of the divided differences
+//! `(X(s)W(t) − X(t)W(s))/(s − t)` and the same for `Y`, paired like [`super::pairing`]'s.
+
+use super::elimination::divided_difference;
+use super::filter::apart;
+use super::forms::{point_at, rational_point, to_rational};
+use super::pairing::{Side, finite_roots, multiplicity, roots};
+use super::{Domain, Intersection, Intersections, Kind, overlap};
+use crate::error::{Error, Result};
+use crate::poly::algebraic::{RealAlgebraic, resultant_zv};
+use num_bigint::BigInt;
+
+/// [`self_intersect`](super::self_intersect()) of the curve with integer power forms `fa` (checked by the caller).
+pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain) -> Result<Intersections> {
+    let dx = divided_difference(&fa[0], &fa[2]);
+    let dy = divided_difference(&fa[1], &fa[2]);
+    if dx.is_empty() || dy.is_empty() {
+        // a coordinate is constant: the curve lies on a line; pairs come from the other one
+        let d = if dx.is_empty() { &dy } else { &dx };
+        if d.is_empty() {
+            return Err(Error::InvalidArgument { message: "the curve is a single point".into() });
+        }
+    }
+    let r = resultant_zv(&dx, &dy);
+    if r.is_empty() {
+        return overlap::self_overlap(fa);
+    }
+    let (ss, simple) = roots(&r, domain);
+    let ss = finite_roots(ss, fa);
+    let rr = to_rational(&r);
+    let side = Side::new(fa);
+    // exact points only for pairs whose enclosures cannot be told apart (see `intersect_within`)
+    let mut pts: Vec<Option<[RealAlgebraic; 2]>> = vec![None; ss.len()];
+    let mut narrow: Vec<Option<(RealAlgebraic, f64)>> = vec![None; ss.len()];
+    let mut out = vec![];
+    for i in 0..ss.len() {
+        for j in i + 1..ss.len() {
+            if apart(fa, &ss[i], fa, &ss[j]) {
+                continue;
+            }
+            for k in [i, j] {
+                narrow[k].get_or_insert_with(|| ss[k].narrowed_with_f64());
+            }
+            let (Some((si, _)), Some((sj, _))) = (&narrow[i], &narrow[j]) else { continue };
+            if apart(fa, si, fa, sj) {
+                continue;
+            }
+            let p = pts[i].get_or_insert_with(|| point_at(fa, &ss[i])).clone();
+            let q = pts[j].get_or_insert_with(|| point_at(fa, &ss[j]));
+            if p[0] == q[0] && p[1] == q[1] {
+                let order = if simple { 1 } else { multiplicity(&rr, &ss[i]).min(multiplicity(&rr, &ss[j])).max(1) };
+                let (Some((si, s_float)), Some((_, t_float))) = (&narrow[i], &narrow[j]) else { continue };
+                out.push(Intersection {
+                    s_float: *s_float,
+                    t_float: *t_float,
+                    point: rational_point(&p),
+                    point_float: side.point_float(si),
+                    kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
+                    contact_order: order,
+                    s: ss[i].clone(),
+                    t: ss[j].clone(),
+                });
+            }
+        }
+    }
+    Ok(Intersections { intersections: out, overlaps: vec![] })
+}
