@@ -14,11 +14,10 @@ use num_rational::BigRational;
 ///
 /// ```
 /// use casteljau::poly::algebraic::RealAlgebraic;
+/// use casteljau::rat;
 /// use casteljau_dependant::within;
-/// use num_rational::BigRational;
-/// // √2 is a root of t² − 2 in [1, 2]
-/// let two = BigRational::from_integer(2.into());
-/// let sqrt2 = RealAlgebraic::roots_in(&[-two.clone(), 0.into(), 1.into()], &1.into(), &two)[0].clone();
+/// // √2 is the root of t² − 2 in [1, 2]
+/// let sqrt2 = RealAlgebraic::roots_in(&[rat(-2), rat(0), rat(1)], &rat(1), &rat(2))[0].clone();
 /// assert!(within(&sqrt2, std::f64::consts::SQRT_2, 0.0) == false); // no f64 is √2
 /// assert!(within(&sqrt2, std::f64::consts::SQRT_2, 1e-15));
 /// ```
