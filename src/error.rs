@@ -111,7 +111,7 @@ pub enum Error {
     /// let pts = vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(1)])];
     /// let e = RationalBezier::new(pts, vec![rat(1)]).unwrap_err();
     /// assert_eq!(e, Error::WeightCount { weights: 1, points: 2, row: None });
-    /// assert_eq!(e.to_string(), "1 weights for 2 control points (one weight per control point)");
+    /// assert_eq!(e.to_string(), "1 weights for 2 control points");
     /// ```
     WeightCount {
         /// How many weights were given (in the row, for a patch or net).
@@ -127,15 +127,14 @@ pub enum Error {
     ///
     /// Positions are 1-based, like every position in this enum ([`Error::PointCount`]'s
     /// `point`, [`Position`]) and every "weight i" and "control point i" message of the
-    /// command line: `index = 1` is the first weight, the seeds' `w0`, which the message
-    /// also names.
+    /// command line: `index = 1` is the first weight, the seeds' `w0`.
     ///
     /// ```
     /// use casteljau::{Error, Point, rat, RationalBezier};
     /// let pts = vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(1)])];
     /// let e = RationalBezier::new(pts, vec![rat(1), rat(0)]).unwrap_err();
     /// assert_eq!(e, Error::ZeroWeight { index: 2, row: None });
-    /// assert!(e.to_string().starts_with("weight 2 is 0 (w1)"));
+    /// assert!(e.to_string().starts_with("weight 2 is 0: a control point at infinity"));
     /// ```
     ZeroWeight {
         /// Which weight (of its row, for a patch or net), 1-based.
@@ -196,23 +195,25 @@ impl fmt::Display for Error {
                 }
                 Ok(())
             }
+            // the texts without a row are those the command line has always printed (JSON
+            // error lines are recorded byte for byte)
             Error::WeightCount { weights, points, row } => {
                 if let Some(r) = row {
                     write!(f, "row {r}: ")?;
                 }
-                write!(f, "{weights} weights for {points} control points (one weight per control point)")
+                write!(f, "{weights} weights for {points} control points")
             }
-            Error::ZeroWeight { index, row: None } => write!(
-                f,
-                "weight {index} is 0 (w{}): a control point at infinity is given in homogeneous form (\"x y 0\")",
-                index.saturating_sub(1)
-            ),
-            Error::ZeroWeight { index, row: Some(r) } => write!(
-                f,
-                "weight {index} of row {r} is 0 (w{}{}): a control point at infinity is given in homogeneous form (\"x y z 0\")",
-                r.saturating_sub(1),
-                index.saturating_sub(1)
-            ),
+            Error::ZeroWeight { index, row } => {
+                write!(f, "weight {index} ")?;
+                if let Some(r) = row {
+                    write!(f, "of row {r} ")?;
+                }
+                write!(
+                    f,
+                    "is 0: a control point at infinity is given in homogeneous form (--homogeneous \"x y {}0\")",
+                    if row.is_some() { "z " } else { "" }
+                )
+            }
             Error::WeightsVanish { interval: (a, b) } if a == b => {
                 write!(f, "the weights make the curve undefined: the denominator vanishes at t = {a}")
             }

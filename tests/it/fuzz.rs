@@ -314,7 +314,7 @@ fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> 
     }
     // a weight message says which weight: never the bare "a weight is 0" / "one weight per
     // control point" of old
-    for vague in ["a weight is 0", "one weight per control point\n"] {
+    for vague in ["a weight is 0", "one weight per control point"] {
         if stderr.contains(vague) {
             return Some(format!("a weight message that does not say which: {stderr}"));
         }
