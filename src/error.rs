@@ -103,6 +103,45 @@ pub enum Error {
         /// The option that raises the budget.
         option: &'static str,
     },
+    /// The weights do not match the control points one to one (a rational curve, spline,
+    /// patch or net).
+    ///
+    /// ```
+    /// use casteljau::{Error, Point, rat, RationalBezier};
+    /// let pts = vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(1)])];
+    /// let e = RationalBezier::new(pts, vec![rat(1)]).unwrap_err();
+    /// assert_eq!(e, Error::WeightCount { weights: 1, points: 2, row: None });
+    /// assert_eq!(e.to_string(), "1 weights for 2 control points");
+    /// ```
+    WeightCount {
+        /// How many weights were given (in the row, for a patch or net).
+        weights: usize,
+        /// How many control points there are (in the row).
+        points: usize,
+        /// The row of a patch or net where the counts differ, 1-based; `None` for a curve or
+        /// spline.
+        row: Option<usize>,
+    },
+    /// A weight is 0 where finite control points are needed (a control point at infinity is
+    /// given in homogeneous form instead).
+    ///
+    /// Positions are 1-based, like every position in this enum ([`Error::PointCount`]'s
+    /// `point`, [`Position`]) and every "weight i" and "control point i" message of the
+    /// command line: `index = 1` is the first weight, the seeds' `w0`.
+    ///
+    /// ```
+    /// use casteljau::{Error, Point, rat, RationalBezier};
+    /// let pts = vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(1)])];
+    /// let e = RationalBezier::new(pts, vec![rat(1), rat(0)]).unwrap_err();
+    /// assert_eq!(e, Error::ZeroWeight { index: 2, row: None });
+    /// assert!(e.to_string().starts_with("weight 2 is 0: a control point at infinity"));
+    /// ```
+    ZeroWeight {
+        /// Which weight (of its row, for a patch or net), 1-based.
+        index: usize,
+        /// The row of a patch or net, 1-based; `None` for a curve or spline.
+        row: Option<usize>,
+    },
     /// An argument outside the operation's domain (e.g. a derivative order above the degree).
     InvalidArgument {
         /// What is wrong, in words.
@@ -155,6 +194,25 @@ impl fmt::Display for Error {
                     write!(f, " (about {:.0} s here; raise it with {option} {mantissa}e{exp})", estimate / 1e9)?;
                 }
                 Ok(())
+            }
+            // the texts without a row are those the command line has always printed (JSON
+            // error lines are recorded byte for byte)
+            Error::WeightCount { weights, points, row } => {
+                if let Some(r) = row {
+                    write!(f, "row {r}: ")?;
+                }
+                write!(f, "{weights} weights for {points} control points")
+            }
+            Error::ZeroWeight { index, row } => {
+                write!(f, "weight {index} ")?;
+                if let Some(r) = row {
+                    write!(f, "of row {r} ")?;
+                }
+                write!(
+                    f,
+                    "is 0: a control point at infinity is given in homogeneous form (--homogeneous \"x y {}0\")",
+                    if row.is_some() { "z " } else { "" }
+                )
             }
             Error::WeightsVanish { interval: (a, b) } if a == b => {
                 write!(f, "the weights make the curve undefined: the denominator vanishes at t = {a}")

@@ -15,12 +15,14 @@
 
 pub mod claims;
 pub mod common;
+mod cost;
 pub mod cubic;
 pub mod polynomial;
 pub mod rational;
 pub mod surface;
 
 use crate::error::{Error, Result};
+use crate::work::Budget;
 use claims::ClaimContent;
 pub use common::Outcome;
 use std::collections::HashSet;
@@ -257,17 +259,58 @@ pub fn load(paths: &[PathBuf]) -> Result<Vec<Claim>> {
     Ok(claims)
 }
 
-/// Checks one claim.
+/// Checks one claim within the work budget the caller runs under: inside
+/// [`with_step_limit`](crate::proof::expr::with_step_limit) (as `casteljau prove` runs every
+/// claim) the budget those steps stand for ([`Budget::from_expression_steps`], raised with
+/// `--max-work`), otherwise none. See [`check_within`].
 ///
 /// # Errors
-/// A malformed claim body (bad expression, missing field, unknown kind), with the file and line.
+/// A malformed claim body (bad expression, missing field, unknown kind), or a claim whose
+/// estimated work exceeds the budget, with the file and line.
 pub fn check(claim: &Claim) -> Result<ClaimResult> {
+    let budget = crate::proof::expr::current_steps()
+        .map_or_else(Budget::unlimited, |s| Budget::from_expression_steps(s.limit(), "--max-work"));
+    check_within(claim, &budget)
+}
+
+/// Checks one claim after estimating its work ([`ClaimContent::estimate`], the printed and the
+/// corrected content together): a claim past `budget` is refused before any of it is checked,
+/// with [`Error::WorkLimit`] naming the estimate, the limit and the option that raises it.
+///
+/// # Errors
+/// A malformed claim body (bad expression, missing field, unknown kind), or an estimate past
+/// `budget`, with the file and line.
+///
+/// # Example
+/// ```
+/// use casteljau::catalogue::{check_within, parse_claims};
+/// use casteljau::work::Budget;
+/// let claims = parse_claims("deep.toml", r#"
+///     seed = "x"
+///     [[claim]]
+///     id = "deep"
+///     source = "-"
+///     statement = "-"
+///     expect = "holds"
+///     kind = "repeated-subdivision"
+///     curve = "0 0, 1 3, 2 -1, 3 4, 4 0, 5 2, 6 -3, 7 1, 8 5, 9 -2, 10 0"
+///     t = "1/2"
+///     depth = 16
+///     pieces = 65536
+/// "#).unwrap();
+/// let e = check_within(&claims[0], &Budget::new(1e10, "--max-work")).unwrap_err();
+/// assert!(e.to_string().contains("--max-work"));
+/// ```
+pub fn check_within(claim: &Claim, budget: &Budget) -> Result<ClaimResult> {
     let start = Instant::now();
     let wrap = |e: Error| Error::ClaimFile {
         file: claim.file.clone(),
         line: Some(claim.line),
         message: format!("claim {}: {e}", claim.id),
     };
+    let estimate = claim.content.estimate().map_err(wrap)?
+        + claim.corrected.as_ref().map_or(Ok(0.0), |c| c.estimate()).map_err(wrap)?;
+    budget.check("the check", estimate).map_err(wrap)?;
     let printed: Outcome = claim.content.check().map_err(wrap)?;
     let (found, corrected_detail) = if printed.holds {
         (Verdict::Holds, None)

@@ -364,6 +364,11 @@ fn identity_instance(diff: &Expr, vars: &[String], env: &Env) -> Result<Instance
         .iter()
         .map(|v| diff.degree(v, &mut p).map(|d| d.0).map_err(|e| bad(format!("{e:?}"))))
         .collect::<Result<_>>()?;
+    // the grid is known only now: charge its points (each an evaluation of the whole tree)
+    // against the step budget before evaluating any of them
+    let points = degrees.iter().fold(1u64, |p, &d| p.saturating_mul(d as u64 + 1));
+    crate::proof::expr::charge_steps(points.saturating_mul(1 + diff.size() as u64 / 8))
+        .map_err(|e| bad(e.to_string()))?;
     let res = grid_prove(&degrees, |x| {
         let mut e = env.clone();
         e.extend(vars.iter().cloned().zip(x.iter().cloned()));

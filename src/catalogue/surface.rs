@@ -237,6 +237,19 @@ fn net_rows(net: &str, net_weights: Option<&str>) -> Result<Grid> {
     Ok((rows, weights))
 }
 
+/// The shape (rows, points in the longest row) of a patch or net and the largest bit length of
+/// its coordinates and weights, for [`ClaimContent::estimate`](super::claims::ClaimContent::estimate).
+pub(super) fn net_sizes(net: &str, net_weights: Option<&str>) -> Result<((usize, usize), u64)> {
+    let (rows, weights) = net_rows(net, net_weights)?;
+    let beta = rows
+        .iter()
+        .map(|r| crate::work::max_bits(r))
+        .chain(weights.iter().map(|w| crate::work::max_bits_of(w)))
+        .max()
+        .unwrap_or(0);
+    Ok(((rows.len(), rows.iter().map(Vec::len).max().unwrap_or(0)), beta))
+}
+
 fn patch_of(net: &str, net_weights: Option<&str>) -> Result<RationalPatch> {
     let (rows, weights) = net_rows(net, net_weights)?;
     RationalPatch::new(rows, weights)

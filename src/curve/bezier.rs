@@ -14,6 +14,67 @@ use std::fmt;
 /// Largest degree accepted by constructors and degree elevation.
 pub const MAX_DEGREE: usize = 10_000;
 
+/// Refuses, before any number of it is read, a control polygon's text whose numbers would make
+/// a curve of degree above [`MAX_DEGREE`] in dimension `dim`: [`Error::TooLarge`], the error
+/// [`BezierCurve::new`] gives once the points exist.
+///
+/// Reading first and checking after costs about 200 bytes per number (each a pair of big
+/// integers, each point a vector), forty times the text of short numbers: a 10 MB line of
+/// small points needed half a gigabyte before it was refused. Counting the numbers — runs of
+/// characters between blanks and commas, as the number reader splits them — takes one pass
+/// and no memory.
+///
+/// # Errors
+/// [`Error::TooLarge`] when `numbers / dim − 1 > MAX_DEGREE`.
+///
+/// # Example
+/// ```
+/// use casteljau::curve::bezier::{MAX_DEGREE, check_polygon_text};
+/// assert!(check_polygon_text("0 0, 1 1, 2 0", 2).is_ok());
+/// let huge = "1 2, ".repeat(MAX_DEGREE + 2);
+/// assert!(check_polygon_text(&huge, 2).unwrap_err().to_string().contains("exceeds the limit 10000"));
+/// ```
+pub fn check_polygon_text(text: &str, dim: usize) -> Result<()> {
+    let mut numbers = 0usize;
+    let mut inside = false;
+    for c in text.chars() {
+        let sep = c.is_whitespace() || c == ',';
+        if !sep && !inside {
+            numbers += 1;
+        }
+        inside = !sep;
+    }
+    let points = numbers / dim.max(1);
+    if points > MAX_DEGREE + 1 {
+        return Err(Error::TooLarge { what: "degree", value: points - 1, limit: MAX_DEGREE });
+    }
+    Ok(())
+}
+
+/// [`check_polygon_text`], then the control points read in `mode` and the curve: the route for
+/// untrusted text (a line of a batch), whose memory stays proportional to the text.
+///
+/// # Errors
+/// As [`check_polygon_text`], [`crate::num::parse::parse_points_in`] and [`BezierCurve::new`].
+///
+/// # Example
+/// ```
+/// use casteljau::curve::bezier::parse_curve_in;
+/// use casteljau::num::parse::NumberMode;
+/// let c = parse_curve_in("0 0, 1 2, 2 0", 2, Some(1), NumberMode::Exact).unwrap();
+/// assert_eq!(c.degree(), 2);
+/// assert!(parse_curve_in(&"1 2 ".repeat(20_000), 2, Some(1), NumberMode::Exact).is_err());
+/// ```
+pub fn parse_curve_in(
+    text: &str,
+    dim: usize,
+    line: Option<usize>,
+    mode: crate::num::parse::NumberMode,
+) -> Result<BezierCurve<num_rational::BigRational>> {
+    check_polygon_text(text, dim)?;
+    BezierCurve::new(crate::num::parse::parse_points_in(text, dim, line, mode)?)
+}
+
 /// A Bézier curve: `n + 1 ≥ 1` control points of one dimension `≥ 1`.
 ///
 /// # Invariants

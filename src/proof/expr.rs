@@ -73,6 +73,13 @@ pub struct StepBudget {
     limit: u64,
 }
 
+impl StepBudget {
+    /// The number of steps this budget started with.
+    pub fn limit(&self) -> u64 {
+        self.limit
+    }
+}
+
 std::thread_local! {
     /// The budget evaluations on this thread charge (none: unlimited).
     static STEPS: std::cell::RefCell<Option<std::sync::Arc<StepBudget>>> = const { std::cell::RefCell::new(None) };
@@ -142,6 +149,21 @@ fn step_n(n: u64) -> std::result::Result<(), EvalError> {
             }
         }
     })
+}
+
+/// Charges `n` steps of work done outside [`Expr::eval`] (a grid point of a proof, say) against
+/// the budget of the innermost [`with_step_limit`]; without one, nothing is charged.
+///
+/// # Errors
+/// [`EvalError::Invalid`] naming the limit (and `--max-work`) once the budget is spent.
+///
+/// ```
+/// use casteljau::proof::expr::{charge_steps, with_step_limit};
+/// assert!(charge_steps(1_000_000).is_ok()); // no limit
+/// assert!(with_step_limit(100_000, || charge_steps(1_000_000)).is_err());
+/// ```
+pub fn charge_steps(n: u64) -> std::result::Result<(), EvalError> {
+    step_n(n)
 }
 
 /// Charges one fold term.
@@ -588,6 +610,22 @@ fn pow(x: &Fraction, k: i64) -> std::result::Result<Fraction, EvalError> {
 }
 
 impl Expr {
+    /// The number of nodes of the tree: what one evaluation costs, up to powers and folds.
+    ///
+    /// ```
+    /// use casteljau::proof::expr::parse_expr;
+    /// assert_eq!(parse_expr("x*y + 1").unwrap().size(), 5);
+    /// ```
+    pub fn size(&self) -> usize {
+        1 + match self {
+            Expr::Num(_) | Expr::Var(_) => 0,
+            Expr::Neg(e) => e.size(),
+            Expr::Bin(_, a, b) | Expr::Pow(a, b) | Expr::Binom(a, b) => a.size() + b.size(),
+            Expr::Bern(a, b, c) => a.size() + b.size() + c.size(),
+            Expr::Fold(_, _, a, b, c) => a.size() + b.size() + c.size(),
+        }
+    }
+
     /// The value of an operand of `+ − * /`: Bernstein values come shared from the memo.
     fn operand(&self, env: &mut Env) -> std::result::Result<Operand, EvalError> {
         match self {

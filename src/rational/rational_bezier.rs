@@ -58,21 +58,14 @@ impl<S: Scalar> RationalBezier<S> {
     /// From control points and weights.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a count mismatch, or a zero weight (a point at infinity
-    /// must be given in homogeneous form, [`Self::from_homogeneous`]).
+    /// [`Error::WeightCount`] for a count mismatch, [`Error::ZeroWeight`] for a zero weight (a
+    /// point at infinity must be given in homogeneous form, [`Self::from_homogeneous`]).
     pub fn new(points: Vec<Point<S>>, weights: Vec<S>) -> Result<Self> {
         if points.len() != weights.len() {
-            return Err(Error::InvalidArgument {
-                message: format!("{} weights for {} control points", weights.len(), points.len()),
-            });
+            return Err(Error::WeightCount { weights: weights.len(), points: points.len(), row: None });
         }
         if let Some(i) = weights.iter().position(Scalar::is_zero) {
-            return Err(Error::InvalidArgument {
-                message: format!(
-                    "weight {} is 0: a control point at infinity is given in homogeneous form (--homogeneous \"x y 0\")",
-                    i + 1
-                ),
-            });
+            return Err(Error::ZeroWeight { index: i + 1, row: None });
         }
         let h = points.iter().zip(&weights).map(|(p, w)| p.to_homogeneous(w)).collect();
         Ok(RationalBezier { homogeneous: BezierCurve::new(h)? })
@@ -234,8 +227,9 @@ impl<S: Scalar> RationalBezier<S> {
                 fi.clone() * w.get(i.wrapping_sub(1)).unwrap_or(&S::zero()),
             );
             let (pl, pr) = (p.get(i.wrapping_sub(1)).unwrap_or(&p[i.min(n)]), p.get(i).unwrap_or(&p[n]));
-            let point = divide(&a, &b, pl, pr)
-                .ok_or_else(|| Error::InvalidArgument { message: format!("(22): new weight {i} vanishes") })?;
+            let point = divide(&a, &b, pl, pr).ok_or_else(|| Error::InvalidArgument {
+                message: format!("(22): the new weight w'{i} (counting from w'0) vanishes"),
+            })?;
             ws.push((a + b) / m.clone());
             pts.push(point);
         }

@@ -65,8 +65,9 @@ impl RationalSpline {
     /// A spline from control points, weights and scale ratios (`m + n` of them).
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for wrong counts, a non-positive ratio or weight of 0, or a
-    /// degree above [`MAX_SPLINE_DEGREE`].
+    /// [`Error::WeightCount`] for a weight count other than the number of points,
+    /// [`Error::ZeroWeight`] naming the first zero weight, [`Error::InvalidArgument`] for other
+    /// wrong counts, a non-positive ratio, or a degree above [`MAX_SPLINE_DEGREE`].
     ///
     /// # Example
     /// ```
@@ -95,7 +96,7 @@ impl RationalSpline {
             )));
         }
         if weights.len() != points.len() {
-            return Err(bad(format!("{} weights for {} control points", weights.len(), points.len())));
+            return Err(Error::WeightCount { weights: weights.len(), points: points.len(), row: None });
         }
         let need = points.len() - 1 + degree;
         if ratios.len() != need {
@@ -109,7 +110,7 @@ impl RationalSpline {
             return Err(bad(format!("scale ratio {} must be positive", i + 1)));
         }
         if let Some(i) = weights.iter().position(Scalar::is_zero) {
-            return Err(bad(format!("weight {} is 0", i + 1)));
+            return Err(Error::ZeroWeight { index: i + 1, row: None });
         }
         let mut knots = vec![rat(0)];
         for r in ratios {

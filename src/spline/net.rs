@@ -9,7 +9,7 @@
 
 use crate::error::{Error, Result};
 use crate::num::point::Point;
-use crate::num::scalar::rat;
+use crate::num::scalar::{Scalar, rat};
 use crate::rational::rational_bezier::RationalBezier;
 use crate::spline::{Conversion, RationalSpline};
 use crate::surface::RationalPatch;
@@ -51,7 +51,9 @@ impl SplineNet {
     /// A net from affine points, weights and ratios.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for ragged input or counts that do not fit the degrees.
+    /// [`Error::InvalidArgument`] for ragged input (naming the row) or counts that do not fit
+    /// the degrees, [`Error::WeightCount`] for a row of weights of another length,
+    /// [`Error::ZeroWeight`] naming the first zero weight.
     ///
     /// # Example
     /// ```
@@ -71,14 +73,23 @@ impl SplineNet {
         mu: Vec<BigRational>,
     ) -> Result<Self> {
         let cols = points.first().map_or(0, Vec::len);
-        if points.is_empty()
-            || points.iter().any(|r| r.len() != cols)
-            || weights.len() != points.len()
-            || weights.iter().any(|r| r.len() != cols)
-        {
-            return Err(Error::InvalidArgument {
-                message: "a net needs equal-length rows of points and weights".into(),
-            });
+        let bad = |message: String| Error::InvalidArgument { message };
+        if points.is_empty() {
+            return Err(bad("a net needs equal-length rows of points and weights; there are none".into()));
+        }
+        if let Some(r) = points.iter().position(|r| r.len() != cols) {
+            return Err(bad(format!("row {} has {} control points, row 1 has {cols}", r + 1, points[r].len())));
+        }
+        if weights.len() != points.len() {
+            return Err(bad(format!("{} rows of weights for {} rows of control points", weights.len(), points.len())));
+        }
+        if let Some(r) = weights.iter().position(|r| r.len() != cols) {
+            return Err(Error::WeightCount { weights: weights[r].len(), points: cols, row: Some(r + 1) });
+        }
+        for (r, w) in weights.iter().enumerate() {
+            if let Some(i) = w.iter().position(Scalar::is_zero) {
+                return Err(Error::ZeroWeight { index: i + 1, row: Some(r + 1) });
+            }
         }
         let rows = points
             .iter()

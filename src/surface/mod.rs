@@ -49,8 +49,10 @@ impl RationalPatch {
     /// A patch from `(m+1)×(n+1)` points (row-major) and weights.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for ragged rows, count mismatches, zero weights or degrees above
-    /// [`MAX_PATCH_DEGREE`].
+    /// [`Error::WeightCount`] for a row whose weights and points differ in number (naming the
+    /// row), [`Error::ZeroWeight`] for a zero weight (naming its row and place),
+    /// [`Error::InvalidArgument`] for ragged rows or unequal numbers of rows, [`Error::TooLarge`]
+    /// for degrees above [`MAX_PATCH_DEGREE`].
     ///
     /// # Example
     /// ```
@@ -66,11 +68,16 @@ impl RationalPatch {
     /// ```
     pub fn new(points: Vec<Vec<Point<BigRational>>>, weights: Vec<Vec<BigRational>>) -> Result<Self> {
         let bad = |m: String| Error::InvalidArgument { message: m };
-        if points.len() != weights.len() || points.iter().zip(&weights).any(|(p, w)| p.len() != w.len()) {
-            return Err(bad("one weight per control point".into()));
+        if points.len() != weights.len() {
+            return Err(bad(format!("{} rows of weights for {} rows of control points", weights.len(), points.len())));
         }
-        if weights.iter().flatten().any(Scalar::is_zero) {
-            return Err(bad("a weight is 0".into()));
+        if let Some((r, (p, w))) = points.iter().zip(&weights).enumerate().find(|(_, (p, w))| p.len() != w.len()) {
+            return Err(Error::WeightCount { weights: w.len(), points: p.len(), row: Some(r + 1) });
+        }
+        for (r, w) in weights.iter().enumerate() {
+            if let Some(i) = w.iter().position(Scalar::is_zero) {
+                return Err(Error::ZeroWeight { index: i + 1, row: Some(r + 1) });
+            }
         }
         Self::from_homogeneous(
             points
@@ -554,7 +561,14 @@ impl RationalPatch {
             .ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
         let w = rows[i][j].coords[d].clone() + dw;
         if w.is_zero() {
-            return Err(Error::InvalidArgument { message: "the new weight is 0".into() });
+            return Err(Error::InvalidArgument {
+                message: format!(
+                    "the new weight {} of row {} (w{i}{j}) is 0: {} + {dw}",
+                    j + 1,
+                    i + 1,
+                    rows[i][j].coords[d]
+                ),
+            });
         }
         rows[i][j] = p.to_homogeneous(&w);
         Ok(RationalPatch { rows })

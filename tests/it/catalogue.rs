@@ -100,11 +100,9 @@ fn catalogue_malformed_files_name_file_and_line() {
     let e = check(c).unwrap_err().to_string();
     assert!(e.starts_with("t.toml:4: claim t-8") && e.contains("column"), "{e}");
     let dup = format!("{TRUE_IDENTITY}{}", &TRUE_IDENTITY[TRUE_IDENTITY.find("[[claim]]").unwrap()..]);
-    let dir = std::env::temp_dir().join(format!("casteljau-dup-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join("d.toml"), dup).unwrap();
-    assert!(load(std::slice::from_ref(&dir)).unwrap_err().to_string().contains("duplicate claim id t-8"));
-    std::fs::remove_dir_all(dir).unwrap();
+    let tmp = crate::common::TempDir::new("dup");
+    tmp.write("d.toml", &dup);
+    assert!(load(&[tmp.path().to_path_buf()]).unwrap_err().to_string().contains("duplicate claim id t-8"));
 }
 
 #[test]

@@ -121,15 +121,15 @@ fn cli_prove_checks_the_catalogue_with_json_junit_and_exit_codes() {
     let out = stdout(&o);
     assert!(out.lines().last().unwrap().ends_with("passed, 0 failed"));
     assert!(out.contains("003-trinomial-5") && out.contains("fails-as-printed"));
-    let junit = std::env::temp_dir().join(format!("casteljau-junit-{}.xml", std::process::id()));
+    let tmp = crate::common::TempDir::new("prove");
+    let junit = tmp.join("junit.xml");
     let o = run(&["prove", "--filter", "trinomial", "--json", "--junit", junit.to_str().unwrap()], None);
     let lines: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert_eq!(lines.len(), 4);
     assert!(lines.iter().all(|v| v["passed"] == true));
     assert!(std::fs::read_to_string(&junit).unwrap().contains("tests=\"4\" failures=\"0\""));
-    std::fs::remove_file(junit).unwrap();
     // a claim file with a wrong expected verdict: exit 1; a malformed one: exit 2 naming file:line
-    let dir = std::env::temp_dir().join(format!("casteljau-prove-{}", std::process::id()));
+    let dir = tmp.join("claims");
     std::fs::create_dir_all(&dir).unwrap();
     let wrong = dir.join("wrong.toml");
     std::fs::write(&wrong, "seed = \"x\"\n[[claim]]\nid = \"w\"\nsource = \"s\"\nstatement = \"1 = 2\"\nexpect = \"holds\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"2\"\n").unwrap();
@@ -142,7 +142,6 @@ fn cli_prove_checks_the_catalogue_with_json_junit_and_exit_codes() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("bad.toml:3: claim b"), "{}", stderr(&o));
     assert_eq!(run(&["prove", "/nonexistent/proofs"], None).status.code(), Some(2));
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
@@ -343,11 +342,11 @@ fn cli_plot_and_gallery() {
     assert!(stdout(&o).matches("<polyline").count() >= 3);
     assert_eq!(run(&["plot", "0 0, 1 x"], None).status.code(), Some(2));
     assert_eq!(run(&["plot", "--weights-family", "q", "--weights", "1 1", "0 0, 1 1"], None).status.code(), Some(2));
-    let dir = std::env::temp_dir().join(format!("casteljau-cli-gallery-{}", std::process::id()));
+    let tmp = crate::common::TempDir::new("cli-gallery");
+    let dir = tmp.join("gallery");
     let o = run(&["gallery", dir.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(0));
     assert!(dir.join("index.html").exists());
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// The fast default and `--detail full` agree on every field they share; only `full` carries
@@ -518,8 +517,7 @@ fn cli_scan_only_filters_and_flags_endpoint_cusps() {
 
 #[test]
 fn cli_scan_svg_reports_skips_and_element_errors_with_exit_2() {
-    let dir = std::env::temp_dir().join(format!("casteljau-scan-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::TempDir::new("scan");
     let svg = dir.join("icon.svg");
     std::fs::write(
         &svg,
@@ -540,7 +538,6 @@ fn cli_scan_svg_reports_skips_and_element_errors_with_exit_2() {
     assert!(lines[3]["error"].as_str().unwrap().contains("column"));
     assert!(stderr(&o).contains("errors 1"), "{}", stderr(&o));
     assert_eq!(run(&["scan", dir.join("missing.ttf").to_str().unwrap()], None).status.code(), Some(2));
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -143,6 +143,18 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
             return (a, Some(lines.join("\n")));
         }
         16 if r.chance(25) => return huge(r),
+        16 if r.chance(30) => {
+            // one long line of many small points (once half a gigabyte per 10 MB line):
+            // refused by its degree before its numbers are read
+            let cmd = r.pick(&["eval", "classify", "power", "subdivide"]);
+            a.extend([s(cmd), s("--t"), s("1/3")]);
+            if cmd == "classify" || cmd == "power" {
+                a.truncate(1);
+            }
+            let points = *[10_001usize, 10_002, 200_000].get(r.below(3)).unwrap();
+            let line: Vec<String> = (0..points).map(|i| format!("{} {}", i % 97, i % 89)).collect();
+            return (a, Some(line.join(r.pick(&[", ", " ", ","]))));
+        }
         17 if r.chance(50) => return claim_file(r),
         _ => {
             // random tokens: options and values in any order
@@ -218,11 +230,36 @@ fn claim_file(r: &mut Rng) -> (Vec<String>, Option<String>) {
     let rhs = r.pick(&["1", "t", "sum(r, j, n, B(j, r, t) * B(r, n, t))", "x", "t^(n+1)/t"]);
     let range = r.pick(&["0..=3", "0..=99999", "0..=100001", "-5000000000000000000..=5000000000000000000", "3..=1"]);
     let extra = r.pick(&["", "steps = 4000000000\n", "degree = 1000000000\n", "unknown = 1\n"]);
-    let text = format!(
-        "seed = \"x\"\ntitle = \"x\"\n\n[[claim]]\nid = \"f\"\nsource = \"x\"\nstatement = \"x\"\nexpect = \"holds\"\n\
-         kind = \"{}\"\nvars = [\"t\"]\nparams = [\"n in {range}\", \"j in 0..=n\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n{extra}",
-        r.pick(&["identity", "table", "matrix", "nonsense"])
-    );
+    let head =
+        "seed = \"x\"\ntitle = \"x\"\n\n[[claim]]\nid = \"f\"\nsource = \"x\"\nstatement = \"x\"\nexpect = \"holds\"\n";
+    let text = if r.chance(40) {
+        // kinds whose work grows with depth, degree or grid: estimated and refused up front
+        // (a depth-16 subdivision of a degree-10 curve once ran past 13 minutes)
+        let n = *[3usize, 10, 40, 200].get(r.below(4)).unwrap();
+        let curve: Vec<String> = (0..=n).map(|i| format!("{i} {}", (i * 7) % 11)).collect();
+        let curve = curve.join(", ");
+        let net: Vec<String> = (0..n.min(40))
+            .map(|i| (0..n.min(40)).map(|j| format!("{i} {j} 1")).collect::<Vec<_>>().join(", "))
+            .collect();
+        let body = match r.below(6) {
+            0 => format!(
+                "kind = \"repeated-subdivision\"\ncurve = \"{curve}\"\nt = \"{}\"\ndepth = {}\npieces = 4",
+                r.pick(&["1/2", "12345/67891"]),
+                r.below(18)
+            ),
+            1 => format!("kind = \"rational-evaluations\"\ncurve = \"{curve}\""),
+            2 => format!("kind = \"weight-pull\"\ncurve = \"{curve}\"\nindex = 1\nweight = \"9\""),
+            3 => format!("kind = \"patch-evaluations\"\nnet = \"{}\"", net.join("; ")),
+            4 => format!("kind = \"implicit\"\ncurve = \"{curve}\"\npoly = \"x^{} - y\"", r.below(60)),
+            _ => format!("kind = \"table\"\ncurve = \"{curve}\"\nsteps = {}\nvalues = []", r.below(100_000) + 1),
+        };
+        format!("{head}{body}\n")
+    } else {
+        format!(
+            "{head}kind = \"{}\"\nvars = [\"t\"]\nparams = [\"n in {range}\", \"j in 0..=n\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n{extra}",
+            r.pick(&["identity", "table", "matrix", "nonsense"])
+        )
+    };
     std::fs::write(dir.join("c.toml"), text).unwrap();
     let s = |x: &str| x.to_string();
     let mut a = vec![s("prove"), dir.to_string_lossy().into_owned(), s("--max-work"), s("1e8")];
@@ -274,6 +311,13 @@ fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> 
     }
     if stderr.contains("panicked") || stderr.contains("RUST_BACKTRACE") {
         return Some(format!("panic: {stderr}"));
+    }
+    // a weight message says which weight: never the bare "a weight is 0" / "one weight per
+    // control point" of old
+    for vague in ["a weight is 0", "one weight per control point"] {
+        if stderr.contains(vague) {
+            return Some(format!("a weight message that does not say which: {stderr}"));
+        }
     }
     let json = args.iter().any(|a| a == "--json");
     if code == 2 && stderr.trim().is_empty() && !(json && stdout.contains("\"error\"")) {
@@ -327,11 +371,9 @@ fn fuzz_every_invocation_is_answered_bounded_run() {
 /// No file is left behind when `plot -o` or `prove --junit` fails.
 #[test]
 fn fuzz_failed_outputs_leave_no_file() {
-    let dir = std::env::temp_dir().join(format!("casteljau-fuzz-out-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::TempDir::new("fuzz-out");
     let svg = dir.join("x.svg");
     let o = crate::common::run(&["plot", "-o", svg.to_str().unwrap(), "0 0, 1 x"], None);
     assert_eq!(o.status.code(), Some(2));
-    assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "a file was left behind");
-    std::fs::remove_dir_all(&dir).ok();
+    assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none(), "a file was left behind");
 }

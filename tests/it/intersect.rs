@@ -564,8 +564,7 @@ mod hard_cases {
 
 #[test]
 fn cli_intersect_plot_marks_tangencies_and_overlaps() {
-    let dir = std::env::temp_dir().join(format!("casteljau-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::TempDir::new("plot");
     let f = dir.join("t.svg");
     let o = run(&["intersect", "--plot", f.to_str().unwrap(), "0 0, 2 4, -1 4, 3 0", "-1 3, 4 3"], None);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -581,7 +580,6 @@ fn cli_intersect_plot_marks_tangencies_and_overlaps() {
         run(&["intersect", "--plot", f.to_str().unwrap(), "--input", batch.to_str().unwrap()], None).status.code(),
         Some(2)
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

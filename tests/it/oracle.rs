@@ -2,7 +2,7 @@
 //! promised features, the oracle passes the right answers (rounded to `f64`) and catches every
 //! injected wrong one, and `casteljau check` reports them with exit 1.
 
-use crate::common::{run, stderr, stdout};
+use crate::common::{TempDir, run, stderr, stdout};
 use casteljau::classify::oracle::{FloatAnswers, Kind, Tolerances, check_f64, compare};
 use casteljau::classify::{Classification, NodeType, classify};
 use casteljau::strategies::binary64;
@@ -163,15 +163,16 @@ fn oracle_decides_the_tolerance_exactly() {
     assert!(check_f64(&[[f64::NAN, 0.0], [1.0, 1.0]], &a, &tol(0.0)).is_err());
 }
 
-fn write(name: &str, text: &str) -> std::path::PathBuf {
-    let p = std::env::temp_dir().join(format!("casteljau-oracle-{}-{name}", std::process::id()));
-    std::fs::write(&p, text).unwrap();
-    p
+/// A file in `dir`, removed with it when the test ends (also when it fails).
+fn write(dir: &TempDir, name: &str, text: &str) -> std::path::PathBuf {
+    dir.write(name, text)
 }
 
 #[test]
 fn cli_check_reports_each_disagreement_and_exits_1() {
+    let tmp = TempDir::new("oracle");
     let answers = write(
+        &tmp,
         "answers.jsonl",
         r#"{"points": [[0,0],[1,1],[0,1],[1,0]], "category": "arch", "cusp_parameters": []}
 {"points": [["0","0"],["2","2"],["-1","2"],["1","0"]], "category": "loop", "self_intersection_parameters": [0.1127016653792583, 0.8872983346207417], "double_point": [0.5, 0.6]}
@@ -193,8 +194,10 @@ fn cli_check_reports_each_disagreement_and_exits_1() {
 
 #[test]
 fn cli_check_pairs_answers_with_a_curves_file_and_passes_right_answers() {
-    let curves = write("curves.txt", "# font cubics\n0 0, 1 1, 0 1, 1 0\n\n0 0, 2 2, -1 2, 1 0\n");
+    let tmp = TempDir::new("oracle");
+    let curves = write(&tmp, "curves.txt", "# font cubics\n0 0, 1 1, 0 1, 1 0\n\n0 0, 2 2, -1 2, 1 0\n");
     let answers = write(
+        &tmp,
         "right.jsonl",
         r#"{"category": "cusp", "cusp_parameters": [0.5], "node_type": "cusp"}
 {"line": 4, "category": "loop", "loop": true, "inflections": 0}
@@ -204,7 +207,7 @@ fn cli_check_pairs_answers_with_a_curves_file_and_passes_right_answers() {
     assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
     assert!(stdout(&o).is_empty());
     // the same answers against the wrong lines disagree
-    let swapped = write("swapped.jsonl", r#"{"line": 2, "category": "loop"}"#);
+    let swapped = write(&tmp, "swapped.jsonl", r#"{"line": 2, "category": "loop"}"#);
     let o = run(&["check", "--against", swapped.to_str().unwrap(), curves.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(1));
     assert!(stdout(&o).contains("category mismatch: exact cusp"), "{}", stdout(&o));
@@ -212,7 +215,8 @@ fn cli_check_pairs_answers_with_a_curves_file_and_passes_right_answers() {
 
 #[test]
 fn cli_check_bad_answers_exit_2_naming_the_line() {
-    let answers = write("bad.jsonl", "{\"points\": [[0,0],[1]]}\nnot json\n{\"category\": \"arch\"}\n");
+    let tmp = TempDir::new("oracle");
+    let answers = write(&tmp, "bad.jsonl", "{\"points\": [[0,0],[1]]}\nnot json\n{\"category\": \"arch\"}\n");
     let o = run(&["check", "--against", answers.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(2));
     let e = stderr(&o);

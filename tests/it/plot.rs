@@ -125,7 +125,8 @@ fn plot_svg_is_deterministic() {
 
 #[test]
 fn gallery_writes_every_figure_parsable_with_index() {
-    let dir = std::env::temp_dir().join(format!("casteljau-gallery-{}", std::process::id()));
+    let tmp = crate::common::TempDir::new("gallery");
+    let dir = tmp.join("gallery");
     let files = casteljau::plot::gallery::write(&dir).unwrap();
     assert!(files.len() >= 19, "{files:?}");
     let index = std::fs::read_to_string(dir.join("index.html")).unwrap();
@@ -144,13 +145,11 @@ fn gallery_writes_every_figure_parsable_with_index() {
         assert!(files.iter().any(|f| f == name), "{name}");
     }
     // deterministic: writing again gives the same bytes
-    let again = std::env::temp_dir().join(format!("casteljau-gallery-again-{}", std::process::id()));
+    let again = tmp.join("again");
     casteljau::plot::gallery::write(&again).unwrap();
     for f in &files {
         assert_eq!(std::fs::read(dir.join(f)).unwrap(), std::fs::read(again.join(f)).unwrap(), "{f}");
     }
-    std::fs::remove_dir_all(dir).unwrap();
-    std::fs::remove_dir_all(again).unwrap();
 }
 
 #[test]

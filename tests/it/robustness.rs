@@ -1,7 +1,7 @@
 //! Inputs that once crashed the binary (panic, stack overflow) or printed nonsense: each is a
 //! regression test named after its case. Every one must end with exit 2 and a message.
 
-use crate::common::{run, stderr};
+use crate::common::{TempDir, run, stderr};
 
 fn refused(args: &[&str], needle: &str) {
     let o = run(args, None);
@@ -54,8 +54,7 @@ fn robustness_division_by_zero_in_a_polynomial_is_named_in_words() {
 
 #[test]
 fn robustness_deep_expression_in_a_claim_file_is_a_claim_error() {
-    let dir = std::env::temp_dir().join(format!("casteljau-deep-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("deep");
     let file = dir.join("deep.toml");
     let deep = format!("{}t{}", "(".repeat(10000), ")".repeat(10000));
     std::fs::write(
@@ -68,7 +67,6 @@ fn robustness_deep_expression_in_a_claim_file_is_a_claim_error() {
     let o = run(&["prove", file.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("deep.toml") && stderr(&o).contains("nested more than"), "{}", stderr(&o));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -88,8 +86,7 @@ fn robustness_plot_never_writes_nan_or_inf() {
 
 #[test]
 fn robustness_prove_junit_is_all_or_nothing_on_a_malformed_claim() {
-    let dir = std::env::temp_dir().join(format!("casteljau-junit-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("junit");
     let claims = dir.join("bad.toml");
     std::fs::write(
         &claims,
@@ -100,9 +97,9 @@ fn robustness_prove_junit_is_all_or_nothing_on_a_malformed_claim() {
     let o = run(&["prove", claims.to_str().unwrap(), "--junit", junit.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(2));
     assert!(!junit.exists(), "no partial report");
-    let leftovers: Vec<_> = std::fs::read_dir(&dir).unwrap().filter_map(|e| e.ok()).map(|e| e.file_name()).collect();
+    let leftovers: Vec<_> =
+        std::fs::read_dir(dir.path()).unwrap().filter_map(|e| e.ok()).map(|e| e.file_name()).collect();
     assert_eq!(leftovers.len(), 1, "{leftovers:?}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -113,8 +110,7 @@ fn robustness_implicit_degree_bound_beyond_the_limit_is_refused_before_work() {
 
 #[test]
 fn robustness_claim_sizes_beyond_the_limits_are_claim_errors_not_aborts() {
-    let dir = std::env::temp_dir().join(format!("casteljau-sizes-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("sizes");
     let head = |id: &str| format!("[[claim]]\nid = \"{id}\"\nsource = \"-\"\nstatement = \"-\"\nexpect = \"holds\"\n");
     let text = format!(
         "seed = \"x\"\n{}kind = \"table\"\ncurve = \"0 0, 1 1\"\nsteps = 4000000000\nvalues = [[\"0\", \"0\"]]\n\
@@ -141,7 +137,6 @@ fn robustness_claim_sizes_beyond_the_limits_are_claim_errors_not_aborts() {
     ] {
         assert!(stderr(&o).contains(needle), "{needle}: {}", stderr(&o));
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -215,8 +210,7 @@ fn robustness_max_work_raises_and_lowers_the_budget() {
 
 #[test]
 fn robustness_prove_with_a_hundred_thousand_instances_stops_at_the_step_limit() {
-    let dir = std::env::temp_dir().join(format!("casteljau-steps-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("steps");
     std::fs::write(
         dir.join("c.toml"),
         "seed = \"x\"\ntitle = \"x\"\n\n[[claim]]\nid = \"many\"\nsource = \"x\"\nstatement = \"x\"\nexpect = \"holds\"\n\
@@ -224,8 +218,7 @@ fn robustness_prove_with_a_hundred_thousand_instances_stops_at_the_step_limit() 
     )
     .unwrap();
     let start = std::time::Instant::now();
-    let o = run(&["prove", dir.to_str().unwrap()], None);
-    std::fs::remove_dir_all(&dir).unwrap();
+    let o = run(&["prove", dir.path().to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("--max-work"), "{}", stderr(&o));
     assert!(start.elapsed().as_secs() < 60);
@@ -341,8 +334,8 @@ fn robustness_line_numbers_survive_block_boundaries_with_every_line_end() {
             input += ends[(k * 7 + k / 3) % ends.len()];
         }
     }
-    let path = std::env::temp_dir().join(format!("casteljau-blocks-{}.txt", std::process::id()));
-    std::fs::write(&path, &input).unwrap();
+    let dir = TempDir::new("blocks");
+    let path = dir.write("blocks.txt", &input);
     let outputs: Vec<String> = ["1", "2"]
         .iter()
         .map(|threads| {
@@ -351,10 +344,164 @@ fn robustness_line_numbers_survive_block_boundaries_with_every_line_end() {
             crate::common::stdout(&o)
         })
         .collect();
-    std::fs::remove_file(&path).unwrap();
     assert_eq!(outputs[0], outputs[1]);
     let lines: Vec<serde_json::Value> = outputs[0].lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     let got: Vec<(usize, bool)> =
         lines.iter().map(|v| (v["line"].as_u64().unwrap() as usize, v.get("error").is_some())).collect();
     assert_eq!(got, expected);
+}
+
+/// A claim file with one claim of `kind` and its `fields`.
+fn one_claim(id: &str, fields: &str) -> String {
+    format!("seed = \"x\"\n[[claim]]\nid = \"{id}\"\nsource = \"-\"\nstatement = \"-\"\nexpect = \"holds\"\n{fields}\n")
+}
+
+const DEGREE_10: &str = "0 0, 1 3, 2 -1, 3 4, 4 0, 5 2, 6 -3, 7 1, 8 5, 9 -2, 10 0";
+
+#[test]
+fn robustness_claim_repeated_subdivision_depth_16_degree_10_is_refused_before_work() {
+    // was: 65,536 pieces each proved on a grid, past 13 minutes under the default budget
+    let dir = TempDir::new("deep-subdivision");
+    let fields =
+        format!("kind = \"repeated-subdivision\"\ncurve = \"{DEGREE_10}\"\nt = \"1/2\"\ndepth = 16\npieces = 65536");
+    dir.write("c.toml", &one_claim("deep", &fields));
+    let start = std::time::Instant::now();
+    let o = run(&["prove", dir.path().to_str().unwrap()], None);
+    assert!(start.elapsed().as_secs_f64() < 3.0, "took {:?}", start.elapsed());
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(e.contains("claim deep") && e.contains("estimated work") && e.contains("--max-work"), "{e}");
+    assert!(!e.contains("panicked"));
+}
+
+#[test]
+fn robustness_claim_repeated_subdivision_within_the_budget_still_passes() {
+    let dir = TempDir::new("shallow-subdivision");
+    let fields =
+        format!("kind = \"repeated-subdivision\"\ncurve = \"{DEGREE_10}\"\nt = \"1/2\"\ndepth = 4\npieces = 16");
+    dir.write("c.toml", &one_claim("shallow", &fields));
+    let o = run(&["prove", dir.path().to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(crate::common::stdout(&o).contains("1 passed, 0 failed"));
+}
+
+#[test]
+fn robustness_every_claim_kind_estimates_its_work_before_starting() {
+    // each kind at a size far past the default budget, refused in well under a second each
+    let big = |n: usize| (0..=n).map(|i| format!("{i} {}", (i * 7) % 11)).collect::<Vec<_>>().join(", ");
+    let ones = |n: usize| vec!["1"; n].join(" ");
+    let row = |n: usize, k: usize| (0..n).map(|j| format!("{k} {j} {}", (k * j) % 5)).collect::<Vec<_>>().join(", ");
+    let net = |n: usize| (0..n).map(|k| row(n, k)).collect::<Vec<_>>().join("; ");
+    let cases = [
+        ("rational-evaluations", format!("curve = \"{}\"", big(60))),
+        ("rational-subdivision", format!("curve = \"{}\"\nt = \"1/3\"", big(400))),
+        ("weight-pull", format!("curve = \"{}\"\nindex = 1\nweight = \"2\"", big(400))),
+        ("table", format!("curve = \"{}\"\nsteps = 100000\nvalues = []", big(2000))),
+        ("basis-table", "degree = 200\nsteps = 100000\nrows = []".to_string()),
+        ("subdivision", format!("curve = \"{}\"\nt = \"1/3\"\nleft = \"0 0\"\nright = \"0 0\"", big(2000))),
+        ("patch-evaluations", format!("net = \"{}\"", net(30))),
+        ("spline-segments", format!("curve = \"{}\"\nratios = \"{}\"\ndegree = 20", big(300), ones(320))),
+        ("implicit", format!("curve = \"{}\"\npoly = \"x^20 - y\"", big(900))),
+    ];
+    for (kind, fields) in cases {
+        let dir = TempDir::new("kinds");
+        dir.write("c.toml", &one_claim(kind, &format!("kind = \"{kind}\"\n{fields}")));
+        let start = std::time::Instant::now();
+        let o = run(&["prove", dir.path().to_str().unwrap()], None);
+        assert_eq!(o.status.code(), Some(2), "{kind}: {}", stderr(&o));
+        assert!(stderr(&o).contains("--max-work"), "{kind}: {}", stderr(&o));
+        assert!(start.elapsed().as_secs_f64() < 3.0, "{kind} took {:?}", start.elapsed());
+    }
+}
+
+#[test]
+fn robustness_every_catalogue_claim_is_estimated_within_the_default_budget() {
+    let claims = casteljau::catalogue::load(&[std::path::PathBuf::from("proofs")]).unwrap();
+    for c in &claims {
+        let e = c.content.estimate().unwrap() + c.corrected.as_ref().map_or(0.0, |k| k.estimate().unwrap());
+        assert!(e < casteljau::work::DEFAULT_MAX_WORK / 10.0, "{}: {e:e}", c.id);
+    }
+}
+
+fn p2(x: i64, y: i64) -> casteljau::Point<num_rational::BigRational> {
+    casteljau::Point::new(vec![casteljau::rat(x), casteljau::rat(y)])
+}
+
+fn p3(x: i64, y: i64, z: i64) -> casteljau::Point<num_rational::BigRational> {
+    casteljau::Point::new(vec![casteljau::rat(x), casteljau::rat(y), casteljau::rat(z)])
+}
+
+#[test]
+fn robustness_weight_errors_say_which_weight_of_a_curve_and_a_spline() {
+    use casteljau::{Error, RationalBezier, rat};
+    let pts = vec![p2(0, 0), p2(1, 2), p2(2, 0)];
+    let e = RationalBezier::new(pts.clone(), vec![rat(1), rat(1), rat(0)]).unwrap_err();
+    assert_eq!(e, Error::ZeroWeight { index: 3, row: None });
+    assert!(e.to_string().starts_with("weight 3 is 0: a control point at infinity"), "{e}");
+    let e = RationalBezier::new(pts.clone(), vec![rat(1); 2]).unwrap_err();
+    assert_eq!(e, Error::WeightCount { weights: 2, points: 3, row: None });
+    assert!(e.to_string().contains("2 weights for 3 control points"), "{e}");
+    let ratios = vec![rat(1); 4];
+    let spline = |w: Vec<num_rational::BigRational>| casteljau::spline::RationalSpline::new(2, &pts, &w, &ratios);
+    assert_eq!(spline(vec![rat(1), rat(0), rat(1)]).unwrap_err(), Error::ZeroWeight { index: 2, row: None });
+    assert_eq!(spline(vec![rat(1); 4]).unwrap_err(), Error::WeightCount { weights: 4, points: 3, row: None });
+}
+
+#[test]
+fn robustness_weight_errors_say_which_weight_of_a_patch_and_a_net() {
+    use casteljau::surface::RationalPatch;
+    use casteljau::{Error, rat};
+    let rows = vec![vec![p3(0, 0, 0), p3(1, 0, 1)], vec![p3(0, 1, 0), p3(1, 1, 1)]];
+    let e = RationalPatch::new(rows.clone(), vec![vec![rat(1); 2], vec![rat(1), rat(0)]]).unwrap_err();
+    assert_eq!(e, Error::ZeroWeight { index: 2, row: Some(2) });
+    assert!(e.to_string().starts_with("weight 2 of row 2 is 0"), "{e}");
+    let e = RationalPatch::new(rows.clone(), vec![vec![rat(1); 2], vec![rat(1); 3]]).unwrap_err();
+    assert_eq!(e, Error::WeightCount { weights: 3, points: 2, row: Some(2) });
+    assert!(e.to_string().starts_with("row 2: 3 weights for 2 control points"), "{e}");
+    let e = RationalPatch::new(rows.clone(), vec![vec![rat(1); 2]]).unwrap_err();
+    assert!(e.to_string().contains("1 rows of weights for 2 rows of control points"), "{e}");
+    let s = RationalPatch::new(rows, vec![vec![rat(1); 2]; 2]).unwrap();
+    let e = s.with_weight_change(1, 0, &rat(-1)).unwrap_err().to_string();
+    assert!(e.contains("new weight 1 of row 2 (w10) is 0: 1 + -1"), "{e}");
+    let net = |w: Vec<Vec<num_rational::BigRational>>| {
+        let pts: Vec<Vec<_>> = (0..4).map(|i| (0..4).map(|j| p3(j, i, (i * j) % 3)).collect()).collect();
+        casteljau::spline::net::SplineNet::new((2, 2), pts, w, vec![rat(1); 5], vec![rat(1); 5])
+    };
+    let mut w = vec![vec![rat(1); 4]; 4];
+    w[2][3] = rat(0);
+    assert_eq!(net(w).unwrap_err(), Error::ZeroWeight { index: 4, row: Some(3) });
+    let mut w = vec![vec![rat(1); 4]; 4];
+    w[1].pop();
+    assert_eq!(net(w).unwrap_err(), Error::WeightCount { weights: 3, points: 4, row: Some(2) });
+}
+
+/// Address space allowed to the binary in the long-line test (`ulimit -v`, KiB). Before the fix
+/// `eval` read all 1.2 million points of a 10 MB line (about 520 MB resident, 11 s) and only
+/// then refused the degree: it dies at this limit. Now the numbers are counted first: 17 MB
+/// resident, 0.16 s, and the refusal passes this limit every time (measured 6 of 6 at 200 MB).
+const LONG_LINE_ULIMIT_KB: u64 = 300_000;
+
+#[test]
+fn robustness_a_10_mb_line_of_small_points_is_refused_in_bounded_memory() {
+    let dir = TempDir::new("long-line");
+    let line: Vec<String> = (0..1_200_000).map(|i| format!("{} {}", i % 1000, (i * 7) % 1000)).collect();
+    let file = dir.write("big.txt", &(line.join(", ") + "\n"));
+    assert!(std::fs::metadata(&file).unwrap().len() > 10_000_000);
+    for args in
+        [&["eval", "--t", "1/2"][..], &["power"], &["subdivide", "--t", "1/3"], &["eval", "--json", "--t", "1/2"]]
+    {
+        let o = std::process::Command::new("sh")
+            .arg("-c")
+            .arg(format!("ulimit -v {LONG_LINE_ULIMIT_KB}; exec \"$0\" \"$@\""))
+            .arg(env!("CARGO_BIN_EXE_casteljau"))
+            .args(args)
+            .arg("--input")
+            .arg(&file)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let all = format!("{}{}", stderr(&o), String::from_utf8_lossy(&o.stdout));
+        assert!(all.contains("degree 1199999 exceeds the limit 10000"), "{args:?}: {all}");
+        assert!(!all.contains("memory allocation") && !all.contains("panicked"), "{args:?}: {all}");
+    }
 }

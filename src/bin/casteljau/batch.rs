@@ -7,7 +7,7 @@
 use crate::args::{CurveArgs, RationalArgs};
 use casteljau::curve::bezier::BezierCurve;
 use casteljau::error::{Error, Position, Result};
-use casteljau::num::parse::{NumberMode, parse_number_in, parse_numbers, parse_points_in};
+use casteljau::num::parse::{NumberMode, parse_number_in, parse_numbers};
 use casteljau::num::point::Point;
 use casteljau::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
@@ -201,7 +201,7 @@ pub fn batch(
     f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer> + Sync,
 ) -> i32 {
     batch_lines(args, out, |line, text| {
-        parse_points_in(text, args.dim, line, args.numbers.into()).and_then(BezierCurve::new).and_then(|c| f(&c))
+        casteljau::curve::bezier::parse_curve_in(text, args.dim, line, args.numbers.into()).and_then(|c| f(&c))
     })
 }
 
