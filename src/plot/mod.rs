@@ -6,6 +6,7 @@
 //! Output is deterministic: the same input gives the same bytes (fixed number formatting, no
 //! randomness, no timestamps), so figures can be checked in and diffed.
 
+mod drawable;
 pub mod gallery;
 
 use crate::classify::{NodeType, classify};
