@@ -9,9 +9,9 @@
 //! let opts = ClassifyOptions { dim: 2, ..ClassifyOptions::default() };
 //! let mut out = vec![];
 //! assert!(opts.write_json_direct("0 0, 3 3, 0 3, 3 0", &mut out));
-//! assert!(String::from_utf8(out).unwrap().contains("\"crunode\""));
+//! assert!(String::from_utf8(out).unwrap().contains(r#""node_type":"cusp""#));
 //! match opts.classify_text("0 0, 3 3, 0 3, 3 0", None).unwrap() {
-//!     Classified::Fixed(r) => assert_eq!(r.classification.double_point_parameters.len(), 2),
+//!     Classified::Fixed(r) => assert_eq!(r.classification.cusp_parameters[0].to_string(), "1/2"),
 //!     Classified::Exact(_) => unreachable!("small integers take the fixed-width route"),
 //! }
 //! ```

@@ -205,7 +205,7 @@ impl BezierCurve<BigRational> {
     /// use casteljau::{BezierCurve, num::parse::parse_points, ratio, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
     /// let e = c.eval_within(&[ratio(1, 3)], &Budget::unlimited()).unwrap();
-    /// assert_eq!((e.degree, e.values[0].point.to_string()), (3, "(25/27, 8/3)".to_string()));
+    /// assert_eq!((e.degree, e.values[0].point.to_string()), (3, "(28/27, 70/27)".to_string()));
     /// ```
     pub fn eval_within(&self, ts: &[BigRational], budget: &Budget) -> Result<Evaluation> {
         let (n, beta) = (self.degree(), work::max_bits(self.points()));

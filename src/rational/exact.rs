@@ -156,9 +156,9 @@ impl RationalBezier<BigRational> {
     ///
     /// ```
     /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
-    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-2), rat(1)]).unwrap();
+    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
     /// let e = c.eval_within(&[rat(0)], &Budget::unlimited()).unwrap();
-    /// assert!(!e.defined_on_0_1); // W(1/2) = 0
+    /// assert!(!e.defined_on_0_1); // W(t) = (2t − 1)²
     /// assert!(c.eval_within(&[ratio(1, 2)], &Budget::unlimited()).is_err());
     /// ```
     pub fn eval_within(&self, ts: &[BigRational], budget: &Budget) -> Result<RationalEvaluation> {
@@ -222,10 +222,10 @@ impl RationalBezier<BigRational> {
     /// ```
     /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
     /// use casteljau::rational::exact::ParameterInterval;
-    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-2), rat(1)]).unwrap();
+    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
     /// let d = c.defined_within(&ParameterInterval::unit(), &Budget::unlimited()).unwrap();
     /// assert!(!d.defined);
-    /// assert_eq!(d.roots[0].to_string(), "1/2");
+    /// assert_eq!(d.roots[0].to_string(), "t = 1/2");
     /// let right = ParameterInterval::new(ratio(3, 4), rat(1)).unwrap();
     /// assert!(c.defined_within(&right, &Budget::unlimited()).unwrap().defined);
     /// ```
