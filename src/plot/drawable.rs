@@ -1,9 +1,10 @@
-//! What a plot costs and whether it can be drawn, decided before drawing.
+//! What a plot costs and whether it can be drawn, decided before drawing; one-weight families.
 
-use super::CurveOptions;
+use super::{CurveOptions, Figure, PALETTE, draw_rational};
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::scalar::ratio_to_f64;
+use crate::rational::rational_bezier::RationalBezier;
 use crate::work::{self, Budget};
 use num_rational::BigRational;
 
@@ -42,4 +43,34 @@ impl CurveOptions {
         }
         Ok(())
     }
+}
+
+/// Draws a one-weight family of a rational curve: `curve` with weight `index` replaced by each
+/// of `values` in turn, member `j` in colour `PALETTE[j mod 6]`, the control polygon with the
+/// first member when `polygon`.
+///
+/// # Errors
+/// As [`RationalBezier::with_weight`] (an index out of range, a point at infinity, a weight 0);
+/// members before the failing one are already drawn.
+///
+/// ```
+/// use casteljau::{RationalBezier, num::parse::parse_points, rat, plot::{Figure, PALETTE, draw_weight_family}};
+/// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1); 3]).unwrap();
+/// let mut fig = Figure::new();
+/// draw_weight_family(&mut fig, &c, 1, &[rat(1), rat(2), rat(3)], true).unwrap();
+/// assert!(fig.to_svg(200).contains(PALETTE[2]));
+/// assert!(draw_weight_family(&mut fig, &c, 1, &[rat(0)], false).is_err());
+/// ```
+pub fn draw_weight_family(
+    fig: &mut Figure,
+    curve: &RationalBezier<BigRational>,
+    index: usize,
+    values: &[BigRational],
+    polygon: bool,
+) -> Result<()> {
+    for (j, w) in values.iter().enumerate() {
+        let member = curve.with_weight(index, w.clone())?;
+        draw_rational(fig, &member, PALETTE[j % PALETTE.len()], j == 0 && polygon);
+    }
+    Ok(())
 }

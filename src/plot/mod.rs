@@ -9,6 +9,8 @@
 mod drawable;
 pub mod gallery;
 
+pub use drawable::draw_weight_family;
+
 use crate::classify::{NodeType, classify};
 use crate::curve::bezier::BezierCurve;
 use crate::curve::fraction_free;

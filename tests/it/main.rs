@@ -27,3 +27,4 @@ mod seed_examples;
 mod spline_knots;
 mod strategies;
 mod surfaces_splines;
+mod typed_results;

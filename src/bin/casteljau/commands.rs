@@ -83,7 +83,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
             features,
         })
     })();
-    use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational};
+    use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational, draw_weight_family};
     use std::sync::Mutex;
     let fig = Mutex::new(Figure::new().grid(grid));
     if let Some(t) = &title {
@@ -112,16 +112,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
             (Weights::Polynomial, None) => draw_curve(&mut fig.lock().expect("figure"), c, &opts, color)?,
             (w, None) => draw_rational(&mut fig.lock().expect("figure"), &rational_curve(c, w)?, color, opts.polygon),
             (w, Some((i, values))) => {
-                let base = rational_curve(c, w)?;
-                for (j, v) in values.iter().enumerate() {
-                    let member = base.with_weight(*i, v.clone())?;
-                    draw_rational(
-                        &mut fig.lock().expect("figure"),
-                        &member,
-                        PALETTE[j % PALETTE.len()],
-                        j == 0 && opts.polygon,
-                    );
-                }
+                draw_weight_family(&mut fig.lock().expect("figure"), &rational_curve(c, w)?, *i, values, opts.polygon)?
             }
         }
         *count.lock().expect("count") += 1;
