@@ -2,9 +2,12 @@
 //!
 //! Exact arithmetic has no rounding, so the size of the numbers grows with the work: de
 //! Casteljau at `t = p/q` multiplies bit lengths by the degree, a power form carries binomials
-//! of `n` bits. An accepted input must get its answer in bounded time, so every command of the
-//! CLI estimates the cost of its answer here first and refuses (exit 2, naming the limit and the
-//! option that raises it) when the estimate exceeds the budget.
+//! of `n` bits. An accepted input must get its answer in bounded time, so every exact operation
+//! the command line offers has a library entry taking a [`Budget`] (`BezierCurve::eval_within`
+//! and the others of [`crate::curve::exact`], [`crate::rational::exact`],
+//! [`crate::rational::extrema::bounding_box_within`], ...) that estimates its cost here first and
+//! refuses with [`Error::WorkLimit`] (naming the limit and the option that raises it) when the
+//! estimate exceeds the budget.
 //!
 //! # Units
 //! A *work unit* is about one nanosecond of this project's reference machine (2 cores, 2026):

@@ -25,6 +25,7 @@ pub mod integer;
 pub mod moving_line;
 pub mod oracle;
 pub mod rational_cubic;
+pub mod report;
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};

@@ -5,6 +5,7 @@
 
 pub mod bezier;
 pub mod casteljau;
+pub mod exact;
 pub mod fraction_free;
 
 pub use bezier::BezierCurve;

@@ -6,7 +6,10 @@
 //! Output is deterministic: the same input gives the same bytes (fixed number formatting, no
 //! randomness, no timestamps), so figures can be checked in and diffed.
 
+mod drawable;
 pub mod gallery;
+
+pub use drawable::draw_weight_family;
 
 use crate::classify::{NodeType, classify};
 use crate::curve::bezier::BezierCurve;

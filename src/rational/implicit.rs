@@ -38,6 +38,39 @@ pub enum ImplicitOutcome {
     },
 }
 
+impl ImplicitOutcome {
+    /// `f(x(t)) ≡ 0` was proved.
+    pub fn proved(&self) -> bool {
+        matches!(self, ImplicitOutcome::Proved { .. })
+    }
+}
+
+impl serde::Serialize for ImplicitOutcome {
+    /// `{"proved": true, "degree_bound", "parameters"}` or `{"proved": false, "t", "point",
+    /// "value"}`, exact numbers as strings.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use crate::num::serial::AsString;
+        use serde::ser::SerializeStruct;
+        match self {
+            ImplicitOutcome::Proved { degree_bound, parameters } => {
+                let mut st = s.serialize_struct("ImplicitOutcome", 3)?;
+                st.serialize_field("proved", &true)?;
+                st.serialize_field("degree_bound", degree_bound)?;
+                st.serialize_field("parameters", &parameters.iter().map(AsString).collect::<Vec<_>>())?;
+                st.end()
+            }
+            ImplicitOutcome::Counterexample { t, point, value } => {
+                let mut st = s.serialize_struct("ImplicitOutcome", 4)?;
+                st.serialize_field("proved", &false)?;
+                st.serialize_field("t", &AsString(t))?;
+                st.serialize_field("point", point)?;
+                st.serialize_field("value", &AsString(value))?;
+                st.end()
+            }
+        }
+    }
+}
+
 const NAMES: [&str; 3] = ["x", "y", "z"];
 
 /// The total degree of a polynomial expression in `vars`.

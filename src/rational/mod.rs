@@ -4,6 +4,7 @@
 //!
 //! Depends on [`crate::num`], [`crate::poly`], [`crate::proof`] and [`crate::curve`].
 
+pub mod exact;
 pub mod extrema;
 pub mod implicit;
 pub mod menelaus;

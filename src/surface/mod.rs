@@ -5,6 +5,8 @@
 //! `j` (the `v` index). Three evaluations agree exactly: the closed form, rational de Casteljau
 //! in `u` then `v`, and in `v` then `u` — the tensor-product statement (44)–(47).
 
+pub mod exact;
+
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::Scalar;

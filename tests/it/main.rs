@@ -41,3 +41,4 @@ mod seed_examples;
 mod spline_knots;
 mod strategies;
 mod surfaces_splines;
+mod typed_results;

@@ -82,6 +82,83 @@ fn points_from_json(v: &[Vec<serde_json::Value>], line: usize, mode: NumberMode)
     Ok(out)
 }
 
+/// The curve lines of CURVES (not blank, not `#` comments), by line number, in order; an error
+/// message for a file that cannot be read.
+fn read_curves(path: &str) -> std::result::Result<Vec<(usize, String)>, String> {
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot open {path}: {e}"))?;
+    let mut curves = vec![];
+    for (i, l) in std::io::BufReader::new(file).lines().enumerate() {
+        match l {
+            Ok(l) if l.trim().is_empty() || l.trim_start().starts_with('#') => {}
+            Ok(l) => curves.push((i + 1, l)),
+            Err(e) => return Err(format!("{path}: line {}: {e}", i + 1)),
+        }
+    }
+    Ok(curves)
+}
+
+/// What an answer line is checked against: the curves of CURVES and how numbers are read.
+struct Against<'a> {
+    curves: &'a [(usize, String)],
+    has_curves: bool,
+    mode: NumberMode,
+    tol: Tolerances,
+}
+
+impl Against<'_> {
+    /// Checks answer line `answer_line` (the `k`-th answer, counting from 0) against its curve:
+    /// its own `points`, the CURVES line it names, or else the `k`-th curve of CURVES.
+    fn check(&self, text: &str, answer_line: usize, k: usize) -> Result<Checked> {
+        let a: AnswerLine = serde_json::from_str(text)
+            .map_err(|e| Error::InvalidArgument { message: format!("not an answer object: {e}") })?;
+        let (curve_line, points) = match (&a.points, a.line) {
+            (Some(p), _) => (a.line, points_from_json(p, answer_line, self.mode)?),
+            (None, Some(l)) => {
+                let (_, text) = self.curves.iter().find(|(n, _)| *n == l).ok_or_else(|| Error::InvalidArgument {
+                    message: format!("\"line\": {l} is not a curve line of the CURVES file"),
+                })?;
+                (Some(l), parse_points_in(text, 2, Some(l), self.mode)?)
+            }
+            (None, None) => {
+                let (n, text) = self.curves.get(k).ok_or_else(|| Error::InvalidArgument {
+                    message: if !self.has_curves {
+                        "no \"points\" and no CURVES file".into()
+                    } else {
+                        format!("answer {} has no curve: CURVES has {} curves", k + 1, self.curves.len())
+                    },
+                })?;
+                (Some(*n), parse_points_in(text, 2, Some(*n), self.mode)?)
+            }
+        };
+        let d = oracle::check(&BezierCurve::new(points.clone())?, &a.answers, &self.tol)?;
+        Ok(Checked { curve_line, points, disagreements: d })
+    }
+}
+
+/// Writes one disagreement: a JSON line ([`Report`]) or a text line.
+fn write_disagreement(out: &mut dyn Write, json: bool, report: &Report<'_>) -> std::io::Result<()> {
+    if json {
+        serde_json::to_writer(&mut *out, report).map_err(std::io::Error::other)?;
+        return writeln!(out);
+    }
+    let d = report.disagreement;
+    let curve = report.points.iter().map(|p| p.coords.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" "));
+    let exact = match (d.exact.is_empty(), d.exact_float) {
+        (true, _) => "none".to_string(),
+        (false, Some(f)) => format!("{} (≈ {f})", d.exact),
+        (false, None) => d.exact.clone(),
+    };
+    writeln!(
+        out,
+        "answer line {}: {} {}: exact {exact}, float {} — curve {}",
+        report.answer_line,
+        d.field,
+        d.kind.as_str(),
+        d.float,
+        curve.collect::<Vec<_>>().join(", ")
+    )
+}
+
 /// Runs `check`; returns the exit code.
 pub fn run(args: &CheckArgs, out: &mut dyn Write) -> i32 {
     let tol = Tolerances { parameter: args.tol, point: args.point_tol };
@@ -89,28 +166,14 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> i32 {
         eprintln!("casteljau: --tol and --point-tol must be finite and ≥ 0");
         return 2;
     }
-    let mode: NumberMode = args.numbers.into();
-    // the curves of CURVES, by line number, in order
-    let mut curves: Vec<(usize, String)> = vec![];
-    if let Some(path) = &args.curves {
-        let file = match std::fs::File::open(path) {
-            Ok(f) => f,
-            Err(e) => {
-                eprintln!("casteljau: cannot open {path}: {e}");
-                return 2;
-            }
-        };
-        for (i, l) in std::io::BufReader::new(file).lines().enumerate() {
-            match l {
-                Ok(l) if l.trim().is_empty() || l.trim_start().starts_with('#') => {}
-                Ok(l) => curves.push((i + 1, l)),
-                Err(e) => {
-                    eprintln!("casteljau: {path}: line {}: {e}", i + 1);
-                    return 2;
-                }
-            }
+    let curves = match args.curves.as_deref().map(read_curves).transpose() {
+        Ok(c) => c.unwrap_or_default(),
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
         }
-    }
+    };
+    let against = Against { curves: &curves, has_curves: args.curves.is_some(), mode: args.numbers.into(), tol };
     let answers = match std::fs::File::open(&args.against) {
         Ok(f) => std::io::BufReader::new(f),
         Err(e) => {
@@ -132,31 +195,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> i32 {
                 continue;
             }
         };
-        let result = (|| -> Result<Checked> {
-            let a: AnswerLine = serde_json::from_str(&text)
-                .map_err(|e| Error::InvalidArgument { message: format!("not an answer object: {e}") })?;
-            let (curve_line, points) = match (&a.points, a.line) {
-                (Some(p), _) => (a.line, points_from_json(p, answer_line, mode)?),
-                (None, Some(l)) => {
-                    let (_, text) = curves.iter().find(|(n, _)| *n == l).ok_or_else(|| Error::InvalidArgument {
-                        message: format!("\"line\": {l} is not a curve line of the CURVES file"),
-                    })?;
-                    (Some(l), parse_points_in(text, 2, Some(l), mode)?)
-                }
-                (None, None) => {
-                    let (n, text) = curves.get(k).ok_or_else(|| Error::InvalidArgument {
-                        message: if args.curves.is_none() {
-                            "no \"points\" and no CURVES file".into()
-                        } else {
-                            format!("answer {} has no curve: CURVES has {} curves", k + 1, curves.len())
-                        },
-                    })?;
-                    (Some(*n), parse_points_in(text, 2, Some(*n), mode)?)
-                }
-            };
-            let d = oracle::check(&BezierCurve::new(points.clone())?, &a.answers, &tol)?;
-            Ok(Checked { curve_line, points, disagreements: d })
-        })();
+        let result = against.check(&text, answer_line, k);
         k += 1;
         match result {
             Err(e) => {
@@ -168,27 +207,8 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> i32 {
                 total += ds.len();
                 for d in &ds {
                     *tally.entry((d.field, d.kind.as_str())).or_default() += 1;
-                    let written = if args.json {
-                        let r = Report { answer_line, curve_line, points: &points, disagreement: d };
-                        serde_json::to_writer(&mut *out, &r).map_err(std::io::Error::other).and_then(|_| writeln!(out))
-                    } else {
-                        let curve =
-                            points.iter().map(|p| p.coords.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" "));
-                        let exact = match (d.exact.is_empty(), d.exact_float) {
-                            (true, _) => "none".to_string(),
-                            (false, Some(f)) => format!("{} (≈ {f})", d.exact),
-                            (false, None) => d.exact.clone(),
-                        };
-                        writeln!(
-                            out,
-                            "answer line {answer_line}: {} {}: exact {exact}, float {} — curve {}",
-                            d.field,
-                            d.kind.as_str(),
-                            d.float,
-                            curve.collect::<Vec<_>>().join(", ")
-                        )
-                    };
-                    if written.is_err() {
+                    let report = Report { answer_line, curve_line, points: &points, disagreement: d };
+                    if write_disagreement(out, args.json, &report).is_err() {
                         return 2;
                     }
                 }

@@ -3,50 +3,51 @@
 
 use crate::answers;
 use crate::args::{PatchArgs, PlotArgs, ProveArgs, SurfaceOp};
-use crate::batch::{Answer, Weights, batch, numbers, option_number, patch_of, rational_batch, rational_curve};
+use crate::batch::{batch, rational_batch};
+use crate::options::{Weights, option_number, patch_of, rational_curve, weights_family};
+use crate::render::{Answer, Json};
 use casteljau::error::{Error, Result};
-use serde_json::Value;
+use casteljau::surface::RationalPatch;
+use casteljau::surface::exact::Direction;
 use std::io::Write;
 
 pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
-    let run_patch = |mut patch: PatchArgs,
-                     out: &mut dyn Write,
-                     f: &(dyn Fn(&casteljau::surface::RationalPatch) -> Result<Answer> + Sync)| {
-        if patch.curve.dim == 2 {
-            patch.curve.dim = 3; // patches are 3D unless --dim says otherwise
-        }
-        if patch.rational.homogeneous {
-            patch.curve.dim += 1;
-        }
-        let (degree, rational) = (patch.degree.clone(), patch.rational.clone());
-        batch(&patch.curve, out, |c| f(&patch_of(c, &degree, &rational)?))
-    };
+    let run_patch =
+        |mut patch: PatchArgs, out: &mut dyn Write, f: &(dyn Fn(&RationalPatch) -> Result<Answer> + Sync)| {
+            if patch.curve.dim == 2 {
+                patch.curve.dim = 3; // patches are 3D unless --dim says otherwise
+            }
+            if patch.rational.homogeneous {
+                patch.curve.dim += 1;
+            }
+            let (degree, rational) = (patch.degree.clone(), patch.rational.clone());
+            batch(&patch.curve, out, |c| f(&patch_of(c, &degree, &rational)?))
+        };
     match op {
         SurfaceOp::Eval { u, v, patch } => {
             let uv = option_number("--u", &u).and_then(|u| Ok((u, option_number("--v", &v)?)));
             run_patch(patch, out, &|p| {
                 let (u, v) = uv.clone()?;
-                answers::surface_eval(p, &u, &v).map(Answer::from)
+                p.eval_checked(&u, &v).map(|s| answers::surface_point(&s))
             })
         }
         SurfaceOp::Subdivide { u, v, patch } => {
             let at = match (&u, &v) {
-                (Some(u), None) => option_number("--u", u).map(|x| (true, x)),
-                (None, Some(v)) => option_number("--v", v).map(|x| (false, x)),
+                (Some(u), None) => option_number("--u", u).map(|x| (Direction::U, x)),
+                (None, Some(v)) => option_number("--v", v).map(|x| (Direction::V, x)),
                 _ => Err(Error::InvalidArgument { message: "give exactly one of --u and --v".into() }),
             };
             run_patch(patch, out, &|p| {
-                let (in_u, x) = at.clone()?;
-                answers::surface_subdivide(p, in_u, &x).map(Answer::from)
+                let (direction, x) = at.clone()?;
+                p.split(direction, &x).map(|s| answers::surface_split(&s))
             })
         }
         SurfaceOp::Elevate { u_by, v_by, patch } => {
-            run_patch(patch, out, &|p| answers::surface_elevate(p, u_by, v_by).map(Answer::from))
+            run_patch(patch, out, &|p| p.elevate(u_by, v_by).map(|e| answers::patch(&e)))
         }
         SurfaceOp::Contour { z, polyline, patch } => {
             let z = option_number("--z", &z);
-            let polyline = polyline.min(1000);
-            run_patch(patch, out, &|p| answers::surface_contour(p, &z.clone()?, polyline).map(Answer::from))
+            run_patch(patch, out, &|p| p.contour(&z.clone()?, polyline).map(|c| answers::contour(&c)))
         }
     }
 }
@@ -82,7 +83,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
             features,
         })
     })();
-    use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational};
+    use casteljau::plot::{Figure, PALETTE, draw_curve, draw_rational, draw_weight_family};
     use std::sync::Mutex;
     let fig = Mutex::new(Figure::new().grid(grid));
     if let Some(t) = &title {
@@ -90,24 +91,12 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
         *fig.lock().expect("figure") = f.title(t);
     }
     let count = Mutex::new(0usize);
-    // parse "wI=a,b,c"
-    let family = match family.as_deref().map(|f| {
-        let (name, values) = f
-            .split_once('=')
-            .ok_or_else(|| Error::InvalidArgument { message: format!("--weights-family {f:?}: write w1=1,3,4") })?;
-        let i: usize = name
-            .trim()
-            .trim_start_matches('w')
-            .parse()
-            .map_err(|_| Error::InvalidArgument { message: format!("--weights-family: bad index {name:?}") })?;
-        Ok::<_, Error>((i, numbers("--weights-family", values)?))
-    }) {
-        Some(Err(e)) => {
+    let family = match family.as_deref().map(weights_family).transpose() {
+        Ok(f) => f,
+        Err(e) => {
             eprintln!("casteljau: {e}");
             return 2;
         }
-        Some(Ok(f)) => Some(f),
-        None => None,
     };
     let mut sink: Vec<u8> = Vec::new();
     // one thread: the curves are drawn in input order (colours and the SVG are deterministic)
@@ -116,48 +105,18 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
     let code = rational_batch(&rational, curve, &mut sink, |c, w| {
         let opts = opts.clone()?;
-        // the sampler evaluates exactly at up to 2^12 + 1 parameters of ≤ 13 bits per piece
-        use casteljau::work;
-        let (n, dim, beta) = (c.degree(), c.dim(), work::max_bits(c.points()));
-        let mut estimate = 4097.0 * work::evaluation(n, dim, beta, 13);
-        if let Some(t) = &opts.construction {
-            estimate += work::de_casteljau_scheme(n, dim, beta, work::bits(t));
-        }
-        if let Some((t, depth)) = &opts.subdivide {
-            estimate += work::repeated_subdivision(n, dim, beta, work::bits(t), *depth);
-        }
-        budget.check(format!("plotting a curve of degree {n}"), estimate)?;
-        // plot draws in f64: a control point beyond its range would be silently dropped
-        if let Some((i, _)) = c
-            .points()
-            .iter()
-            .enumerate()
-            .find(|(_, p)| p.coords.iter().any(|x| !casteljau::num::scalar::ratio_to_f64(x).is_finite()))
-        {
-            return Err(Error::InvalidArgument {
-                message: format!("control point {} is beyond the f64 range and cannot be drawn", i + 1),
-            });
-        }
+        opts.check_drawable_within(c, &budget)?;
         let k = *count.lock().expect("count");
         let color = PALETTE[k % PALETTE.len()];
         match (w, &family) {
             (Weights::Polynomial, None) => draw_curve(&mut fig.lock().expect("figure"), c, &opts, color)?,
             (w, None) => draw_rational(&mut fig.lock().expect("figure"), &rational_curve(c, w)?, color, opts.polygon),
             (w, Some((i, values))) => {
-                let base = rational_curve(c, w)?;
-                for (j, v) in values.iter().enumerate() {
-                    let member = base.with_weight(*i, v.clone())?;
-                    draw_rational(
-                        &mut fig.lock().expect("figure"),
-                        &member,
-                        PALETTE[j % PALETTE.len()],
-                        j == 0 && opts.polygon,
-                    );
-                }
+                draw_weight_family(&mut fig.lock().expect("figure"), &rational_curve(c, w)?, *i, values, opts.polygon)?
             }
         }
         *count.lock().expect("count") += 1;
-        Ok(Answer { text: String::new(), json: crate::batch::Json::Value(Value::Null), failed: false })
+        Ok(Answer { text: String::new(), json: Json::Value(serde_json::Value::Null), failed: false })
     });
     if code == 2 {
         return 2;
