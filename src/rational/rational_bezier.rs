@@ -54,6 +54,31 @@ pub struct RationalBezier<S> {
     homogeneous: BezierCurve<S>,
 }
 
+/// A rational curve in JSON: `degree`, `homogeneous` (the control points `w·P, w`), `points`
+/// (affine, `null` at infinity) and `weights`, exact numbers as strings.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, RationalBezier, rat};
+/// let c = RationalBezier::new(vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(2)])], vec![rat(1), rat(2)]).unwrap();
+/// assert_eq!(
+///     serde_json::to_string(&c).unwrap(),
+///     r#"{"degree":1,"homogeneous":[["0","0","1"],["2","4","2"]],"points":[["0","0"],["1","2"]],"weights":["1","2"]}"#
+/// );
+/// ```
+impl<S: Scalar> serde::Serialize for RationalBezier<S> {
+    fn serialize<Z: serde::Serializer>(&self, s: Z) -> std::result::Result<Z::Ok, Z::Error> {
+        use serde::ser::SerializeStruct;
+        let weights = self.weights();
+        let mut st = s.serialize_struct("RationalBezier", 4)?;
+        st.serialize_field("degree", &self.degree())?;
+        st.serialize_field("homogeneous", self.homogeneous.points())?;
+        st.serialize_field("points", &self.points())?;
+        st.serialize_field("weights", &weights.iter().map(crate::num::serial::AsString).collect::<Vec<_>>())?;
+        st.end()
+    }
+}
+
 impl<S: Scalar> RationalBezier<S> {
     /// From control points and weights.
     ///

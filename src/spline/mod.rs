@@ -15,7 +15,12 @@
 
 pub mod knots;
 pub mod net;
+mod report;
 pub mod surface;
+
+pub use report::{
+    BezierConversion, KnotRemoval, SplineCheck, SplineSegment, SplineValue, SplineValues, SurfaceExtraction, joins_text,
+};
 
 use crate::error::{Error, Result};
 use crate::num::point::Point;
@@ -65,8 +70,9 @@ impl RationalSpline {
     /// A spline from control points, weights and scale ratios (`m + n` of them).
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for wrong counts, a non-positive ratio or weight of 0, or a
-    /// degree above [`MAX_SPLINE_DEGREE`].
+    /// As [`homogeneous_control_points`] (wrong count, a weight of 0) and
+    /// [`Self::from_ratios`] (wrong count, a ratio that is not positive, a degree outside
+    /// `1..=`[`MAX_SPLINE_DEGREE`]).
     ///
     /// # Example
     /// ```
@@ -83,41 +89,52 @@ impl RationalSpline {
         weights: &[BigRational],
         ratios: &[BigRational],
     ) -> Result<Self> {
+        Self::from_ratios(degree, homogeneous_control_points(points, Some(weights))?, ratios)
+    }
+
+    /// A spline from homogeneous control points (`w·P, w`) and scale ratios `λ_0 … λ_{m+n−1}`
+    /// (the knot intervals): the knots are the partial sums `u_0 = 0`, `u_{j+1} = u_j + λ_j`,
+    /// then as [`Self::from_knots`] (the final, never used knot repeats the one before).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for a ratio that is not positive (repeated knots need a knot
+    /// vector) or a count other than `m + n` ratios for `m + 1` points; then as
+    /// [`Self::from_knots`].
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::RationalSpline};
+    /// let h: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_ratios(2, h.clone(), &[1, 2, 1, 1, 1].map(rat)).unwrap();
+    /// assert_eq!(sp.full_knot_vector(), [0, 1, 3, 4, 5, 6, 6].map(rat));
+    /// let e = RationalSpline::from_ratios(2, h, &[1, 0, 1, 1, 1].map(rat)).unwrap_err();
+    /// assert!(e.to_string().contains("scale ratio 2 (0) must be positive"));
+    /// ```
+    pub fn from_ratios(degree: usize, homogeneous: Vec<Point<BigRational>>, ratios: &[BigRational]) -> Result<Self> {
         let bad = |m: String| Error::InvalidArgument { message: m };
-        if degree == 0 || degree > MAX_SPLINE_DEGREE {
-            return Err(bad(format!("spline degree must be 1..={MAX_SPLINE_DEGREE}")));
-        }
-        if points.len() < degree + 1 {
+        if let Some(i) = ratios.iter().position(|r| r.sign() != Ordering::Greater) {
             return Err(bad(format!(
-                "a degree-{degree} spline needs at least {} control points, got {}",
-                degree + 1,
-                points.len()
+                "scale ratio {} ({}) must be positive; repeated knots go in --knots",
+                i + 1,
+                ratios[i]
             )));
         }
-        if weights.len() != points.len() {
-            return Err(bad(format!("{} weights for {} control points", weights.len(), points.len())));
-        }
-        let need = points.len() - 1 + degree;
+        let need = (homogeneous.len() + degree).saturating_sub(1);
         if ratios.len() != need {
             return Err(bad(format!(
                 "{} control points of degree {degree} need {need} scale ratios, got {}",
-                points.len(),
+                homogeneous.len(),
                 ratios.len()
             )));
         }
-        if let Some(i) = ratios.iter().position(|r| r.sign() != Ordering::Greater) {
-            return Err(bad(format!("scale ratio {} must be positive", i + 1)));
-        }
-        if let Some(i) = weights.iter().position(Scalar::is_zero) {
-            return Err(bad(format!("weight {} is 0", i + 1)));
-        }
-        let mut knots = vec![rat(0)];
+        let mut knots = Vec::with_capacity(ratios.len() + 2);
+        knots.push(rat(0));
         for r in ratios {
             let next = knots.last().expect("non-empty").clone() + r;
             knots.push(next);
         }
-        let homogeneous = points.iter().zip(weights).map(|(p, w)| p.to_homogeneous(w)).collect();
-        Ok(RationalSpline { degree, homogeneous, knots })
+        knots.push(knots.last().expect("non-empty").clone());
+        Self::from_knots(degree, homogeneous, &knots)
     }
 
     /// A spline from homogeneous control points (e.g. the intermediate points of a net).
@@ -266,6 +283,45 @@ impl RationalSpline {
     }
 }
 
+/// Homogeneous control points `(w_i·P_i, w_i)` from affine points and their weights (all 1
+/// when `weights` is `None`).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] when the counts differ or a weight is 0 (a control point at
+/// infinity is given in homogeneous form, e.g. [`RationalSpline::from_knots`]).
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, rat, ratio, spline::homogeneous_control_points};
+/// let p = [Point::new(vec![rat(1), rat(2)]), Point::new(vec![rat(3), rat(0)])];
+/// let h = homogeneous_control_points(&p, Some(&[ratio(1, 2), rat(1)])).unwrap();
+/// assert_eq!(h[0], Point::new(vec![ratio(1, 2), rat(1), ratio(1, 2)]));
+/// assert_eq!(homogeneous_control_points(&p, None).unwrap()[1], Point::new(vec![rat(3), rat(0), rat(1)]));
+/// assert!(homogeneous_control_points(&p, Some(&[rat(1), rat(0)])).is_err());
+/// ```
+pub fn homogeneous_control_points(
+    points: &[Point<BigRational>],
+    weights: Option<&[BigRational]>,
+) -> Result<Vec<Point<BigRational>>> {
+    let Some(weights) = weights else {
+        return Ok(points.iter().map(|p| p.to_homogeneous(&rat(1))).collect());
+    };
+    if weights.len() != points.len() {
+        return Err(Error::InvalidArgument {
+            message: format!("{} weights for {} control points", weights.len(), points.len()),
+        });
+    }
+    if let Some(i) = weights.iter().position(Scalar::is_zero) {
+        return Err(Error::InvalidArgument {
+            message: format!(
+                "weight {} is 0: a control point at infinity is given in homogeneous form (--homogeneous)",
+                i + 1
+            ),
+        });
+    }
+    Ok(points.iter().zip(weights).map(|(p, w)| p.to_homogeneous(w)).collect())
+}
+
 fn w_lin(a: &BigRational, b: &BigRational, x: &BigRational, y: &BigRational) -> BigRational {
     // 𝒲[a:b](x, y) for numbers: (b x + a y)/(a + b)
     (b.clone() * x + a.clone() * y) / (a.clone() + b)
@@ -305,6 +361,17 @@ impl std::str::FromStr for Conversion {
                 message: format!("the conversion method is boehm, seed or seed-printed, not {other:?}"),
             }),
         }
+    }
+}
+
+impl std::fmt::Display for Conversion {
+    /// The spelling [`FromStr`](std::str::FromStr) reads: `boehm`, `seed`, `seed-printed`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Conversion::Boehm => "boehm",
+            Conversion::Seed(Reading::Corrected) => "seed",
+            Conversion::Seed(Reading::AsPrinted) => "seed-printed",
+        })
     }
 }
 
