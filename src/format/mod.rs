@@ -9,6 +9,7 @@
 //! every outline is listed.
 
 pub mod font;
+pub mod scan;
 pub mod svg;
 pub mod svg_path;
 
