@@ -338,47 +338,6 @@ fn reflect(c: Option<&P>, cur: &P) -> P {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn beziers(d: &str) -> Vec<Vec<String>> {
-        parse_path(d, NumberMode::Exact)
-            .unwrap()
-            .iter()
-            .flat_map(|c| c.segments.iter())
-            .map(|s| match s {
-                Segment::Bezier(ps) => ps.iter().map(|p| p.to_string()).collect(),
-                Segment::Skipped { .. } => vec!["skipped".into()],
-            })
-            .collect()
-    }
-
-    #[test]
-    fn svg_path_compact_numbers_split_like_browsers() {
-        assert_eq!(beziers("M1.5.5L-1-2"), vec![vec!["(3/2, 1/2)", "(-1, -2)"]]);
-        assert_eq!(beziers("M0,0 1e1,2E-1"), vec![vec!["(0, 0)", "(10, 1/5)"]]);
-    }
-
-    #[test]
-    fn svg_path_t_reflects_through_chain_and_resets_after_other_commands() {
-        let s = beziers("M0 0 Q1 1 2 0 T4 0 L5 0 T6 0");
-        assert_eq!(s[1], vec!["(2, 0)", "(3, -1)", "(4, 0)"]);
-        // after L there is nothing to reflect: the control point is the current point
-        assert_eq!(s[3], vec!["(5, 0)", "(5, 0)", "(6, 0)"]);
-    }
-
-    #[test]
-    fn svg_path_errors_name_the_column() {
-        let e = parse_path("M0 0 L1", NumberMode::Exact).unwrap_err();
-        assert!(e.to_string().contains("column 8"), "{e}");
-        let e = parse_path("L0 0", NumberMode::Exact).unwrap_err();
-        assert!(e.to_string().contains("move-to"), "{e}");
-        let e = parse_path("M0 0 X1 1", NumberMode::Exact).unwrap_err();
-        assert!(e.to_string().contains("column 6"), "{e}");
-    }
-}
-
 /// The segments of a subpath as a closed contour for filling: every piece as a polynomial
 /// Bézier curve and, when the subpath does not end where it starts, the closing line (SVG fills
 /// an open subpath as if closed by a line, SVG 1.1 §11.3). An empty subpath gives no segments.
@@ -440,4 +399,45 @@ pub fn fill_path(d: &str, mode: NumberMode) -> Result<ClosedPath> {
         }
     }
     ClosedPath::from_polynomial(contours)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn beziers(d: &str) -> Vec<Vec<String>> {
+        parse_path(d, NumberMode::Exact)
+            .unwrap()
+            .iter()
+            .flat_map(|c| c.segments.iter())
+            .map(|s| match s {
+                Segment::Bezier(ps) => ps.iter().map(|p| p.to_string()).collect(),
+                Segment::Skipped { .. } => vec!["skipped".into()],
+            })
+            .collect()
+    }
+
+    #[test]
+    fn svg_path_compact_numbers_split_like_browsers() {
+        assert_eq!(beziers("M1.5.5L-1-2"), vec![vec!["(3/2, 1/2)", "(-1, -2)"]]);
+        assert_eq!(beziers("M0,0 1e1,2E-1"), vec![vec!["(0, 0)", "(10, 1/5)"]]);
+    }
+
+    #[test]
+    fn svg_path_t_reflects_through_chain_and_resets_after_other_commands() {
+        let s = beziers("M0 0 Q1 1 2 0 T4 0 L5 0 T6 0");
+        assert_eq!(s[1], vec!["(2, 0)", "(3, -1)", "(4, 0)"]);
+        // after L there is nothing to reflect: the control point is the current point
+        assert_eq!(s[3], vec!["(5, 0)", "(5, 0)", "(6, 0)"]);
+    }
+
+    #[test]
+    fn svg_path_errors_name_the_column() {
+        let e = parse_path("M0 0 L1", NumberMode::Exact).unwrap_err();
+        assert!(e.to_string().contains("column 8"), "{e}");
+        let e = parse_path("L0 0", NumberMode::Exact).unwrap_err();
+        assert!(e.to_string().contains("move-to"), "{e}");
+        let e = parse_path("M0 0 X1 1", NumberMode::Exact).unwrap_err();
+        assert!(e.to_string().contains("column 6"), "{e}");
+    }
 }

@@ -62,8 +62,29 @@ fn build(
     }
 }
 
+/// The options of a batch of control polygons, read once (each line reports their errors, in
+/// the order a line needs them).
+struct Given<'a> {
+    args: &'a SplineArgs,
+    weights: Result<Option<Vec<BigRational>>>,
+    knots: Result<Option<Vec<BigRational>>>,
+    ratios: Result<Option<Vec<BigRational>>>,
+}
+
+impl<'a> Given<'a> {
+    fn new(args: &'a SplineArgs) -> Self {
+        Given {
+            args,
+            weights: parse_weights(&args.rational),
+            knots: args.knots.as_deref().map(|k| numbers("--knots", k)).transpose(),
+            ratios: args.ratios.as_deref().map(|r| numbers("--ratios", r)).transpose(),
+        }
+    }
+}
+
 /// The spline of one input line: a JSON object, or a control polygon with the options.
-fn spline_of(args: &SplineArgs, line: Option<usize>, text: &str) -> Result<RationalSpline> {
+fn spline_of(given: &Given<'_>, line: Option<usize>, text: &str) -> Result<RationalSpline> {
+    let args = given.args;
     if text.trim_start().starts_with('{') {
         let s: SplineLine =
             serde_json::from_str(text).map_err(|e| Error::InvalidArgument { message: format!("JSON spline: {e}") })?;
@@ -91,11 +112,9 @@ fn spline_of(args: &SplineArgs, line: Option<usize>, text: &str) -> Result<Ratio
     let hom = if args.rational.homogeneous {
         points
     } else {
-        homogeneous_control_points(&points, parse_weights(&args.rational)?.as_deref())?
+        homogeneous_control_points(&points, given.weights.clone()?.as_deref())?
     };
-    let knots = args.knots.as_deref().map(|k| numbers("--knots", k)).transpose()?;
-    let ratios = args.ratios.as_deref().map(|r| numbers("--ratios", r)).transpose()?;
-    build(args.degree, hom, knots, ratios)
+    build(args.degree, hom, given.knots.clone()?, given.ratios.clone()?)
 }
 
 /// The typed result as the answer's JSON (through a `Value`, whose keys print in sorted order,
@@ -162,25 +181,31 @@ fn elevate(sp: &RationalSpline) -> Result<Answer> {
 pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
     match op {
         SplineOp::ToBezier { method, spline } => {
-            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&spline, line, text)?, &method))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&given, line, text)?, &method))
         }
         SplineOp::Check { spline } => {
-            batch_lines(&spline.curve, out, |line, text| check(&spline_of(&spline, line, text)?))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| check(&spline_of(&given, line, text)?))
         }
         SplineOp::Eval { u, spline } => {
             let us: Result<Vec<BigRational>> = u.iter().map(|s| option_number("--u", s)).collect();
-            batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&spline, line, text)?, &us.clone()?))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&given, line, text)?, &us.clone()?))
         }
         SplineOp::Insert { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
-            batch_lines(&spline.curve, out, |line, text| insert(&spline_of(&spline, line, text)?, &u.clone()?, times))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| insert(&spline_of(&given, line, text)?, &u.clone()?, times))
         }
         SplineOp::Remove { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
-            batch_lines(&spline.curve, out, |line, text| remove(&spline_of(&spline, line, text)?, &u.clone()?, times))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| remove(&spline_of(&given, line, text)?, &u.clone()?, times))
         }
         SplineOp::Elevate { spline } => {
-            batch_lines(&spline.curve, out, |line, text| elevate(&spline_of(&spline, line, text)?))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| elevate(&spline_of(&given, line, text)?))
         }
         SplineOp::Surface { degree, knots_u, knots_v, rational, mut curve } => {
             if curve.dim == 2 {
