@@ -349,7 +349,7 @@ impl RationalSpline {
     }
 
     /// The points at each of `us` (de Boor, [`Self::eval_at`]), within a work budget
-    /// ([`crate::work::spline_evaluations`]).
+    /// ([`crate::work::spline_evaluation`] each).
     ///
     /// # Errors
     /// As [`Self::eval_at`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
