@@ -54,6 +54,20 @@ pub struct RationalBezier<S> {
     homogeneous: BezierCurve<S>,
 }
 
+/// The homogeneous point `(w·P, w)`, the same as [`Point::to_homogeneous`] but without the
+/// products when `w = 1` (an exact product by 1 still reduces every coordinate: most curves
+/// are polynomial).
+pub(crate) fn weighted_homogeneous<S: Scalar>(p: &Point<S>, w: &S) -> Point<S> {
+    if *w == S::one() {
+        let mut coords = Vec::with_capacity(p.dim() + 1);
+        coords.extend_from_slice(&p.coords);
+        coords.push(S::one());
+        Point::new(coords)
+    } else {
+        p.to_homogeneous(w)
+    }
+}
+
 /// A rational curve in JSON: `degree`, `homogeneous` (the control points `w·P, w`), `points`
 /// (affine, `null` at infinity) and `weights`, exact numbers as strings.
 ///
@@ -99,7 +113,7 @@ impl<S: Scalar> RationalBezier<S> {
                 ),
             });
         }
-        let h = points.iter().zip(&weights).map(|(p, w)| p.to_homogeneous(w)).collect();
+        let h = points.iter().zip(&weights).map(|(p, w)| weighted_homogeneous(p, w)).collect();
         Ok(RationalBezier { homogeneous: BezierCurve::new(h)? })
     }
 

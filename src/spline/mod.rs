@@ -294,17 +294,7 @@ pub fn homogeneous_control_points(
     points: &[Point<BigRational>],
     weights: Option<&[BigRational]>,
 ) -> Result<Vec<Point<BigRational>>> {
-    // weight 1: append it (a multiplication by 1 would still reduce every fraction)
-    let lift = |p: &Point<BigRational>, w: &BigRational| {
-        if num_traits::One::is_one(w) {
-            let mut coords = Vec::with_capacity(p.dim() + 1);
-            coords.extend_from_slice(&p.coords);
-            coords.push(rat(1));
-            Point::new(coords)
-        } else {
-            p.to_homogeneous(w)
-        }
-    };
+    let lift = crate::rational::rational_bezier::weighted_homogeneous::<BigRational>;
     let Some(weights) = weights else {
         return Ok(points.iter().map(|p| lift(p, &rat(1))).collect());
     };

@@ -76,7 +76,9 @@ impl RationalPatch {
             points
                 .iter()
                 .zip(&weights)
-                .map(|(p, w)| p.iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect())
+                .map(|(p, w)| {
+                    p.iter().zip(w).map(|(p, w)| crate::rational::rational_bezier::weighted_homogeneous(p, w)).collect()
+                })
                 .collect(),
         )
     }
@@ -700,7 +702,38 @@ impl RationalPatch {
     /// assert!(checked.de_casteljau_u_then_v_and_v_then_u_agree);
     /// ```
     pub fn eval_checked(&self, u: &BigRational, v: &BigRational) -> Result<PatchValue> {
+        self.eval_checked_within(u, v, &crate::work::Budget::unlimited())
+    }
+
+    /// [`Self::eval_checked`] within a work budget: six evaluations, each of `m + n + 2`
+    /// curves of the larger degree ([`crate::work::evaluation`]), checked before any work
+    /// starts.
+    ///
+    /// # Errors
+    /// As [`Self::eval_checked`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, ratio, surface::RationalPatch, work::Budget};
+    /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+    /// let patch = RationalPatch::new(vec![vec![p(0, 0, 0), p(0, 1, 1)], vec![p(1, 0, 1), p(1, 1, 2)]], vec![vec![rat(1); 2]; 2]).unwrap();
+    /// assert!(patch.eval_checked_within(&ratio(1, 3), &rat(1), &Budget::unlimited()).is_ok());
+    /// assert!(patch.eval_checked_within(&ratio(1, 3), &rat(1), &Budget::new(1.0, "--max-work")).is_err());
+    /// ```
+    pub fn eval_checked_within(
+        &self,
+        u: &BigRational,
+        v: &BigRational,
+        budget: &crate::work::Budget,
+    ) -> Result<PatchValue> {
         use crate::num::small::{SmallRational, checked};
+        let (m, n) = self.degree();
+        let beta = self.rows.iter().map(|r| crate::work::max_bits(r)).max().unwrap_or(0);
+        let tau = crate::work::bits(u).max(crate::work::bits(v));
+        budget.check(
+            format!("checked evaluation of a degree-({m}, {n}) patch"),
+            6.0 * (m + n + 2) as f64 * crate::work::evaluation(m.max(n), self.dim() + 1, beta, tau),
+        )?;
         let small = checked(|| {
             let to_small = |p: &Point<BigRational>| {
                 p.coords.iter().map(SmallRational::from_big).collect::<Option<Vec<_>>>().map(Point::new)
