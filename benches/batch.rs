@@ -5,7 +5,8 @@
 //! rationals, serde) for the gain of the integer route. Inputs: 32,768 font-like integer
 //! cubics (|coordinates| ≤ 2048, a tenth with a cusp at t = 0), 4,096 cubics with small
 //! rational coordinates, and 31 copies of the first (1,015,808 lines, command line only).
-//! `cargo bench --bench batch`.
+//! Also `spline check` on 20,000 degree-1 lines (in process and the command line).
+//! `cargo bench --bench batch` (`-- spline_check` for that group only).
 
 use casteljau::BezierCurve;
 use casteljau::classify::integer::{classify_json, classify_json_small};
@@ -313,5 +314,62 @@ fn batch(c: &mut Criterion) {
     let _ = std::fs::remove_file(rational_file);
 }
 
-criterion_group!(benches, batch);
+/// Font-like line segments (degree-1 splines of one span), one per line.
+fn font_lines(n: usize) -> String {
+    let mut next = xorshift(0x0123_4567_89AB_CDEF);
+    let mut out = String::new();
+    for _ in 0..n {
+        let mut c = || (next() % 4097) as i64 - 2048;
+        out += &format!("{} {}, {} {}\n", c(), c(), c(), c());
+    }
+    out
+}
+
+/// `spline check` on degree-1 lines, in process (parse → spline → check → JSON) and by the
+/// command line on one thread: the lines/s of the spline batch route. Bounded: 20,000 lines,
+/// ten samples. `cargo bench --bench batch -- spline_check`.
+fn spline_check(c: &mut Criterion) {
+    use casteljau::spline::{RationalSpline, homogeneous_control_points};
+    use casteljau::work::Budget;
+    const LINES: usize = 20_000;
+    let text = font_lines(LINES);
+    let path = write_input("spline_lines.txt", &text);
+    let knots = [0, 0, 1, 1].map(casteljau::rat);
+    let in_process = |text: &str, out: &mut Vec<u8>| {
+        for line in text.lines() {
+            let h = homogeneous_control_points(&parse_points(line, 2, None).unwrap(), None).unwrap();
+            let check = RationalSpline::from_knots(1, h, &knots).unwrap().check_within(&Budget::unlimited()).unwrap();
+            assert!(check.passed);
+            serde_json::to_writer(&mut *out, &check).unwrap();
+            out.push(b'\n');
+        }
+    };
+    let mut sink = Vec::with_capacity(8 << 20);
+    let mut g = c.benchmark_group(format!("batch_spline_check_{LINES}"));
+    g.throughput(Throughput::Elements(LINES as u64));
+    g.sample_size(10);
+    g.warm_up_time(Duration::from_millis(500));
+    g.measurement_time(Duration::from_secs(3));
+    g.bench_function("in_process", |b| {
+        b.iter(|| {
+            sink.clear();
+            in_process(black_box(&text), &mut sink);
+        })
+    });
+    g.bench_function("cli_1_thread", |b| {
+        b.iter(|| {
+            let status = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+                .args(["spline", "check", "--degree", "1", "--knots", "0 0 1 1", "--json", "--threads", "1", "--input"])
+                .arg(&path)
+                .stdout(Stdio::null())
+                .status()
+                .unwrap();
+            assert!(status.success());
+        })
+    });
+    g.finish();
+    let _ = std::fs::remove_file(path);
+}
+
+criterion_group!(benches, spline_check, batch);
 criterion_main!(benches);

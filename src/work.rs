@@ -264,3 +264,94 @@ pub fn root_split(n: usize, beta: u64) -> f64 {
     let nf = n as f64;
     nf * nf * limbs(beta.saturating_add(2 * n as u64))
 }
+
+/// The sizes of a spline for its cost models: degree `n`, control points, homogeneous
+/// dimension and the largest bit length of a control coordinate or knot.
+///
+/// # Example
+/// ```
+/// use casteljau::work::{SplineShape, spline_check, spline_conversion};
+/// let s = SplineShape { degree: 3, points: 6, dim: 3, bits: 8 };
+/// assert!(spline_check(s) > spline_conversion(s));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SplineShape {
+    /// The degree `n`.
+    pub degree: usize,
+    /// The number of control points `m + 1`.
+    pub points: usize,
+    /// Coordinates of a homogeneous control point.
+    pub dim: usize,
+    /// The largest bit length of a control coordinate or knot.
+    pub bits: u64,
+}
+
+/// Bézier extraction of a spline (Boehm insertion up to multiplicity `n` at every knot, then
+/// the joins' derivatives): each of the `m + n` insertions touches `n` points of `dim`
+/// coordinates, a reduced fraction each, whose bits grow by the knots' per level:
+/// `(m + n)·n·dim·G·L(β·(n + 1))²` plus the joins, `n²` derivative coordinates each.
+///
+/// # Example
+/// ```
+/// use casteljau::work::{SplineShape, spline_conversion};
+/// let cubic = |points| spline_conversion(SplineShape { degree: 3, points, dim: 3, bits: 16 });
+/// assert!(cubic(1000) > 100.0 * cubic(6));
+/// ```
+pub fn spline_conversion(s: SplineShape) -> f64 {
+    let n = s.degree as f64;
+    let l = limbs(s.bits.saturating_mul(s.degree as u64 + 1));
+    let insertions = (s.points as f64 + n) * n * s.dim as f64 * GCD * l * l;
+    let joins = s.points as f64 * n * n * s.dim as f64 * GCD * l * l;
+    insertions + joins
+}
+
+/// One de Boor evaluation of a spline at a `tau`-bit parameter: `n(n + 1)/2` homogeneous
+/// interpolations of `dim` reduced coordinates.
+///
+/// # Example
+/// ```
+/// use casteljau::work::{SplineShape, spline_evaluation};
+/// let s = SplineShape { degree: 3, points: 6, dim: 3, bits: 16 };
+/// assert!(spline_evaluation(s, 1000) > spline_evaluation(s, 2));
+/// ```
+pub fn spline_evaluation(s: SplineShape, tau: u64) -> f64 {
+    let n = s.degree as f64;
+    let l = limbs(grown(s.bits, s.degree, tau));
+    n * (n + 1.0) / 2.0 * s.dim as f64 * GCD * l * l + 1.0
+}
+
+/// The check of a spline's Bézier segments: the extraction (twice for the seed's formulas),
+/// and `2n + 1` evaluations of each segment and of the spline per segment.
+///
+/// # Example
+/// ```
+/// use casteljau::work::{Budget, SplineShape, spline_check};
+/// // a degree-12 spline of 10,000 control points is checked within the default ten seconds
+/// let s = SplineShape { degree: 12, points: 10_000, dim: 4, bits: 64 };
+/// assert!(Budget::new(casteljau::work::DEFAULT_MAX_WORK, "--max-work").check("check", spline_check(s)).is_ok());
+/// ```
+pub fn spline_check(s: SplineShape) -> f64 {
+    let segments = (s.points.saturating_sub(s.degree)).max(1) as f64;
+    let samples = segments * (2.0 * s.degree as f64 + 1.0);
+    let tau = 64 - (2 * s.degree as u64).leading_zeros() as u64;
+    2.0 * spline_conversion(s)
+        + samples * (spline_evaluation(s, tau + s.bits) + evaluation(s.degree, s.dim, s.bits, tau))
+}
+
+/// Bézier extraction of a NURBS surface of degrees `(p, q)` with `points` homogeneous control
+/// points of `dim` coordinates and `bits`-bit numbers, and its check: extraction along `u` of
+/// every column and along `v` of every row, then `(2p + 1)(2q + 1)` samples per patch.
+///
+/// # Example
+/// ```
+/// use casteljau::work::surface_extraction;
+/// assert!(surface_extraction((3, 3), 100, 4, 16) > surface_extraction((1, 1), 100, 4, 16));
+/// ```
+pub fn surface_extraction(degree: (usize, usize), points: usize, dim: usize, bits: u64) -> f64 {
+    let (p, q) = (degree.0.max(1), degree.1.max(1));
+    let shape = |n: usize| SplineShape { degree: n, points, dim, bits };
+    let samples = points as f64 * ((2 * p + 1) * (2 * q + 1)) as f64;
+    spline_conversion(shape(p)) * (q + 1) as f64
+        + spline_conversion(shape(q)) * (p + 1) as f64
+        + samples * evaluation(p.max(q), dim, bits.saturating_mul((p + q) as u64), 8)
+}

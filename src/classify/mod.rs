@@ -601,43 +601,98 @@ pub fn loop_blinn(curve: &BezierCurve<BigRational>) -> ([BigRational; 3], Option
     ([d1, d2, d3], node)
 }
 
-/// Facts about one segment that float code most often gets wrong, as stable names (the
-/// `flags` of `casteljau scan`):
-///
-/// * `degenerate`: the real degree is below the written degree (a zero-length line, a
-///   degree-elevated curve, coincident points);
-/// * `zero_length_handle`: a control point at its end point (`P1 = P0` or `P(n−1) = Pn`,
-///   degree ≥ 2);
-/// * `cusp_at_endpoint`, `loop_at_endpoint`, `inflection_at_endpoint`: a cusp parameter, a
-///   self-intersection parameter of a crunode, or an inflection parameter exactly `0` or `1`.
+/// A fact about one segment that float code most often gets wrong (the `flags` of `casteljau
+/// scan`), serialized as its stable snake_case name ([`SegmentFlag::as_str`]).
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, classify::{classify, segment_flags}, num::parse::parse_points};
+/// use casteljau::classify::SegmentFlag;
+/// assert_eq!(SegmentFlag::ZeroLengthHandle.as_str(), "zero_length_handle");
+/// assert_eq!(serde_json::to_string(&SegmentFlag::CuspAtEndpoint).unwrap(), r#""cusp_at_endpoint""#);
+/// assert!(SegmentFlag::LoopAtEndpoint.at_endpoint() && !SegmentFlag::Degenerate.at_endpoint());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SegmentFlag {
+    /// The real degree is below the written degree (a zero-length line, a degree-elevated
+    /// curve, coincident points).
+    Degenerate,
+    /// A control point at its end point (`P1 = P0` or `P(n−1) = Pn`, degree ≥ 2).
+    ZeroLengthHandle,
+    /// A cusp parameter exactly `0` or `1`.
+    CuspAtEndpoint,
+    /// A self-intersection parameter of a crunode exactly `0` or `1`.
+    LoopAtEndpoint,
+    /// An inflection parameter exactly `0` or `1`.
+    InflectionAtEndpoint,
+}
+
+impl SegmentFlag {
+    /// The stable name: `degenerate`, `zero_length_handle`, `cusp_at_endpoint`,
+    /// `loop_at_endpoint`, `inflection_at_endpoint`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::classify::SegmentFlag;
+    /// assert_eq!(SegmentFlag::InflectionAtEndpoint.as_str(), "inflection_at_endpoint");
+    /// ```
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SegmentFlag::Degenerate => "degenerate",
+            SegmentFlag::ZeroLengthHandle => "zero_length_handle",
+            SegmentFlag::CuspAtEndpoint => "cusp_at_endpoint",
+            SegmentFlag::LoopAtEndpoint => "loop_at_endpoint",
+            SegmentFlag::InflectionAtEndpoint => "inflection_at_endpoint",
+        }
+    }
+
+    /// A cusp, loop or inflection exactly at `t = 0` or `1`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::classify::SegmentFlag;
+    /// assert!(SegmentFlag::CuspAtEndpoint.at_endpoint());
+    /// ```
+    pub fn at_endpoint(self) -> bool {
+        matches!(self, SegmentFlag::CuspAtEndpoint | SegmentFlag::LoopAtEndpoint | SegmentFlag::InflectionAtEndpoint)
+    }
+}
+
+impl std::fmt::Display for SegmentFlag {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// The [`SegmentFlag`]s of one segment, in the order of the enum.
+///
+/// # Example
+/// ```
+/// use casteljau::{BezierCurve, classify::{SegmentFlag, classify, segment_flags}, num::parse::parse_points};
 /// let c = BezierCurve::new(parse_points("0 0, 0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
 /// let k = classify(&c).unwrap();
-/// assert_eq!(segment_flags(c.points(), &k), ["zero_length_handle", "cusp_at_endpoint"]);
+/// assert_eq!(segment_flags(c.points(), &k), [SegmentFlag::ZeroLengthHandle, SegmentFlag::CuspAtEndpoint]);
 /// ```
-pub fn segment_flags<K: Radical>(points: &[Point<K>], k: &Classification<K>) -> Vec<&'static str> {
+pub fn segment_flags<K: Radical>(points: &[Point<K>], k: &Classification<K>) -> Vec<SegmentFlag> {
     let mut flags = vec![];
     let n = points.len().saturating_sub(1);
     if k.real_degree < k.degree {
-        flags.push("degenerate");
+        flags.push(SegmentFlag::Degenerate);
     }
     if n >= 2 && (points[0] == points[1] || points[n - 1] == points[n]) {
-        flags.push("zero_length_handle");
+        flags.push(SegmentFlag::ZeroLengthHandle);
     }
     let at_end = |ps: &[Parameter<K>]| {
         ps.iter().any(|t| t.radicand().is_zero() && (t.rational_part().is_zero() || *t.rational_part() == K::one()))
     };
     if at_end(&k.cusp_parameters) {
-        flags.push("cusp_at_endpoint");
+        flags.push(SegmentFlag::CuspAtEndpoint);
     }
     if k.node_type == Some(NodeType::Crunode) && at_end(&k.double_point_parameters) {
-        flags.push("loop_at_endpoint");
+        flags.push(SegmentFlag::LoopAtEndpoint);
     }
     if at_end(&k.inflection_parameters) {
-        flags.push("inflection_at_endpoint");
+        flags.push(SegmentFlag::InflectionAtEndpoint);
     }
     flags
 }

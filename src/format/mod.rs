@@ -10,6 +10,7 @@
 
 #[cfg(feature = "fonts")]
 pub mod font;
+pub mod scan;
 #[cfg(feature = "svg")]
 pub mod svg;
 pub mod svg_path;

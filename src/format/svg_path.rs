@@ -31,8 +31,10 @@
 //! assert!(subpaths[0].closed);
 //! ```
 
+use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Position, Result};
 use crate::format::{Contour, Segment};
+use crate::intersect::winding::ClosedPath;
 use crate::num::parse::{NumberMode, parse_number_in};
 use crate::num::point::Point;
 use crate::num::scalar::{Scalar, rat};
@@ -334,6 +336,69 @@ fn reflect(c: Option<&P>, cur: &P) -> P {
         Some(c) => cur.scale(&rat(2)).sub(c),
         None => cur.clone(),
     }
+}
+
+/// The segments of a subpath as a closed contour for filling: every piece as a polynomial
+/// Bézier curve and, when the subpath does not end where it starts, the closing line (SVG fills
+/// an open subpath as if closed by a line, SVG 1.1 §11.3). An empty subpath gives no segments.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] with the reason for a piece that is no polynomial Bézier curve
+/// (an elliptical arc, [`Segment::Skipped`]).
+///
+/// # Example
+/// ```
+/// use casteljau::format::svg_path::{close_for_fill, parse_path};
+/// use casteljau::num::parse::NumberMode;
+/// let subpaths = parse_path("M0 0 Q1 2 2 0", NumberMode::Exact).unwrap();
+/// let closed = close_for_fill(&subpaths[0]).unwrap();
+/// assert_eq!(closed.len(), 2); // the quadratic and the line back to (0, 0)
+/// assert_eq!(closed[1].points()[1].to_string(), "(0, 0)");
+/// ```
+pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>> {
+    let mut segs = Vec::with_capacity(contour.segments.len() + 1);
+    for s in &contour.segments {
+        match s {
+            Segment::Bezier(ps) => segs.push(BezierCurve::new(ps.clone())?),
+            Segment::Skipped { reason, .. } => return Err(Error::InvalidArgument { message: reason.clone() }),
+        }
+    }
+    if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
+        let (a, b) = (last.points()[last.points().len() - 1].clone(), first.points()[0].clone());
+        if a != b {
+            segs.push(BezierCurve::new(vec![a, b])?);
+        }
+    }
+    Ok(segs)
+}
+
+/// SVG path data as the closed path its fill covers: [`parse_path`], each subpath closed by
+/// [`close_for_fill`], empty subpaths (a lone move-to) left out.
+///
+/// # Errors
+/// As [`parse_path`] and [`close_for_fill`].
+///
+/// # Example
+/// ```
+/// use casteljau::format::svg_path::fill_path;
+/// use casteljau::intersect::winding::{FillRule, PathWinding};
+/// use casteljau::num::parse::NumberMode;
+/// use casteljau::{Point, rat};
+/// let path = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
+/// assert_eq!(path.contours().len(), 2);
+/// let PathWinding::Off(w) = path.winding(&Point::new(vec![rat(2), rat(2)])).unwrap() else { panic!() };
+/// assert_eq!(w.winding(), 2);
+/// assert!(!w.inside(FillRule::EvenOdd));
+/// ```
+pub fn fill_path(d: &str, mode: NumberMode) -> Result<ClosedPath> {
+    let mut contours = vec![];
+    for c in parse_path(d, mode)? {
+        let segs = close_for_fill(&c)?;
+        if !segs.is_empty() {
+            contours.push(segs);
+        }
+    }
+    ClosedPath::from_polynomial(contours)
 }
 
 #[cfg(test)]

@@ -54,6 +54,32 @@ pub struct RationalBezier<S> {
     homogeneous: BezierCurve<S>,
 }
 
+/// The homogeneous point `(w·P, w)`, the same as [`Point::to_homogeneous`] but without the
+/// products when `w = 1` (an exact product by 1 still reduces every coordinate: most curves
+/// are polynomial).
+pub(crate) fn weighted_homogeneous<S: Scalar>(p: &Point<S>, w: &S) -> Point<S> {
+    if *w == S::one() {
+        let mut coords = Vec::with_capacity(p.dim() + 1);
+        coords.extend_from_slice(&p.coords);
+        coords.push(S::one());
+        Point::new(coords)
+    } else {
+        p.to_homogeneous(w)
+    }
+}
+
+/// A rational curve in JSON: `degree`, `homogeneous` (the control points `w·P, w`), `points`
+/// (affine, `null` at infinity) and `weights`, exact numbers as strings.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, RationalBezier, rat};
+/// let c = RationalBezier::new(vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(2)])], vec![rat(1), rat(2)]).unwrap();
+/// assert_eq!(
+///     serde_json::to_string(&c).unwrap(),
+///     r#"{"degree":1,"homogeneous":[["0","0","1"],["2","4","2"]],"points":[["0","0"],["1","2"]],"weights":["1","2"]}"#
+/// );
+/// ```
 impl<S: Scalar> RationalBezier<S> {
     /// From control points and weights.
     ///
@@ -67,7 +93,7 @@ impl<S: Scalar> RationalBezier<S> {
         if let Some(i) = weights.iter().position(Scalar::is_zero) {
             return Err(Error::ZeroWeight { index: i + 1, row: None });
         }
-        let h = points.iter().zip(&weights).map(|(p, w)| p.to_homogeneous(w)).collect();
+        let h = points.iter().zip(&weights).map(|(p, w)| weighted_homogeneous(p, w)).collect();
         Ok(RationalBezier { homogeneous: BezierCurve::new(h)? })
     }
 

@@ -576,7 +576,14 @@ pub(crate) fn joins_with_order(
         let mut out = Vec::new();
         let mut h = c.homogeneous().clone();
         for _ in 0..=order {
-            out.push(h.eval(t));
+            // at an end the curve is its end control point (no de Casteljau run of n² products)
+            out.push(if t.is_zero() {
+                h.points()[0].clone()
+            } else if *t == rat(1) {
+                h.points()[h.points().len() - 1].clone()
+            } else {
+                h.eval(t)
+            });
             if h.degree() == 0 {
                 h = crate::curve::bezier::BezierCurve::new(vec![Point::origin(h.dim())]).expect("one point");
             } else {

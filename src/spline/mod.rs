@@ -15,11 +15,18 @@
 
 pub mod knots;
 pub mod net;
+mod report;
 pub mod surface;
 
+pub use report::{
+    BezierConversion, KnotRemoval, SplineCheck, SplineSegment, SplineValue, SplineValues, SurfaceExtraction, joins_text,
+};
+
+use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar, rat};
+use crate::num::small::{SmallRational, checked};
 use crate::proof::Reading;
 use crate::rational::rational_bezier::{RationalBezier, divide};
 use num_rational::BigRational;
@@ -65,9 +72,9 @@ impl RationalSpline {
     /// A spline from control points, weights and scale ratios (`m + n` of them).
     ///
     /// # Errors
-    /// [`Error::WeightCount`] for a weight count other than the number of points,
-    /// [`Error::ZeroWeight`] naming the first zero weight, [`Error::InvalidArgument`] for other
-    /// wrong counts, a non-positive ratio, or a degree above [`MAX_SPLINE_DEGREE`].
+    /// As [`homogeneous_control_points`] (wrong count, a weight of 0) and
+    /// [`Self::from_ratios`] (wrong count, a ratio that is not positive, a degree outside
+    /// `1..=`[`MAX_SPLINE_DEGREE`]).
     ///
     /// # Example
     /// ```
@@ -84,41 +91,52 @@ impl RationalSpline {
         weights: &[BigRational],
         ratios: &[BigRational],
     ) -> Result<Self> {
+        Self::from_ratios(degree, homogeneous_control_points(points, Some(weights))?, ratios)
+    }
+
+    /// A spline from homogeneous control points (`w·P, w`) and scale ratios `λ_0 … λ_{m+n−1}`
+    /// (the knot intervals): the knots are the partial sums `u_0 = 0`, `u_{j+1} = u_j + λ_j`,
+    /// then as [`Self::from_knots`] (the final, never used knot repeats the one before).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for a ratio that is not positive (repeated knots need a knot
+    /// vector) or a count other than `m + n` ratios for `m + 1` points; then as
+    /// [`Self::from_knots`].
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::RationalSpline};
+    /// let h: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_ratios(2, h.clone(), &[1, 2, 1, 1, 1].map(rat)).unwrap();
+    /// assert_eq!(sp.full_knot_vector(), [0, 1, 3, 4, 5, 6, 6].map(rat));
+    /// let e = RationalSpline::from_ratios(2, h, &[1, 0, 1, 1, 1].map(rat)).unwrap_err();
+    /// assert!(e.to_string().contains("scale ratio 2 (0) must be positive"));
+    /// ```
+    pub fn from_ratios(degree: usize, homogeneous: Vec<Point<BigRational>>, ratios: &[BigRational]) -> Result<Self> {
         let bad = |m: String| Error::InvalidArgument { message: m };
-        if degree == 0 || degree > MAX_SPLINE_DEGREE {
-            return Err(bad(format!("spline degree must be 1..={MAX_SPLINE_DEGREE}")));
-        }
-        if points.len() < degree + 1 {
+        if let Some(i) = ratios.iter().position(|r| r.sign() != Ordering::Greater) {
             return Err(bad(format!(
-                "a degree-{degree} spline needs at least {} control points, got {}",
-                degree + 1,
-                points.len()
+                "scale ratio {} ({}) must be positive; repeated knots go in --knots",
+                i + 1,
+                ratios[i]
             )));
         }
-        if weights.len() != points.len() {
-            return Err(Error::WeightCount { weights: weights.len(), points: points.len(), row: None });
-        }
-        let need = points.len() - 1 + degree;
+        let need = (homogeneous.len() + degree).saturating_sub(1);
         if ratios.len() != need {
             return Err(bad(format!(
                 "{} control points of degree {degree} need {need} scale ratios, got {}",
-                points.len(),
+                homogeneous.len(),
                 ratios.len()
             )));
         }
-        if let Some(i) = ratios.iter().position(|r| r.sign() != Ordering::Greater) {
-            return Err(bad(format!("scale ratio {} must be positive", i + 1)));
-        }
-        if let Some(i) = weights.iter().position(Scalar::is_zero) {
-            return Err(Error::ZeroWeight { index: i + 1, row: None });
-        }
-        let mut knots = vec![rat(0)];
+        let mut knots = Vec::with_capacity(ratios.len() + 2);
+        knots.push(rat(0));
         for r in ratios {
             let next = knots.last().expect("non-empty").clone() + r;
             knots.push(next);
         }
-        let homogeneous = points.iter().zip(weights).map(|(p, w)| p.to_homogeneous(w)).collect();
-        Ok(RationalSpline { degree, homogeneous, knots })
+        knots.push(knots.last().expect("non-empty").clone());
+        Self::from_knots(degree, homogeneous, &knots)
     }
 
     /// A spline from homogeneous control points (e.g. the intermediate points of a net).
@@ -195,18 +213,7 @@ impl RationalSpline {
     /// assert_eq!(sp.eval_homogeneous(0, &rat(4)).from_homogeneous().unwrap(), sp.eval(0, &rat(4)).unwrap());
     /// ```
     pub fn eval_homogeneous(&self, s: usize, u: &BigRational) -> Point<BigRational> {
-        let n = self.degree;
-        let j = self.span_indices()[s];
-        let mut d: Vec<Point<BigRational>> = self.homogeneous[j - n..=j].to_vec();
-        for r in 1..=n {
-            for i in (r..=n).rev() {
-                let idx = j - n + i; // control point index
-                let (lo, hi) = (&self.knots[idx], &self.knots[idx + n + 1 - r]);
-                let a = (u.clone() - lo) / (hi.clone() - lo);
-                d[i] = d[i - 1].lerp(&d[i], &a);
-            }
-        }
-        d.swap_remove(n)
+        de_boor(&self.knots, &self.homogeneous, self.degree, self.span_indices()[s], u)
     }
 
     /// The NURBS point at `u` in segment `s`.
@@ -267,6 +274,39 @@ impl RationalSpline {
     }
 }
 
+/// Homogeneous control points `(w_i·P_i, w_i)` from affine points and their weights (all 1
+/// when `weights` is `None`).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] when the counts differ or a weight is 0 (a control point at
+/// infinity is given in homogeneous form, e.g. [`RationalSpline::from_knots`]).
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, rat, ratio, spline::homogeneous_control_points};
+/// let p = [Point::new(vec![rat(1), rat(2)]), Point::new(vec![rat(3), rat(0)])];
+/// let h = homogeneous_control_points(&p, Some(&[ratio(1, 2), rat(1)])).unwrap();
+/// assert_eq!(h[0], Point::new(vec![ratio(1, 2), rat(1), ratio(1, 2)]));
+/// assert_eq!(homogeneous_control_points(&p, None).unwrap()[1], Point::new(vec![rat(3), rat(0), rat(1)]));
+/// assert!(homogeneous_control_points(&p, Some(&[rat(1), rat(0)])).is_err());
+/// ```
+pub fn homogeneous_control_points(
+    points: &[Point<BigRational>],
+    weights: Option<&[BigRational]>,
+) -> Result<Vec<Point<BigRational>>> {
+    let lift = crate::rational::rational_bezier::weighted_homogeneous::<BigRational>;
+    let Some(weights) = weights else {
+        return Ok(points.iter().map(|p| lift(p, &rat(1))).collect());
+    };
+    if weights.len() != points.len() {
+        return Err(Error::WeightCount { weights: weights.len(), points: points.len(), row: None });
+    }
+    if let Some(i) = weights.iter().position(Scalar::is_zero) {
+        return Err(Error::ZeroWeight { index: i + 1, row: None });
+    }
+    Ok(points.iter().zip(weights).map(|(p, w)| lift(p, w)).collect())
+}
+
 fn w_lin(a: &BigRational, b: &BigRational, x: &BigRational, y: &BigRational) -> BigRational {
     // 𝒲[a:b](x, y) for numbers: (b x + a y)/(a + b)
     (b.clone() * x + a.clone() * y) / (a.clone() + b)
@@ -306,6 +346,17 @@ impl std::str::FromStr for Conversion {
                 message: format!("the conversion method is boehm, seed or seed-printed, not {other:?}"),
             }),
         }
+    }
+}
+
+impl std::fmt::Display for Conversion {
+    /// The spelling [`FromStr`](std::str::FromStr) reads: `boehm`, `seed`, `seed-printed`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Conversion::Boehm => "boehm",
+            Conversion::Seed(Reading::Corrected) => "seed",
+            Conversion::Seed(Reading::AsPrinted) => "seed-printed",
+        })
     }
 }
 
@@ -483,22 +534,93 @@ pub fn check_segments(
     sp: &RationalSpline,
     segments: &[RationalBezier<BigRational>],
 ) -> std::result::Result<usize, SegmentMismatch> {
-    let n = sp.degree;
-    let mut points = 0;
-    for (s, seg) in segments.iter().enumerate() {
-        let (a, b) = sp.span(s);
-        for k in 0..=2 * n {
-            let t = BigRational::new((k as i64).into(), ((2 * n) as i64).into());
-            let u = a.clone() + (b.clone() - &a) * &t;
-            match (seg.eval(&t), sp.eval(s, &u)) {
-                (Ok(x), Ok(y)) if x == y => points += 1,
-                (Err(_), Err(_)) => {}
-                _ => return Err(SegmentMismatch::NotTheNurbs { segment: s, t }),
-            }
+    // The same comparisons in fixed-width rationals first (about 20 times faster on the small
+    // numbers of most splines); exact either way: an overflow anywhere redoes them in BigRational.
+    let small = checked(|| {
+        let knots: Vec<SmallRational> = sp.knots.iter().map(SmallRational::from_big).collect::<Option<_>>()?;
+        let small_points = |ps: &[Point<BigRational>]| -> Option<Vec<Point<SmallRational>>> {
+            ps.iter()
+                .map(|p| p.coords.iter().map(SmallRational::from_big).collect::<Option<Vec<_>>>().map(Point::new))
+                .collect()
+        };
+        let homogeneous = small_points(&sp.homogeneous)?;
+        let segments: Vec<BezierCurve<SmallRational>> = segments
+            .iter()
+            .map(|c| BezierCurve::new(small_points(c.homogeneous().points())?).ok())
+            .collect::<Option<_>>()?;
+        Some(nurbs_agreement(sp, &knots, &homogeneous, &segments))
+    })
+    .flatten();
+    let points = match small {
+        Some(r) => r?,
+        None => {
+            let homogeneous: Vec<BezierCurve<BigRational>> = segments.iter().map(|c| c.homogeneous().clone()).collect();
+            nurbs_agreement(sp, &sp.knots, &sp.homogeneous, &homogeneous)?
         }
-    }
+    };
     if let Some((s, j)) = sp.joins(segments).into_iter().enumerate().find(|(_, j)| !j.proved) {
         return Err(SegmentMismatch::Discontinuous { segment: s, order: j.continuity.max(0) as usize });
     }
     Ok(points)
+}
+
+/// De Boor's recursion on the homogeneous `points` in the knot span `j` (`t_j ≤ u ≤ t_{j+1}`,
+/// internal knot vector, degree `n`).
+fn de_boor<S: Scalar>(knots: &[S], points: &[Point<S>], n: usize, j: usize, u: &S) -> Point<S> {
+    let mut d: Vec<Point<S>> = points[j - n..=j].to_vec();
+    for r in 1..=n {
+        for i in (r..=n).rev() {
+            let idx = j - n + i; // control point index
+            let (lo, hi) = (&knots[idx], &knots[idx + n + 1 - r]);
+            let a = (u.clone() - lo) / (hi.clone() - lo);
+            d[i] = d[i - 1].lerp(&d[i], &a);
+        }
+    }
+    d.swap_remove(n)
+}
+
+/// The first half of [`check_segments`] in any exact scalar: each homogeneous segment (the
+/// Bernstein sum) and the NURBS (de Boor) at `2n + 1` parameters of each span give the same
+/// affine point, or both none (weight 0). `knots` and `points` are the spline's, converted.
+/// Points are compared homogeneously, `x·w' = x'·w` with both weights non-zero, which is
+/// equality of the affine points without a division.
+fn nurbs_agreement<S: Exact>(
+    sp: &RationalSpline,
+    knots: &[S],
+    points: &[Point<S>],
+    segments: &[BezierCurve<S>],
+) -> std::result::Result<usize, SegmentMismatch> {
+    let n = sp.degree;
+    let spans = sp.span_indices();
+    let mut count = 0;
+    let two_n = S::from_i64(2 * n as i64);
+    for (s, seg) in segments.iter().enumerate() {
+        let Some(&j) = spans.get(s) else {
+            return Err(SegmentMismatch::NotTheNurbs { segment: s, t: rat(0) });
+        };
+        let (a, b) = (&knots[j], &knots[j + 1]);
+        for k in 0..=2 * n {
+            let t = S::from_i64(k as i64) / &two_n;
+            let u = a.clone() + (b.clone() - a) * &t;
+            let (x, y) = (seg.eval_bernstein(&t), de_boor(knots, points, n, j, &u));
+            let (wx, wy) = (&x.coords[x.dim() - 1], &y.coords[y.dim() - 1]);
+            let agree = match (wx.is_zero(), wy.is_zero()) {
+                (true, true) => true, // neither is defined there
+                (false, false) => {
+                    let same = x.dim() == y.dim()
+                        && x.coords.iter().zip(&y.coords).all(|(p, q)| p.clone() * wy == q.clone() * wx);
+                    count += usize::from(same);
+                    same
+                }
+                _ => false,
+            };
+            if !agree {
+                return Err(SegmentMismatch::NotTheNurbs {
+                    segment: s,
+                    t: BigRational::new((k as i64).into(), ((2 * n) as i64).into()),
+                });
+            }
+        }
+    }
+    Ok(count)
 }

@@ -55,22 +55,6 @@ impl Direction {
     }
 }
 
-/// A patch point, cross-checked ([`RationalPatch::eval_checked`]).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct PatchPoint {
-    /// The first parameter.
-    #[serde(serialize_with = "serial::string")]
-    pub u: BigRational,
-    /// The second parameter.
-    #[serde(serialize_with = "serial::string")]
-    pub v: BigRational,
-    /// `S(u, v)` by the closed form.
-    pub point: Point<BigRational>,
-    /// The homogeneous de Casteljau recursions in both orders agree with the closed form, and
-    /// so do the affine ones wherever they run (no intermediate weight 0).
-    pub de_casteljau_u_then_v_and_v_then_u_agree: bool,
-}
-
 /// A patch split in one direction ([`RationalPatch::split`]).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PatchSplit {
@@ -155,24 +139,6 @@ impl RationalPatch {
     /// ```
     pub fn from_homogeneous_net(points: &[Point<BigRational>], degree: (usize, usize)) -> Result<Self> {
         RationalPatch::from_homogeneous(net_rows(points, degree)?)
-    }
-
-    /// `S(u, v)` by the closed form, cross-checked against de Casteljau's recursion in `u` then
-    /// `v` and in `v` then `u` (homogeneous always; affine wherever it runs).
-    ///
-    /// # Errors
-    /// [`Error::WeightsVanish`] where the denominator is 0.
-    pub fn eval_checked(&self, u: &BigRational, v: &BigRational) -> Result<PatchPoint> {
-        let point = self.eval(u, v)?;
-        // A recursion that cannot run (an intermediate weight 0) is not a disagreement.
-        let h = self.eval_homogeneous(u, v);
-        let agree = [(self.eval_u_then_v(u, v), true), (self.eval_v_then_u(u, v), false)].into_iter().all(
-            |(affine, u_first)| {
-                self.eval_homogeneous_de_casteljau(u, v, u_first) == h
-                    && affine.as_ref().ok().is_none_or(|x| *x == point)
-            },
-        );
-        Ok(PatchPoint { u: u.clone(), v: v.clone(), point, de_casteljau_u_then_v_and_v_then_u_agree: agree })
     }
 
     /// The two parts of the patch split at `at` in `direction`.

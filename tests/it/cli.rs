@@ -516,6 +516,17 @@ fn cli_scan_only_filters_and_flags_endpoint_cusps() {
 }
 
 #[test]
+fn cli_scan_json_is_accepted_and_changes_nothing() {
+    // scan always writes JSON Lines; --json (which every other JSON-writing command takes) is a no-op
+    let path = "M0 0 C0 0 1 1 2 0 A 1 1 0 0 1 4 4 Z";
+    let plain = run(&["scan", "--quiet", "--path", path], None);
+    let json = run(&["scan", "--json", "--quiet", "--path", path], None);
+    assert_eq!(json.status.code(), Some(0), "{}", stderr(&json));
+    assert_eq!(stdout(&json), stdout(&plain));
+    assert_eq!(json_lines(&json).len(), 3); // the cubic, the skipped arc, the closing line
+}
+
+#[test]
 fn cli_scan_svg_reports_skips_and_element_errors_with_exit_2() {
     let dir = crate::common::TempDir::new("scan");
     let svg = dir.join("icon.svg");

@@ -637,3 +637,23 @@ fn cli_bbox_and_winding_refuse_work_beyond_the_budget_naming_the_option() {
     let o = run(&["winding", "--max-work", "1e9", "--point", "1 1", "0 0, 4 0 ; 4 0, 0 4 ; 0 4, 0 0"], None);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
+
+/// SVG fills close an open subpath by a line: `fill_path` of an open outline is the path of
+/// the explicitly closed one, and the fill rules read its winding numbers.
+#[test]
+fn winding_fill_path_closes_open_subpaths_and_fill_rules_decide_inside() {
+    use casteljau::format::svg_path::fill_path;
+    use casteljau::intersect::winding::{FillRule, PathWinding};
+    let open = fill_path("M0 0 L4 0 L4 4 L0 4 M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
+    let closed = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3 Z", NumberMode::Exact).unwrap();
+    assert_eq!(open, closed);
+    let at = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
+    let PathWinding::Off(hole) = open.winding(&at(2, 2)).unwrap() else { panic!("off the path") };
+    assert_eq!(hole.winding(), 2);
+    assert!(hole.inside(FillRule::NonZero) && !hole.inside(FillRule::EvenOdd));
+    let PathWinding::OnBoundary { on_boundary } = open.winding(&at(3, 2)).unwrap() else { panic!("on the path") };
+    assert_eq!((on_boundary.subpath, on_boundary.segment), (1, 1));
+    // an arc is no polynomial segment: refused with its reason, not approximated
+    assert!(fill_path("M0 0 A1 1 0 0 1 2 0", NumberMode::Exact).is_err());
+    assert_eq!("even-odd".parse::<FillRule>().unwrap(), FillRule::EvenOdd);
+}

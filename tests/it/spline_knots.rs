@@ -322,3 +322,48 @@ proptest! {
         prop_assert!(r.equals_surface && r.joins_proved, "{:?}", r);
     }
 }
+
+/// A spline whose numbers outgrow `i128` products: the fixed-width route of the check
+/// overflows and the BigRational route answers, with the same verdict and point count as a
+/// small spline of the same shape.
+#[test]
+fn spline_check_falls_back_to_big_rationals_on_overflow_with_the_same_verdict() {
+    let big = BigRational::from_integer(num_bigint::BigInt::from(1u8) << 100u32);
+    let pts: Vec<Point<BigRational>> =
+        [(0, 0), (1, 3), (2, -1), (4, 2), (5, 0)].iter().map(|&(x, y)| h(rat(x), rat(y), rat(1))).collect();
+    let knots = [0, 0, 0, 0, 1, 2, 2, 2, 2].map(rat);
+    let scaled: Vec<Point<BigRational>> =
+        pts.iter().enumerate().map(|(i, p)| p.scale(&(big.clone() + rat(i as i64)))).collect();
+    let budget = casteljau::work::Budget::unlimited();
+    let small = RationalSpline::from_knots(3, pts, &knots).unwrap().check_within(&budget).unwrap();
+    let large = RationalSpline::from_knots(3, scaled, &knots).unwrap().check_within(&budget).unwrap();
+    assert!(small.passed && large.passed);
+    assert_eq!(small.boehm, Ok(14));
+    assert_eq!(large.boehm, small.boehm);
+    // a wrong segment is still caught by both routes
+    let sp =
+        RationalSpline::from_knots(3, (0..5).map(|i| h(big.clone() * rat(i), rat(i * i), rat(1))).collect(), &knots)
+            .unwrap();
+    let mut segs = sp.to_bezier_boehm().unwrap();
+    segs.swap(0, 1);
+    assert!(matches!(
+        casteljau::spline::check_segments(&sp, &segs),
+        Err(casteljau::spline::SegmentMismatch::NotTheNurbs { segment: 0, .. })
+    ));
+}
+
+/// Scale ratios are knot intervals: `from_ratios` is `from_knots` on their partial sums, and
+/// `new` (affine points and weights) is `from_ratios` on the weighted points.
+#[test]
+fn spline_from_ratios_is_from_knots_on_the_partial_sums() {
+    let q: Vec<Point<BigRational>> = (0..5).map(|i| Point::new(vec![rat(i), rat(i * i % 3)])).collect();
+    let w = [1, 2, 1, 3, 1].map(rat);
+    let ratios = [1, 2, 1, 3, 1, 2, 1].map(rat);
+    let hom = casteljau::spline::homogeneous_control_points(&q, Some(&w)).unwrap();
+    let by_ratios = RationalSpline::from_ratios(3, hom.clone(), &ratios).unwrap();
+    let by_knots = RationalSpline::from_knots(3, hom, &[0, 1, 3, 4, 7, 8, 10, 11, 11].map(rat)).unwrap();
+    assert_eq!(by_ratios, by_knots);
+    assert_eq!(RationalSpline::new(3, &q, &w, &ratios).unwrap(), by_ratios);
+    let e = RationalSpline::new(3, &q, &w, &ratios[1..]).unwrap_err().to_string();
+    assert!(e.contains("need 7 scale ratios, got 6"), "{e}");
+}

@@ -230,3 +230,27 @@ proptest! {
         }
     }
 }
+
+/// `eval_checked` answers as the BigRational routes, on small numbers (fixed-width route) and
+/// on numbers whose products overflow `i128` (BigRational fallback).
+#[test]
+fn surface_eval_checked_agrees_with_every_route_small_and_large() {
+    use casteljau::surface::RationalPatch;
+    let big = num_rational::BigRational::from_integer(num_bigint::BigInt::from(3u8).pow(90));
+    for scale in [casteljau::rat(1), big] {
+        let p = |x: i64, y: i64, z: i64| {
+            casteljau::Point::new(vec![casteljau::rat(x) * &scale, casteljau::rat(y), casteljau::rat(z)])
+        };
+        let rows = vec![vec![p(0, 0, 1), p(1, 2, 0), p(2, 0, 3)], vec![p(0, 3, 2), p(2, 2, 2), p(3, 3, 1)]];
+        let w = vec![
+            vec![casteljau::rat(1), casteljau::rat(2), casteljau::rat(1)],
+            vec![casteljau::rat(3), casteljau::rat(1), casteljau::rat(2)],
+        ];
+        let patch = RationalPatch::new(rows, w).unwrap();
+        let (u, v) = (casteljau::ratio(2, 7), casteljau::ratio(5, 9));
+        let c = patch.eval_checked(&u, &v).unwrap();
+        assert_eq!(c.point, patch.eval(&u, &v).unwrap());
+        assert_eq!(c.point, patch.eval_u_then_v(&u, &v).unwrap());
+        assert!(c.de_casteljau_u_then_v_and_v_then_u_agree);
+    }
+}

@@ -1,7 +1,7 @@
 //! The text of each command's answer, rendered from the library's typed result; the JSON is
 //! that result's `Serialize` (the types are the schema), so text and JSON cannot drift apart.
 
-use crate::render::{Answer, Json, typed_json};
+use crate::render::{Answer, Json};
 use casteljau::classify::Parameter;
 use casteljau::classify::rational_cubic::RationalClassification;
 use casteljau::classify::report::{Classified, ClassifyReport};
@@ -16,7 +16,8 @@ use casteljau::rational::extrema::BoundingBox;
 use casteljau::rational::implicit::ImplicitOutcome;
 use casteljau::rational::rational_bezier::RationalBezier;
 use casteljau::surface::RationalPatch;
-use casteljau::surface::exact::{Contour, PatchPoint, PatchSplit};
+use casteljau::surface::PatchValue;
+use casteljau::surface::exact::{Contour, PatchSplit};
 use num_rational::BigRational;
 use serde_json::Value;
 
@@ -163,11 +164,6 @@ pub(crate) fn classified_rational(k: &RationalClassification) -> Answer {
     Answer::typed(text, k)
 }
 
-/// The JSON of a rational curve (its `Serialize`).
-pub(crate) fn weighted_json(c: &RationalBezier<BigRational>) -> Value {
-    typed_json(c)
-}
-
 /// `x y (w w_i)` per control point, `direction x y at infinity (w 0)` for weight 0.
 pub(crate) fn weighted_text(c: &RationalBezier<BigRational>) -> String {
     c.homogeneous()
@@ -278,7 +274,7 @@ fn patch_text(p: &RationalPatch) -> String {
 }
 
 /// `surface eval`.
-pub(crate) fn surface_point(s: &PatchPoint) -> Answer {
+pub(crate) fn surface_point(s: &PatchValue) -> Answer {
     Answer::typed(format!("S({}, {}) = {}", s.u, s.v, s.point), s)
 }
 

@@ -580,6 +580,10 @@ pub struct ScanArgs {
     /// No summary and no progress on stderr.
     #[arg(long, short)]
     pub quiet: bool,
+    /// Accepted and ignored: scan always writes JSON Lines (the flag every other JSON-writing
+    /// command takes, so scripts may pass it to all of them).
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `casteljau check`.

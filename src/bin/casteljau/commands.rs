@@ -26,9 +26,10 @@ pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
     match op {
         SurfaceOp::Eval { u, v, patch } => {
             let uv = option_number("--u", &u).and_then(|u| Ok((u, option_number("--v", &v)?)));
+            let budget = patch.curve.budget();
             run_patch(patch, out, &|p| {
                 let (u, v) = uv.clone()?;
-                p.eval_checked(&u, &v).map(|s| answers::surface_point(&s))
+                p.eval_checked_within(&u, &v, &budget).map(|s| answers::surface_point(&s))
             })
         }
         SurfaceOp::Subdivide { u, v, patch } => {

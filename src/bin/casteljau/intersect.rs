@@ -5,6 +5,8 @@
 use crate::args::IntersectArgs;
 use crate::batch::{Answer, Json, batch_lines, numbers_in};
 use casteljau::error::{Error, Result};
+use casteljau::format::svg_path;
+use casteljau::intersect::winding::{ClosedPath, FillRule, PathWinding};
 use casteljau::intersect::{Domain, Intersections, intersect, intersect_within, self_intersect, self_intersect_within};
 use casteljau::num::parse::{NumberMode, parse_points_in};
 use casteljau::num::scalar::rat;
@@ -19,16 +21,8 @@ fn curve(
     weights: &Option<Vec<BigRational>>,
 ) -> Result<RationalBezier<BigRational>> {
     let pts = parse_points_in(text, 2, line, mode)?;
-    let w = match weights {
-        Some(w) if w.len() != pts.len() => {
-            return Err(Error::InvalidArgument {
-                message: format!("{} weights for {} control points", w.len(), pts.len()),
-            });
-        }
-        Some(w) => w.clone(),
-        None => vec![rat(1); pts.len()],
-    };
-    RationalBezier::new(pts, w)
+    let n = pts.len();
+    RationalBezier::new(pts, weights.clone().unwrap_or_else(|| vec![rat(1); n]))
 }
 
 fn text(r: &Intersections) -> String {
@@ -116,13 +110,11 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
 }
 
 /// `casteljau winding --point "x y" PATH`: the winding number of a closed path (segments
-/// separated by `;`, or SVG path data with `--svg`, every subpath closed as SVG fills it) around
-/// the point, or where the point lies on the path. JSON: `winding` (absent on the boundary),
-/// `inside` (non-zero rule), `even_odd`, `on_boundary` (`{"subpath", "segment", "t"}` or
-/// absent).
+/// separated by `;`, or SVG path data with `--svg`, every subpath closed as SVG fills it,
+/// [`svg_path::fill_path`]) around the point, or where the point lies on the path. JSON: the
+/// fields of [`PathWinding`]: `winding` (absent on the boundary), `inside` (non-zero rule),
+/// `even_odd`, `on_boundary` (`{"subpath", "segment", "t", "t_float"}` or absent).
 pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 {
-    use casteljau::format::{Segment, svg_path};
-    use casteljau::intersect::winding::{Winding, winding_estimate, winding_number_rational};
     let mode: NumberMode = args.batch.numbers.into();
     let q = match parse_points_in(&args.point, 2, None, mode) {
         Ok(p) if p.len() == 1 => p.into_iter().next().expect("one point"),
@@ -139,70 +131,32 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
     let budget = casteljau::work::Budget::new(args.max_work, "--max-work");
     let curve_args = args.batch.curve_args(args.path.clone());
     batch_lines(&curve_args, out, |line, text_line| {
-        let subpaths: Vec<Vec<casteljau::BezierCurve<BigRational>>> = if svg {
-            let contours = svg_path::parse_path(text_line, mode)?;
-            contours
-                .into_iter()
-                .map(|c| {
-                    let mut segs = vec![];
-                    for s in c.segments {
-                        match s {
-                            Segment::Bezier(ps) => segs.push(casteljau::BezierCurve::new(ps)?),
-                            Segment::Skipped { reason, .. } => return Err(Error::InvalidArgument { message: reason }),
-                        }
-                    }
-                    // SVG fills close every subpath with a line
-                    if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
-                        let (a, b) = (last.points()[last.points().len() - 1].clone(), first.points()[0].clone());
-                        if a != b {
-                            segs.push(casteljau::BezierCurve::new(vec![a, b])?);
-                        }
-                    }
-                    Ok(segs)
-                })
-                .filter(|s| !matches!(s, Ok(v) if v.is_empty()))
-                .collect::<Result<_>>()?
+        let path = if svg {
+            svg_path::fill_path(text_line, mode)?
         } else {
-            vec![
-                text_line
-                    .split(';')
-                    .map(|s| parse_points_in(s, 2, line, mode).and_then(casteljau::BezierCurve::new))
-                    .collect::<Result<_>>()?,
-            ]
+            let contour = text_line
+                .split(';')
+                .map(|s| parse_points_in(s, 2, line, mode).and_then(casteljau::BezierCurve::new))
+                .collect::<Result<_>>()?;
+            ClosedPath::from_polynomial(vec![contour])?
         };
-        let unit = |c: &casteljau::BezierCurve<BigRational>| {
-            casteljau::RationalBezier::new(
-                c.points().to_vec(),
-                vec![BigRational::from_integer(1.into()); c.points().len()],
-            )
-        };
-        let subpaths: Vec<Vec<casteljau::RationalBezier<BigRational>>> =
-            subpaths.iter().map(|sp| sp.iter().map(unit).collect()).collect::<Result<_>>()?;
-        let segments: usize = subpaths.iter().map(Vec::len).sum();
-        budget.check(
-            format!("the winding number of a path of {segments} segments"),
-            subpaths.iter().map(|sp| winding_estimate(sp, &q)).sum(),
-        )?;
-        let mut total = 0i64;
-        for (k, sp) in subpaths.iter().enumerate() {
-            match winding_number_rational(sp, &q)? {
-                Winding::Inside(w) => total += w,
-                Winding::OnBoundary { segment, t } => {
-                    let text = format!("on the path: subpath {k}, segment {segment}, t = {t}");
-                    let json = serde_json::json!({"on_boundary": {"subpath": k, "segment": segment, "t": t.to_string(), "t_float": t.to_f64()}});
-                    return Ok(Answer::from((text, json)));
-                }
+        let r = path.winding_within(&q, &budget)?;
+        let text = match &r {
+            PathWinding::OnBoundary { on_boundary: b } => {
+                format!("on the path: subpath {}, segment {}, t = {}", b.subpath, b.segment, b.t)
             }
-        }
-        let text = format!(
-            "winding number {total}: {} (non-zero rule), {} (even-odd rule)",
-            if total != 0 { "inside" } else { "outside" },
-            if total % 2 != 0 { "inside" } else { "outside" }
-        );
-        Ok(Answer::from((
-            text,
-            serde_json::json!({"winding": total, "inside": total != 0, "even_odd": total % 2 != 0}),
-        )))
+            PathWinding::Off(w) => {
+                let word = |rule| if w.inside(rule) { "inside" } else { "outside" };
+                format!(
+                    "winding number {}: {} (non-zero rule), {} (even-odd rule)",
+                    w.winding(),
+                    word(FillRule::NonZero),
+                    word(FillRule::EvenOdd)
+                )
+            }
+        };
+        let json = Json::Value(serde_json::to_value(&r).expect("exact strings and finite floats serialize"));
+        Ok(Answer { text, json, failed: false })
     })
 }
 

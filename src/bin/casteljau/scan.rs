@@ -1,6 +1,7 @@
 //! `casteljau scan FILE...`: every segment of every outline in fonts (`.ttf`, `.otf`, `.ttc`,
 //! `.otc`), SVG files (`.svg`), bare SVG path data (`--path`) and text batches (any other file:
-//! one curve per line), one JSON line per segment with its provenance, exact control points,
+//! one curve per line), one JSON line per segment (always JSON Lines: `--json` is accepted and
+//! changes nothing) with its provenance, exact control points,
 //! classification and flags, in file order; a summary per file on stderr.
 //!
 //! JSON fields (stable; more may be added): `file`; fonts: `face` (collections only), `glyph`
@@ -8,66 +9,19 @@
 //! index among shape elements), `tag`, `subpath`; text batches: `line`; then `index` (the
 //! segment's place in its contour/subpath/line), the fields of `classify --json` (`degree`,
 //! `class`, `segment`, exact parameters, …), `points` (exact strings) and `flags` (see
-//! `casteljau::classify::segment_flags`). A piece that is no polynomial Bézier curve (an SVG
+//! `casteljau::classify::SegmentFlag`); the records are `casteljau::format::scan::ScanRecord`s. A piece that is no polynomial Bézier curve (an SVG
 //! arc) has `skipped` (the reason), `from` and `to` instead; an element or glyph that cannot be
 //! read has `error`.
 
 use crate::args::ScanArgs;
-use casteljau::classify::{Classification, classify, segment_flags};
+use casteljau::classify::{Classification, SegmentFlag, classify, segment_flags};
 use casteljau::curve::bezier::BezierCurve;
+use casteljau::format::scan::{Element, ScanRecord, Source as Provenance};
 use casteljau::format::{Contour, Segment, font, svg, svg_path};
 use casteljau::num::parse::{NumberMode, parse_points_in};
-use casteljau::num::point::Point;
-use num_rational::BigRational;
 use rayon::prelude::*;
-use serde::Serialize;
 use std::collections::BTreeMap;
 use std::io::{IsTerminal, Write};
-
-/// Where a segment comes from.
-#[derive(Serialize, Default, Clone)]
-struct Provenance<'a> {
-    file: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    face: Option<u32>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    glyph: Option<Option<String>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    glyph_id: Option<u32>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    contour: Option<usize>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    element: Option<serde_json::Value>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tag: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    subpath: Option<usize>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    line: Option<usize>,
-}
-
-/// One JSON line of `scan`.
-#[derive(Serialize)]
-struct Record<'a> {
-    #[serde(flatten)]
-    at: &'a Provenance<'a>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    index: Option<usize>,
-    #[serde(flatten, skip_serializing_if = "Option::is_none")]
-    classification: Option<&'a Classification>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    points: Option<&'a [Point<BigRational>]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    flags: Option<Vec<&'static str>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    skipped: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    from: Option<&'a Point<BigRational>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    to: Option<&'a Point<BigRational>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    error: Option<String>,
-}
 
 /// Counts for the summary.
 #[derive(Default)]
@@ -121,15 +75,15 @@ struct Scanner {
 }
 
 impl Scanner {
-    fn keep(&self, k: Option<&Classification>, flags: &[&str], skipped: bool, error: bool) -> bool {
+    fn keep(&self, k: Option<&Classification>, flags: &[SegmentFlag], skipped: bool, error: bool) -> bool {
         let Some(only) = &self.only else { return true };
         only.iter().any(|o| match o.as_str() {
             "cusp" => k.is_some_and(|k| k.segment.has_cusp),
             "loop" => k.is_some_and(|k| k.segment.has_loop),
             "inflection" => k.is_some_and(|k| k.segment.inflections > 0),
-            "degenerate" => flags.contains(&"degenerate"),
-            "zero_length_handle" => flags.contains(&"zero_length_handle"),
-            "endpoint" => flags.iter().any(|f| f.ends_with("_at_endpoint")),
+            "degenerate" => flags.contains(&SegmentFlag::Degenerate),
+            "zero_length_handle" => flags.contains(&SegmentFlag::ZeroLengthHandle),
+            "endpoint" => flags.iter().any(|f| f.at_endpoint()),
             "skipped" => skipped,
             "error" => error,
             _ => false,
@@ -162,23 +116,13 @@ impl Scanner {
                         let flags = segment_flags(ps, &k);
                         *out.tally.by_category.entry(k.segment.category.as_str()).or_default() += 1;
                         for f in &flags {
-                            *out.tally.by_flag.entry(f).or_default() += 1;
+                            *out.tally.by_flag.entry(f.as_str()).or_default() += 1;
                         }
                         loop_or_cusp |= k.segment.has_loop || k.segment.has_cusp;
                         if !self.keep(Some(&k), &flags, false, false) {
                             continue;
                         }
-                        let r = Record {
-                            at: &at,
-                            index: Some(index),
-                            classification: Some(&k),
-                            points: Some(ps),
-                            flags: Some(flags),
-                            skipped: None,
-                            from: None,
-                            to: None,
-                            error: None,
-                        };
+                        let r = ScanRecord::Segment { at: &at, index, classification: &k, points: ps, flags };
                         write_record(&mut out.lines, &r);
                     }
                     Segment::Skipped { from, to, reason } => {
@@ -186,16 +130,12 @@ impl Scanner {
                         if !self.keep(None, &[], true, false) {
                             continue;
                         }
-                        let r = Record {
+                        let r = ScanRecord::Skipped {
                             at: &at,
                             index: Some(index),
-                            classification: None,
-                            points: None,
-                            flags: None,
-                            skipped: Some(reason),
+                            skipped: reason,
                             from: Some(from),
                             to: Some(to),
-                            error: None,
                         };
                         write_record(&mut out.lines, &r);
                     }
@@ -209,17 +149,7 @@ impl Scanner {
     fn error_line(&self, out: &mut Rendered, at: &Provenance<'_>, index: Option<usize>, error: String) {
         out.tally.errors += 1;
         if self.keep(None, &[], false, true) {
-            let r = Record {
-                at,
-                index,
-                classification: None,
-                points: None,
-                flags: None,
-                skipped: None,
-                from: None,
-                to: None,
-                error: Some(error),
-            };
+            let r = ScanRecord::Error { at, index, error };
             write_record(&mut out.lines, &r);
         }
     }
@@ -231,7 +161,7 @@ impl Scanner {
     }
 }
 
-fn write_record(buf: &mut Vec<u8>, r: &Record<'_>) {
+fn write_record(buf: &mut Vec<u8>, r: &ScanRecord<'_>) {
     serde_json::to_writer(&mut *buf, r).expect("exact strings serialize");
     buf.push(b'\n');
 }
@@ -270,7 +200,7 @@ pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
     let mut code = 0;
     let mut write = |r: &Rendered| -> bool { out.write_all(&r.lines).is_ok() };
     if let Some(d) = &args.path {
-        let at = Provenance { file: "<path>", element: Some(0.into()), ..Default::default() };
+        let at = Provenance { element: Some(Element::Index(0)), ..Provenance::new("<path>") };
         let r = match svg_path::parse_path(d, sc.mode) {
             Ok(contours) => sc.render(&at, &contours, Unit::Element),
             Err(e) => sc.rendered_error(&at, e.to_string()),
@@ -379,8 +309,8 @@ fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<
                 .par_iter()
                 .map(|s| {
                     let element = match &s.id {
-                        Some(id) => serde_json::Value::String(id.clone()),
-                        None => s.index.into(),
+                        Some(id) => Element::Id(id.clone()),
+                        None => Element::Index(s.index),
                     };
                     let at =
                         Provenance { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
@@ -392,16 +322,12 @@ fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<
                             let mut r = Rendered { lines: vec![], tally: Tally::default() };
                             r.tally.skipped += 1;
                             if sc.keep(None, &[], true, false) {
-                                let rec = Record {
+                                let rec = ScanRecord::Skipped {
                                     at: &at,
                                     index: None,
-                                    classification: None,
-                                    points: None,
-                                    flags: None,
-                                    skipped: Some(&reason),
+                                    skipped: &reason,
                                     from: None,
                                     to: None,
-                                    error: None,
                                 };
                                 write_record(&mut r.lines, &rec);
                             }

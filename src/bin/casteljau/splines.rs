@@ -1,19 +1,18 @@
 //! The `spline` command: reading splines (a control polygon with `--knots`/`--ratios`, or one
 //! JSON object per line) and each operation's text and JSON.
 
-use crate::answers::{weighted_json, weighted_text};
+use crate::answers::weighted_text;
 use crate::args::{KnotArgs, SplineArgs, SplineOp};
-use crate::batch::{Answer, batch_lines, numbers, option_number, parse_weights};
+use crate::batch::{Answer, Json, batch_lines, numbers, option_number, parse_weights};
 use casteljau::error::{Error, Position, Result};
 use casteljau::num::parse::{parse_number, parse_points};
 use casteljau::num::point::Point;
-use casteljau::rat;
 use casteljau::spline::surface::NurbsSurface;
-use casteljau::spline::{Conversion, RationalSpline, check_segments};
+use casteljau::spline::{RationalSpline, homogeneous_control_points, joins_text};
+use casteljau::work::Budget;
 use num_rational::BigRational;
 use serde::Deserialize;
 use serde_json::value::RawValue;
-use serde_json::{Value, json};
 use std::io::Write;
 
 /// One spline of a JSON Lines batch. Numbers are JSON numbers or strings, read exactly.
@@ -48,7 +47,7 @@ fn exact_list(raw: &[&RawValue], what: &str, line: Option<usize>) -> Result<Vec<
     raw.iter().enumerate().map(|(i, r)| exact(r, what, i, line)).collect()
 }
 
-/// A spline from the knots or ratios, homogeneous points, and the degree.
+/// A spline from the knots or ratios (exactly one of them), homogeneous points, and the degree.
 fn build(
     degree: usize,
     hom: Vec<Point<BigRational>>,
@@ -57,57 +56,35 @@ fn build(
 ) -> Result<RationalSpline> {
     match (knots, ratios) {
         (Some(k), None) => RationalSpline::from_knots(degree, hom, &k),
-        (None, Some(r)) => {
-            if let Some(i) = r.iter().position(|x| *x <= rat(0)) {
-                return Err(Error::InvalidArgument {
-                    message: format!("scale ratio {} ({}) must be positive; repeated knots go in --knots", i + 1, r[i]),
-                });
-            }
-            // the knots are the partial sums from 0; the last knot (never used) repeats the one before
-            let mut k = vec![rat(0)];
-            for x in &r {
-                let next = k.last().expect("non-empty").clone() + x;
-                k.push(next);
-            }
-            k.push(k.last().expect("non-empty").clone());
-            if k.len() != hom.len() + degree + 1 {
-                return Err(Error::InvalidArgument {
-                    message: format!(
-                        "{} control points of degree {degree} need {} scale ratios, got {}",
-                        hom.len(),
-                        hom.len() + degree - 1,
-                        r.len()
-                    ),
-                });
-            }
-            RationalSpline::from_knots(degree, hom, &k)
-        }
+        (None, Some(r)) => RationalSpline::from_ratios(degree, hom, &r),
         (Some(_), Some(_)) => Err(Error::InvalidArgument { message: "give knots or ratios, not both".into() }),
         (None, None) => Err(Error::InvalidArgument { message: "a spline needs --knots or --ratios".into() }),
     }
 }
 
-/// Homogeneous points from affine points and weights (a weight 0 needs `--homogeneous`).
-fn homogeneous(points: Vec<Point<BigRational>>, weights: Option<Vec<BigRational>>) -> Result<Vec<Point<BigRational>>> {
-    let weights = weights.unwrap_or_else(|| vec![rat(1); points.len()]);
-    if weights.len() != points.len() {
-        return Err(Error::InvalidArgument {
-            message: format!("{} weights for {} control points", weights.len(), points.len()),
-        });
+/// The options of a batch of control polygons, read once (each line reports their errors, in
+/// the order a line needs them).
+struct Given<'a> {
+    args: &'a SplineArgs,
+    weights: Result<Option<Vec<BigRational>>>,
+    knots: Result<Option<Vec<BigRational>>>,
+    ratios: Result<Option<Vec<BigRational>>>,
+}
+
+impl<'a> Given<'a> {
+    fn new(args: &'a SplineArgs) -> Self {
+        Given {
+            args,
+            weights: parse_weights(&args.rational),
+            knots: args.knots.as_deref().map(|k| numbers("--knots", k)).transpose(),
+            ratios: args.ratios.as_deref().map(|r| numbers("--ratios", r)).transpose(),
+        }
     }
-    if let Some(i) = weights.iter().position(|w| *w == rat(0)) {
-        return Err(Error::InvalidArgument {
-            message: format!(
-                "weight {} is 0: a control point at infinity is given in homogeneous form (--homogeneous)",
-                i + 1
-            ),
-        });
-    }
-    Ok(points.iter().zip(&weights).map(|(p, w)| p.to_homogeneous(w)).collect())
 }
 
 /// The spline of one input line: a JSON object, or a control polygon with the options.
-fn spline_of(args: &SplineArgs, line: Option<usize>, text: &str) -> Result<RationalSpline> {
+fn spline_of(given: &Given<'_>, line: Option<usize>, text: &str) -> Result<RationalSpline> {
+    let args = given.args;
     if text.trim_start().starts_with('{') {
         let s: SplineLine =
             serde_json::from_str(text).map_err(|e| Error::InvalidArgument { message: format!("JSON spline: {e}") })?;
@@ -126,30 +103,24 @@ fn spline_of(args: &SplineArgs, line: Option<usize>, text: &str) -> Result<Ratio
             }
             points
         } else {
-            homogeneous(points, weights)?
+            homogeneous_control_points(&points, weights.as_deref())?
         };
         return build(s.degree, hom, knots, ratios);
     }
     let dim = args.curve.dim + usize::from(args.rational.homogeneous);
     let points = parse_points(text, dim, line)?;
-    let hom = if args.rational.homogeneous { points } else { homogeneous(points, parse_weights(&args.rational)?)? };
-    let knots = args.knots.as_deref().map(|k| numbers("--knots", k)).transpose()?;
-    let ratios = args.ratios.as_deref().map(|r| numbers("--ratios", r)).transpose()?;
-    build(args.degree, hom, knots, ratios)
+    let hom = if args.rational.homogeneous {
+        points
+    } else {
+        homogeneous_control_points(&points, given.weights.clone()?.as_deref())?
+    };
+    build(args.degree, hom, given.knots.clone()?, given.ratios.clone()?)
 }
 
-/// The spline in JSON: degree, knots (the full vector), homogeneous points, and the affine
-/// points and weights where finite.
-fn spline_json(sp: &RationalSpline) -> Value {
-    let knots: Vec<String> = sp.full_knot_vector().iter().map(|k| k.to_string()).collect();
-    let d = sp.homogeneous[0].dim() - 1;
-    json!({
-        "degree": sp.degree,
-        "knots": knots,
-        "homogeneous": sp.homogeneous.iter().map(|h| h.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        "points": sp.homogeneous.iter().map(|h| h.from_homogeneous().map(|p| p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>())).collect::<Vec<_>>(),
-        "weights": sp.homogeneous.iter().map(|h| h.coords[d].to_string()).collect::<Vec<_>>(),
-    })
+/// The typed result as the answer's JSON (through a `Value`, whose keys print in sorted order,
+/// as the fields are declared).
+fn json_of(value: &impl serde::Serialize) -> Json {
+    Json::Value(serde_json::to_value(value).expect("exact strings serialize"))
 }
 
 fn spline_text(sp: &RationalSpline) -> String {
@@ -160,175 +131,81 @@ fn spline_text(sp: &RationalSpline) -> String {
     format!("degree {}, knots {}: {pts}", sp.degree, knots.join(" "))
 }
 
-fn joins_text(joins: &[casteljau::spline::knots::Join]) -> String {
-    joins
-        .iter()
-        .map(|j| {
-            let c = if j.continuity < 0 { "no continuity (a jump)".to_string() } else { format!("C^{}", j.continuity) };
-            format!(
-                "u = {} (multiplicity {}): {c}, {}",
-                j.knot,
-                j.multiplicity,
-                if j.proved { "proved" } else { "NOT proved" }
-            )
-        })
-        .collect::<Vec<_>>()
-        .join("; ")
-}
-
 fn to_bezier(sp: &RationalSpline, method: &str) -> Result<Answer> {
-    let how: Conversion = method.parse()?;
-    let segs = sp.to_bezier(how)?;
-    let joins = sp.joins(&segs);
-    let mut lines: Vec<String> = segs
-        .iter()
-        .enumerate()
-        .map(|(s, c)| {
-            let (a, b) = sp.span(s);
-            format!("[{a}, {b}]: {}", weighted_text(c))
-        })
-        .collect();
-    if !joins.is_empty() {
-        lines.push(format!("joins: {}", joins_text(&joins)));
+    let r = sp.bezier_conversion_within(method.parse()?, &Budget::unlimited())?;
+    let mut lines: Vec<String> =
+        r.segments.iter().map(|s| format!("[{}, {}]: {}", s.span.0, s.span.1, weighted_text(&s.curve))).collect();
+    if !r.joins.is_empty() {
+        lines.push(format!("joins: {}", joins_text(&r.joins)));
     }
-    let js: Vec<Value> = segs
-        .iter()
-        .enumerate()
-        .map(|(s, c)| {
-            let (a, b) = sp.span(s);
-            let mut v = weighted_json(c);
-            v["span"] = json!([a.to_string(), b.to_string()]);
-            v
-        })
-        .collect();
-    let failed = joins.iter().any(|j| !j.proved);
-    Ok(Answer {
-        text: lines.join("\n"),
-        json: crate::batch::Json::Value(json!({"degree": sp.degree, "method": method, "segments": js, "joins": joins})),
-        failed,
-    })
+    Ok(Answer { text: lines.join("\n"), json: json_of(&r), failed: !r.proved() })
 }
 
 fn check(sp: &RationalSpline) -> Result<Answer> {
-    use casteljau::proof::Reading;
-    let boehm = sp.to_bezier_boehm()?;
-    let mut lines = Vec::new();
-    let mut failed = false;
-    let repeated = sp.has_repeated_knots();
-    let mut report = |name: &str, r: std::result::Result<usize, casteljau::spline::SegmentMismatch>| match r {
-        Ok(points) => lines.push(format!(
-            "{name}: every segment is the NURBS on its span ({points} exact points), joins {}",
-            if repeated {
-                "C^(n-mu) at each knot of multiplicity mu".to_string()
-            } else {
-                format!("C^{}", sp.degree - 1)
-            }
-        )),
-        Err(e) => {
-            failed = true;
-            lines.push(format!("{name}: FAILS: {e:?}"));
-        }
-    };
-    report("Boehm knot insertion", check_segments(sp, &boehm));
-    if matches!(sp.degree, 2 | 3) && !repeated {
-        let seed = sp.to_bezier(Conversion::Seed(Reading::Corrected))?;
-        report("seed formulas", check_segments(sp, &seed));
-        let same = seed.iter().zip(&boehm).all(|(a, b)| a.points() == b.points() && a.weights() == b.weights());
-        failed |= !same;
-        lines.push(format!("seed formulas = Boehm (points and weights): {same}"));
-    }
-    let joins = sp.joins(&boehm);
-    if !joins.is_empty() {
-        lines.push(format!("joins: {}", joins_text(&joins)));
-    }
-    failed |= joins.iter().any(|j| !j.proved);
-    Ok(Answer {
-        text: lines.join("\n"),
-        json: crate::batch::Json::Value(
-            json!({"degree": sp.degree, "segments": sp.segments(), "passed": !failed, "report": lines, "joins": joins}),
-        ),
-        failed,
-    })
+    let r = sp.check_within(&Budget::unlimited())?;
+    Ok(Answer { text: r.report.join("\n"), json: json_of(&r), failed: !r.passed })
 }
 
 fn eval(sp: &RationalSpline, us: &[BigRational]) -> Result<Answer> {
-    let values: Vec<Point<BigRational>> = us.iter().map(|u| sp.eval_at(u)).collect::<Result<_>>()?;
-    let text = us.iter().zip(&values).map(|(u, p)| format!("C({u}) = {p}")).collect::<Vec<_>>().join("\n");
-    let js: Vec<Value> = us
-        .iter()
-        .zip(&values)
-        .map(|(u, p)| json!({"u": u.to_string(), "point": p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()}))
-        .collect();
-    Ok(Answer { text, json: crate::batch::Json::Value(json!({"degree": sp.degree, "values": js})), failed: false })
+    let r = sp.eval_many_within(us, &Budget::unlimited())?;
+    let text = r.values.iter().map(|v| format!("C({}) = {}", v.u, v.point)).collect::<Vec<_>>().join("\n");
+    Ok(Answer { text, json: json_of(&r), failed: false })
 }
 
 fn insert(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> {
-    let mut out = sp.clone();
-    for _ in 0..times {
-        out = out.insert_knot(u)?;
-    }
-    Ok(Answer { text: spline_text(&out), json: crate::batch::Json::Value(spline_json(&out)), failed: false })
+    let out = sp.insert_knot_times(u, times)?;
+    Ok(Answer { text: spline_text(&out), json: json_of(&out), failed: false })
 }
 
 fn remove(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> {
-    let mut out = sp.clone();
-    for k in 0..times {
-        match out.remove_knot(u)? {
-            Some(less) => out = less,
-            None => {
-                let mut v = spline_json(&out);
-                v["removed"] = json!(k);
-                v["removable"] = json!(false);
-                return Ok(Answer {
-                    text: format!(
-                        "not removable: removing knot {u} {} would change the curve (removed {k} of {times}); {}",
-                        if k == 0 { "once" } else { "again" },
-                        spline_text(&out)
-                    ),
-                    json: crate::batch::Json::Value(v),
-                    failed: true,
-                });
-            }
-        }
-    }
-    let mut v = spline_json(&out);
-    v["removed"] = json!(times);
-    v["removable"] = json!(true);
-    Ok(Answer {
-        text: format!("removed {times}: the curve is unchanged; {}", spline_text(&out)),
-        json: crate::batch::Json::Value(v),
-        failed: false,
-    })
+    let r = sp.remove_knot_times(u, times)?;
+    let text = if r.removable {
+        format!("removed {times}: the curve is unchanged; {}", spline_text(&r.spline))
+    } else {
+        format!(
+            "not removable: removing knot {u} {} would change the curve (removed {} of {times}); {}",
+            if r.removed == 0 { "once" } else { "again" },
+            r.removed,
+            spline_text(&r.spline)
+        )
+    };
+    Ok(Answer { text, json: json_of(&r), failed: !r.removable })
 }
 
 fn elevate(sp: &RationalSpline) -> Result<Answer> {
     let up = sp.elevate_degree()?;
-    Ok(Answer { text: spline_text(&up), json: crate::batch::Json::Value(spline_json(&up)), failed: false })
+    Ok(Answer { text: spline_text(&up), json: json_of(&up), failed: false })
 }
 
 /// Runs `spline OP`.
 pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
     match op {
         SplineOp::ToBezier { method, spline } => {
-            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&spline, line, text)?, &method))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&given, line, text)?, &method))
         }
         SplineOp::Check { spline } => {
-            batch_lines(&spline.curve, out, |line, text| check(&spline_of(&spline, line, text)?))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| check(&spline_of(&given, line, text)?))
         }
         SplineOp::Eval { u, spline } => {
             let us: Result<Vec<BigRational>> = u.iter().map(|s| option_number("--u", s)).collect();
-            batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&spline, line, text)?, &us.clone()?))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&given, line, text)?, &us.clone()?))
         }
         SplineOp::Insert { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
-            batch_lines(&spline.curve, out, |line, text| insert(&spline_of(&spline, line, text)?, &u.clone()?, times))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| insert(&spline_of(&given, line, text)?, &u.clone()?, times))
         }
         SplineOp::Remove { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
-            batch_lines(&spline.curve, out, |line, text| remove(&spline_of(&spline, line, text)?, &u.clone()?, times))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| remove(&spline_of(&given, line, text)?, &u.clone()?, times))
         }
         SplineOp::Elevate { spline } => {
-            batch_lines(&spline.curve, out, |line, text| elevate(&spline_of(&spline, line, text)?))
+            let given = Given::new(&spline);
+            batch_lines(&spline.curve, out, |line, text| elevate(&spline_of(&given, line, text)?))
         }
         SplineOp::Surface { degree, knots_u, knots_v, rational, mut curve } => {
             if curve.dim == 2 {
@@ -357,7 +234,11 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
                         ),
                     });
                 }
-                let hom = if rational.homogeneous { points } else { homogeneous(points, parse_weights(&rational)?)? };
+                let hom = if rational.homogeneous {
+                    points
+                } else {
+                    homogeneous_control_points(&points, parse_weights(&rational)?.as_deref())?
+                };
                 let rows: Vec<Vec<Point<BigRational>>> = hom.chunks(cols).map(<[_]>::to_vec).collect();
                 surface(&NurbsSurface::from_knots((p, q), rows, &ku, &kv)?)
             })
@@ -366,37 +247,31 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
 }
 
 fn surface(s: &NurbsSurface) -> Result<Answer> {
-    let patches = s.bezier_patches()?;
-    let report = s.check()?;
-    let mut lines = Vec::new();
-    let mut js = Vec::new();
-    for piece in patches.iter().flatten() {
-        let h = piece.patch.homogeneous();
-        lines.push(format!(
-            "[{}, {}] × [{}, {}]: {}",
-            piece.span_u.0,
-            piece.span_u.1,
-            piece.span_v.0,
-            piece.span_v.1,
-            h.iter()
-                .map(|r| r.iter().map(|p| p.to_string()).collect::<Vec<_>>().join(" "))
-                .collect::<Vec<_>>()
-                .join(" ; ")
-        ));
-        js.push(json!({
-            "span_u": [piece.span_u.0.to_string(), piece.span_u.1.to_string()],
-            "span_v": [piece.span_v.0.to_string(), piece.span_v.1.to_string()],
-            "homogeneous": h.iter().map(|r| r.iter().map(|p| p.coords.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        }));
-    }
+    let r = s.extraction_within(&Budget::unlimited())?;
+    let mut lines: Vec<String> = r
+        .patches
+        .iter()
+        .map(|piece| {
+            format!(
+                "[{}, {}] × [{}, {}]: {}",
+                piece.span_u.0,
+                piece.span_u.1,
+                piece.span_v.0,
+                piece.span_v.1,
+                piece
+                    .patch
+                    .homogeneous()
+                    .iter()
+                    .map(|r| r.iter().map(|p| p.to_string()).collect::<Vec<_>>().join(" "))
+                    .collect::<Vec<_>>()
+                    .join(" ; ")
+            )
+        })
+        .collect();
     lines.push(format!(
         "{} patches; equal to the surface: {}; joins with each knot's continuity: {}",
-        report.patches, report.equals_surface, report.joins_proved
+        r.check.patches, r.check.equals_surface, r.check.joins_proved
     ));
-    let failed = !(report.equals_surface && report.joins_proved);
-    Ok(Answer {
-        text: lines.join("\n"),
-        json: crate::batch::Json::Value(json!({"degree": [s.degree.0, s.degree.1], "patches": js, "check": report})),
-        failed,
-    })
+    let failed = !(r.check.equals_surface && r.check.joins_proved);
+    Ok(Answer { text: lines.join("\n"), json: json_of(&r), failed })
 }
