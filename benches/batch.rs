@@ -9,10 +9,11 @@
 //! `cargo bench --bench batch` (`-- spline_check` for that group only).
 
 use casteljau::BezierCurve;
-use casteljau::classify::integer::{classify_json, classify_json_small};
 use casteljau::classify::{classify, classify_in};
-use casteljau::num::parse::{NumberMode, integer_cubic, parse_points, parse_points_small, small_cubic};
-use casteljau::num::small::checked;
+use casteljau::internal::{classify_json, classify_json_small};
+use casteljau::internal::{integer_cubic, parse_points_small, small_cubic};
+use casteljau::num::checked;
+use casteljau::num::{NumberMode, parse_points};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::path::PathBuf;

@@ -4,10 +4,10 @@
 //! `classify` (fixed-width route, answer converted to `BigRational`) and the full classification in
 //! `BigRational` throughout, in one run. `cargo bench --bench classify`.
 
-use casteljau::classify::certified::{decide, summarize_integers};
 use casteljau::classify::{classify, classify_in};
+use casteljau::internal::{decide, summarize_integers};
 use casteljau::num::Radical;
-use casteljau::num::small::{SmallRational, checked};
+use casteljau::num::{SmallRational, checked};
 use casteljau::{BezierCurve, Point, rat};
 use casteljau::{Exact, Scalar};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -64,12 +64,7 @@ fn classify_batch(c: &mut Criterion) {
         b.iter(|| curves.iter().map(|p| summarize_integers(black_box(p)).0).collect::<Vec<_>>())
     });
     g.bench_function("certified_f64_filter", |b| {
-        b.iter(|| {
-            floats
-                .iter()
-                .map(|p| casteljau::classify::certified::filter_f64(black_box(p)).map(|s| s.0))
-                .collect::<Vec<_>>()
-        })
+        b.iter(|| floats.iter().map(|p| casteljau::internal::filter_f64(black_box(p)).map(|s| s.0)).collect::<Vec<_>>())
     });
     let small: Vec<BezierCurve<SmallRational>> = curves
         .iter()

@@ -9,7 +9,7 @@
 
 use casteljau::BezierCurve;
 use casteljau::intersect::{Domain, intersect_polynomial};
-use casteljau::num::point::Point;
+use casteljau::num::Point;
 use casteljau::strategies::{binary64, intersections as hard};
 use criterion::{Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;

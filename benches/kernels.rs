@@ -2,7 +2,8 @@
 //!
 //! `cargo bench --bench kernels`; README's table is read from this run's output.
 
-use casteljau::{BezierCurve, Point, Scalar, curve::fraction_free, ratio};
+use casteljau::internal::{eval_de_casteljau, subdivide_de_casteljau};
+use casteljau::{BezierCurve, Point, Scalar, ratio};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
 use std::hint::black_box;
@@ -29,13 +30,13 @@ fn eval(c: &mut Criterion) {
             let label = format!("n={n},t={tn}/{td}");
             g.bench_with_input(BenchmarkId::new("f64", &label), &(), |b, _| b.iter(|| float.eval(black_box(&tf))));
             g.bench_with_input(BenchmarkId::new("fraction_free", &label), &(), |b, _| {
-                b.iter(|| fraction_free::eval(black_box(&exact), black_box(&t)))
+                b.iter(|| black_box(&exact).eval(black_box(&t)))
             });
             if n == 100 && tn != 1 {
                 g.sample_size(10);
             }
             g.bench_with_input(BenchmarkId::new("naive_bigrational", &label), &(), |b, _| {
-                b.iter(|| exact.eval(black_box(&t)))
+                b.iter(|| eval_de_casteljau(black_box(&exact), black_box(&t)))
             });
             g.sample_size(100);
         }
@@ -51,10 +52,10 @@ fn subdivide(c: &mut Criterion) {
         let exact = curve(n);
         let t = ratio(12345, 67891);
         g.bench_with_input(BenchmarkId::new("fraction_free", n), &(), |b, _| {
-            b.iter(|| fraction_free::subdivide(black_box(&exact), black_box(&t)))
+            b.iter(|| black_box(&exact).subdivide(black_box(&t)))
         });
         g.bench_with_input(BenchmarkId::new("naive_bigrational", n), &(), |b, _| {
-            b.iter(|| casteljau::curve::casteljau::subdivide(black_box(&exact), black_box(&t)))
+            b.iter(|| subdivide_de_casteljau(black_box(&exact), black_box(&t)))
         });
     }
     g.finish();

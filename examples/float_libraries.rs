@@ -13,8 +13,8 @@
 //! flo_curves' loop-search accuracy `1e-9`. Cases come from a fixed proptest seed.
 
 use casteljau::classify::oracle::{Disagreement, FloatAnswers, Tolerances, check_f64};
+use casteljau::format::Font;
 use casteljau::format::Segment;
-use casteljau::format::font::Font;
 use casteljau::strategies::binary64;
 use num_rational::BigRational;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};

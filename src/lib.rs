@@ -40,6 +40,8 @@ pub mod classify;
 pub mod curve;
 pub mod error;
 pub mod format;
+#[doc(hidden)]
+pub mod internal;
 pub mod intersect;
 pub mod num;
 pub mod oracle;
@@ -53,7 +55,15 @@ pub mod strategies;
 pub mod surface;
 pub mod work;
 
-pub use curve::BezierCurve;
+pub use classify::{Classification, NodeType, SegmentFlag, classify};
+pub use curve::{BezierCurve, DeCasteljauTriangle};
 pub use error::{Error, Position, Result};
-pub use num::{Exact, Point, QuadraticExt, Rational, Scalar, rat, ratio};
-pub use rational::RationalBezier;
+pub use intersect::{
+    ClosedPath, Domain, FillRule, Intersection, Intersections, Overlap, intersect, self_intersect, winding_number,
+};
+pub use num::{Exact, Point, QuadraticExt, Rational, Scalar, parse_points, rat, ratio};
+pub use poly::RealAlgebraic;
+pub use rational::{BoundingBox, RationalBezier, bounding_box};
+pub use spline::RationalSpline;
+pub use surface::RationalPatch;
+pub use work::Budget;

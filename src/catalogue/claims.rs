@@ -41,7 +41,7 @@ use serde::Deserialize;
 ///
 /// # Example
 /// ```
-/// use casteljau::catalogue::claims::ClaimContent;
+/// use casteljau::catalogue::ClaimContent;
 /// let c: ClaimContent = toml::from_str(r#"
 ///     kind = "identity"
 ///     vars = ["t"]
@@ -75,14 +75,14 @@ pub enum ClaimContent {
     /// A table of Bernstein values.
     BasisTable(polynomial::BasisTable),
     /// A cubic's classification.
-    Classification(cubic::Classification),
+    Classification(cubic::ClassificationClaim),
     /// Seed 004 (3)–(8).
     MovingLines(cubic::MovingLinesClaim),
     /// Seed 004 (2).
     #[serde(rename = "moving-line-2")]
     MovingLine2(cubic::MovingLine2),
     /// A canonical map.
-    CanonicalMap(cubic::CanonicalMap),
+    CanonicalMap(cubic::CanonicalMapClaim),
     /// An implicit equation of a rational curve.
     Implicit(rational::Implicit),
     /// The three evaluations of a rational curve.

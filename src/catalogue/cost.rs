@@ -63,7 +63,7 @@ impl ClaimContent {
     ///
     /// # Example
     /// ```
-    /// use casteljau::catalogue::claims::ClaimContent;
+    /// use casteljau::catalogue::ClaimContent;
     /// let deep: ClaimContent = toml::from_str(r#"
     ///     kind = "repeated-subdivision"
     ///     curve = "0 0, 1 3, 2 -1, 3 4, 4 0, 5 2, 6 -3, 7 1, 8 5, 9 -2, 10 0"
@@ -121,10 +121,10 @@ impl ClaimContent {
                 let nf = n as f64 + 1.0;
                 ts.len() as f64 * nf * nf * 18.0 * limbs((n as u64).saturating_mul(tau).saturating_add(n as u64))
             }
-            ClaimContent::Classification(cubic::Classification { curve, .. })
+            ClaimContent::Classification(cubic::ClassificationClaim { curve, .. })
             | ClaimContent::MovingLines(cubic::MovingLinesClaim { curve, .. })
             | ClaimContent::MovingLine2(cubic::MovingLine2 { curve, .. })
-            | ClaimContent::CanonicalMap(cubic::CanonicalMap { curve, .. }) => {
+            | ClaimContent::CanonicalMap(cubic::CanonicalMapClaim { curve, .. }) => {
                 // a cubic: power form, discriminants and quadratic roots of its coefficients,
                 // a 4×4 grid of cross products
                 let (n, dim, beta) = sizes(&curve_from(curve)?);

@@ -15,7 +15,7 @@ use serde::Deserialize;
 /// `classification`: the exact classification against the given expectations (each optional).
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Classification {
+pub struct ClassificationClaim {
     /// Control points.
     pub curve: String,
     /// Expected class name.
@@ -58,7 +58,7 @@ pub struct MovingLine2 {
 /// `canonical-map`: the affine map from the canonical cubic, proved in `Q(√3)(√r)`.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct CanonicalMap {
+pub struct CanonicalMapClaim {
     /// Control points of a genuine planar cubic.
     pub curve: String,
     /// The reference-point formulas (9), (12), (15)–(16) as printed or corrected.
@@ -70,7 +70,7 @@ fn as_printed() -> Reading {
     Reading::AsPrinted
 }
 
-impl CanonicalMap {
+impl CanonicalMapClaim {
     /// Builds the map (classifying the curve once) and proves `M·C(t̃) ≡ P(t)`.
     ///
     /// # Errors
@@ -98,7 +98,7 @@ impl CanonicalMap {
     }
 }
 
-impl Classification {
+impl ClassificationClaim {
     /// Each given expectation compared with the exact classification.
     ///
     /// # Errors

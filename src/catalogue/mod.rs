@@ -13,17 +13,25 @@
 //! `fails-as-printed` when the printed content fails (with its counterexample) and the corrected
 //! content holds.
 
-pub mod claims;
-pub mod common;
+pub(crate) mod claims;
+pub(crate) mod common;
 mod cost;
-pub mod cubic;
-pub mod polynomial;
-pub mod rational;
-pub mod surface;
+pub(crate) mod cubic;
+pub(crate) mod polynomial;
+pub(crate) mod rational;
+pub(crate) mod surface;
+
+pub use claims::ClaimContent;
+pub use common::{MAX_TABLE_DEGREE, MAX_TABLE_STEPS};
+pub use cubic::{CanonicalMapClaim, ClassificationClaim, MovingLine2, MovingLinesClaim};
+pub use polynomial::{
+    BasisTable, CurveFormula, Identity, Lemma2, MAX_INSTANCES, MAX_PARAMETER_RANGE, Matrix, NODE_FAMILIES, PowerForm,
+    RepeatedSubdivision, Subdivision, Table,
+};
+pub use surface::{Net, PatchEvaluations, PatchWeightChange, SplineSegments};
 
 use crate::error::{Error, Result};
 use crate::work::Budget;
-use claims::ClaimContent;
 pub use common::Outcome;
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};

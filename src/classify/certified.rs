@@ -347,7 +347,7 @@ pub fn summarize(curve: &BezierCurve<BigRational>) -> Summary {
 ///
 /// # Example
 /// ```
-/// use casteljau::classify::certified::summarize_f64;
+/// use casteljau::internal::summarize_f64;
 /// use casteljau::classify::{CurveClass, NodeType};
 /// let s = summarize_f64(&[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]]).unwrap();
 /// assert_eq!(s.0, CurveClass::Cubic(NodeType::Cusp)); // exact cusp: the filter abstains, exact decides

@@ -46,7 +46,7 @@ pub const MAX_COORDINATE: i64 = 1 << 40;
 ///
 /// # Example
 /// ```
-/// use casteljau::classify::integer::classify_json;
+/// use casteljau::internal::classify_json;
 /// let mut out = vec![];
 /// assert!(classify_json(&[[0, 0], [3, 3], [0, 3], [3, 0]], &mut out));
 /// let out = String::from_utf8(out).unwrap();
@@ -378,7 +378,7 @@ fn values_big(p: &[[BigInt; 2]; 4], scale: &BigInt) -> Option<Values<BigRational
 ///
 /// # Example
 /// ```
-/// use casteljau::classify::integer::classify_json_scaled;
+/// use casteljau::internal::classify_json_scaled;
 /// use num_bigint::BigInt;
 /// // 0 0, 1/2 1/2, 0 1/2, 1/2 0 (a cusp at 1/2) over the common denominator 2
 /// let p = [[0, 0], [1, 1], [0, 1], [1, 0]].map(|c| c.map(BigInt::from));
@@ -420,8 +420,8 @@ thread_local! {
 ///
 /// # Example
 /// ```
-/// use casteljau::classify::integer::classify_json_small;
-/// use casteljau::num::parse::{NumberMode, small_cubic};
+/// use casteljau::internal::classify_json_small;
+/// use casteljau::num::{NumberMode, small_cubic};
 /// let p = small_cubic("0 0, 1/2 1/2, 0 1/2, 1/2 0", NumberMode::Exact).unwrap();
 /// let mut out = vec![];
 /// assert!(classify_json_small(&p, &mut out));

@@ -18,14 +18,20 @@
 //! The seed's moving-line route ([`crate::classify::moving_line`]) and the Loop–Blinn discriminant
 //! ([`loop_blinn`]) are independent cross-checks.
 
-pub mod canonical;
-pub mod certified;
-pub mod evidence;
-pub mod integer;
-pub mod moving_line;
+pub(crate) mod canonical;
+pub(crate) mod certified;
+pub(crate) mod evidence;
+pub(crate) mod integer;
+pub(crate) mod moving_line;
 pub mod oracle;
-pub mod rational_cubic;
-pub mod report;
+pub(crate) mod rational_cubic;
+pub(crate) mod report;
+
+pub use canonical::{CanonicalMap, Sqrt3Field, Tower, canonical_equation, canonical_map, canonical_point, tower_sqrt};
+pub use evidence::{CanonicalEvidence, CubicEvidence, LoopBlinnEvidence, MovingLinesEvidence, cubic_evidence};
+pub use moving_line::MovingLines;
+pub use rational_cubic::{RationalClassification, classify_rational};
+pub use report::{Classified, ClassifyOptions, ClassifyReport, FloatApproximations, classify_rational_curve};
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
@@ -375,7 +381,7 @@ pub fn classify(curve: &BezierCurve<BigRational>) -> Result<Classification> {
 /// # Example
 /// ```
 /// use casteljau::classify::classify_in;
-/// use casteljau::num::small::{SmallRational, checked};
+/// use casteljau::num::{SmallRational, checked};
 /// use casteljau::{BezierCurve, Point, Scalar};
 /// let p = |x: i64, y: i64| Point::new(vec![SmallRational::from_i64(x), SmallRational::from_i64(y)]);
 /// let c = BezierCurve::new(vec![p(0, 0), p(30, 40), p(-20, 40), p(10, 0)]).unwrap();

@@ -5,7 +5,7 @@
 //! cubic's evidence ([`crate::classify::evidence`]) is always computed in big rationals.
 //!
 //! ```
-//! use casteljau::classify::report::{Classified, ClassifyOptions};
+//! use casteljau::classify::{Classified, ClassifyOptions};
 //! let opts = ClassifyOptions { dim: 2, ..ClassifyOptions::default() };
 //! let mut out = vec![];
 //! assert!(opts.write_json_direct("0 0, 3 3, 0 3, 3 0", &mut out));

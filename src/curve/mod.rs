@@ -3,9 +3,14 @@
 //!
 //! Depends on [`crate::num`] and [`crate::poly`].
 
-pub mod bezier;
-pub mod casteljau;
-pub mod exact;
-pub mod fraction_free;
+pub(crate) mod bezier;
+pub(crate) mod casteljau;
+pub(crate) mod exact;
+pub(crate) mod fraction_free;
 
-pub use bezier::BezierCurve;
+pub use bezier::{BezierCurve, MAX_DEGREE, check_polygon_text, parse_curve_in};
+pub use casteljau::{DeCasteljauTriangle, MAX_SUBDIVISION_DEPTH, subdivision_intervals};
+pub use exact::{
+    DegreeReduction, Derivative, Evaluation, MAX_MATRIX_DEGREE, MAX_SUBDIVISION_POINTS, MAX_TRIANGLE_DEGREE, Piece,
+    PointAt, PowerForm, RepeatedSubdivision, Scheme, Subdivision, polynomial_text,
+};

@@ -27,7 +27,7 @@
 //!
 //! # Example
 //! ```no_run
-//! use casteljau::format::font::Font;
+//! use casteljau::format::Font;
 //! let data = std::fs::read("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf").unwrap();
 //! let font = Font::open(&data, 0).unwrap();
 //! let gid = (0..font.num_glyphs()).find(|&g| font.glyph_name(g).as_deref() == Some("a")).unwrap();

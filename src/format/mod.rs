@@ -9,11 +9,18 @@
 //! every outline is listed.
 
 #[cfg(feature = "fonts")]
-pub mod font;
-pub mod scan;
+pub(crate) mod font;
+pub(crate) mod scan;
 #[cfg(feature = "svg")]
-pub mod svg;
-pub mod svg_path;
+pub(crate) mod svg;
+pub(crate) mod svg_path;
+
+#[cfg(feature = "fonts")]
+pub use font::{Font, MAX_COMPONENT_DEPTH, MAX_GLYPH_POINTS, font_count};
+pub use scan::{Element, ScanRecord, Source};
+#[cfg(feature = "svg")]
+pub use svg::{MAX_SVG_NODES, ShapeProblem, SvgShape, parse_transform, read_svg};
+pub use svg_path::{MAX_PATH_BYTES, close_for_fill, fill_path, parse_path};
 
 use crate::num::point::Point;
 use num_rational::BigRational;

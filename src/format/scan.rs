@@ -6,7 +6,7 @@
 //! # Example
 //! ```
 //! use casteljau::classify::{classify, segment_flags};
-//! use casteljau::format::scan::{ScanRecord, Source};
+//! use casteljau::format::{ScanRecord, Source};
 //! use casteljau::{BezierCurve, num::parse::parse_points};
 //! let ps = parse_points("0 0, 1 1", 2, None).unwrap();
 //! let k = classify(&BezierCurve::new(ps.clone()).unwrap()).unwrap();
@@ -26,7 +26,7 @@ use serde::Serialize;
 ///
 /// # Example
 /// ```
-/// use casteljau::format::scan::Element;
+/// use casteljau::format::Element;
 /// assert_eq!(serde_json::to_string(&Element::Id("logo".into())).unwrap(), r#""logo""#);
 /// assert_eq!(serde_json::to_string(&Element::Index(4)).unwrap(), "4");
 /// ```
@@ -45,7 +45,7 @@ pub enum Element {
 ///
 /// # Example
 /// ```
-/// use casteljau::format::scan::{Element, Source};
+/// use casteljau::format::{Element, Source};
 /// let at = Source { element: Some(Element::Index(0)), subpath: Some(1), ..Source::new("<path>") };
 /// assert_eq!(serde_json::to_string(&at).unwrap(), r#"{"file":"<path>","element":0,"subpath":1}"#);
 /// ```
@@ -84,7 +84,7 @@ impl<'a> Source<'a> {
     ///
     /// # Example
     /// ```
-    /// use casteljau::format::scan::Source;
+    /// use casteljau::format::Source;
     /// assert_eq!(Source::new("a.ttf").file, "a.ttf");
     /// ```
     pub fn new(file: &'a str) -> Self {
@@ -96,7 +96,7 @@ impl<'a> Source<'a> {
 ///
 /// # Example
 /// ```
-/// use casteljau::format::scan::{ScanRecord, Source};
+/// use casteljau::format::{ScanRecord, Source};
 /// let at = Source::new("a.svg");
 /// let r = ScanRecord::Error { at: &at, index: None, error: "line 3: bad path".into() };
 /// assert_eq!(serde_json::to_string(&r).unwrap(), r#"{"file":"a.svg","error":"line 3: bad path"}"#);

@@ -12,8 +12,8 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::format::svg::read_svg;
-//! use casteljau::num::parse::NumberMode;
+//! use casteljau::format::read_svg;
+//! use casteljau::num::NumberMode;
 //! let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
 //!   <g transform="translate(10 0) scale(2)"><path id="p" d="M0 0 Q1 1 2 0"/></g>
 //! </svg>"#;

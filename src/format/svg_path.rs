@@ -20,7 +20,7 @@
 //! # Example
 //! ```
 //! use casteljau::format::{Segment, svg_path::parse_path};
-//! use casteljau::num::parse::NumberMode;
+//! use casteljau::num::NumberMode;
 //! let subpaths = parse_path("M0 0 c1 1 2 1 3 0 s1-1 2 0z", NumberMode::Exact).unwrap();
 //! assert_eq!(subpaths.len(), 1);
 //! let segs = &subpaths[0].segments;
@@ -348,8 +348,8 @@ fn reflect(c: Option<&P>, cur: &P) -> P {
 ///
 /// # Example
 /// ```
-/// use casteljau::format::svg_path::{close_for_fill, parse_path};
-/// use casteljau::num::parse::NumberMode;
+/// use casteljau::format::{close_for_fill, parse_path};
+/// use casteljau::num::NumberMode;
 /// let subpaths = parse_path("M0 0 Q1 2 2 0", NumberMode::Exact).unwrap();
 /// let closed = close_for_fill(&subpaths[0]).unwrap();
 /// assert_eq!(closed.len(), 2); // the quadratic and the line back to (0, 0)
@@ -380,9 +380,9 @@ pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>
 ///
 /// # Example
 /// ```
-/// use casteljau::format::svg_path::fill_path;
-/// use casteljau::intersect::winding::{FillRule, PathWinding};
-/// use casteljau::num::parse::NumberMode;
+/// use casteljau::format::fill_path;
+/// use casteljau::intersect::{FillRule, PathWinding};
+/// use casteljau::num::NumberMode;
 /// use casteljau::{Point, rat};
 /// let path = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
 /// assert_eq!(path.contours().len(), 2);

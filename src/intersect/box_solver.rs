@@ -4,7 +4,7 @@
 
 use super::filter;
 use super::pairing::{Side, common_point, square_free_part};
-use super::{Intersection, Intersections, Kind};
+use super::{Contact, Intersection, Intersections};
 use crate::poly::algebraic::RealAlgebraic;
 use num_bigint::BigInt;
 
@@ -54,7 +54,7 @@ pub(super) fn solved_in_boxes(
             t_float,
             point: common_point((&side_a, &s, &s), (&side_b, &t, &t), &mut cached),
             point_float: side_a.point_float(&s),
-            kind: Kind::Transversal,
+            kind: Contact::Transversal,
             contact_order: 1,
             s,
             t,

@@ -632,7 +632,7 @@ mod tests {
     use crate::intersect::elimination::cross_system;
     use crate::intersect::forms::{cubic, forms_from_homogeneous, integer_forms, point_at};
     use crate::intersect::pairing::{intersect_forms, intersect_rows, roots};
-    use crate::intersect::{Domain, Kind, intersect};
+    use crate::intersect::{Contact, Domain, intersect};
     use crate::num::point::Point;
     use crate::num::scalar::rat;
     use crate::poly::algebraic::resultant_zv;
@@ -748,7 +748,7 @@ mod tests {
         let (fa, fb) = (integer_forms(&para), integer_forms(&line));
         let k = intersect(&para, &line, Domain::Unit).unwrap();
         assert_eq!(k.intersections.len(), 1);
-        assert_eq!(k.intersections[0].kind, Kind::Tangent);
+        assert_eq!(k.intersections[0].kind, Contact::Tangent);
         let i = &k.intersections[0];
         let sys = System::new(&fa, &fb).expect("polynomial curves");
         assert!(!proved_common(&sys, &i.s, &i.t, (i.s_float, i.t_float)));

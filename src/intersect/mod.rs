@@ -36,9 +36,13 @@ mod oracle;
 mod overlap;
 mod pairing;
 mod self_intersect;
-pub mod winding;
+pub(crate) mod winding;
 
 pub use oracle::{IntersectionDisagreement, check_intersections_f64};
+pub use winding::{
+    BoundaryPoint, ClosedPath, FillRule, MAX_PATH_SEGMENTS, PathWinding, Winding, WindingNumber, winding_estimate,
+    winding_number, winding_number_rational, winding_number_within,
+};
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
@@ -62,24 +66,24 @@ pub enum Domain {
 
 /// Transversal or tangent.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
+pub enum Contact {
     /// The curves cross with distinct tangents (contact order 1).
     Transversal,
     /// Contact order ≥ 2.
     Tangent,
 }
 
-impl Kind {
+impl Contact {
     /// `transversal` or `tangent`.
     pub fn as_str(self) -> &'static str {
         match self {
-            Kind::Transversal => "transversal",
-            Kind::Tangent => "tangent",
+            Contact::Transversal => "transversal",
+            Contact::Tangent => "tangent",
         }
     }
 }
 
-impl serde::Serialize for Kind {
+impl serde::Serialize for Contact {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         s.serialize_str(self.as_str())
     }
@@ -103,7 +107,7 @@ pub struct Intersection {
     /// The common point, each coordinate correctly rounded.
     pub point_float: [f64; 2],
     /// Transversal or tangent.
-    pub kind: Kind,
+    pub kind: Contact,
     /// The contact order (see the module documentation).
     pub contact_order: usize,
 }

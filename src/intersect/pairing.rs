@@ -6,7 +6,7 @@ use super::box_solver::solved_in_boxes;
 use super::elimination::{divided_difference, eliminate};
 use super::filter::{self, Regions, apart, candidate_regions, proved_common};
 use super::forms::{forms_from_homogeneous, point_at, point_at_rational, rational_point, to_rational};
-use super::{Domain, Intersection, Intersections, Kind, overlap};
+use super::{Contact, Domain, Intersection, Intersections, overlap};
 use crate::error::Result;
 use crate::num::point::Point;
 use crate::num::scalar::rat;
@@ -247,7 +247,7 @@ pub(super) fn intersect_forms(
                         &mut pa[i],
                     ),
                     point_float: side_a.point_float(na[i].as_ref().map_or(s, |n| &n.0)),
-                    kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
+                    kind: if order == 1 { Contact::Transversal } else { Contact::Tangent },
                     contact_order: order,
                     s: s.clone(),
                     t: t.clone(),

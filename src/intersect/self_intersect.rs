@@ -5,7 +5,7 @@ use super::elimination::divided_difference;
 use super::filter::apart;
 use super::forms::{point_at, rational_point, to_rational};
 use super::pairing::{Side, finite_roots, multiplicity, roots};
-use super::{Domain, Intersection, Intersections, Kind, overlap};
+use super::{Contact, Domain, Intersection, Intersections, overlap};
 use crate::error::{Error, Result};
 use crate::poly::algebraic::{RealAlgebraic, resultant_zv};
 use num_bigint::BigInt;
@@ -55,7 +55,7 @@ pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain)
                     t_float: *t_float,
                     point: rational_point(&p),
                     point_float: side.point_float(si),
-                    kind: if order == 1 { Kind::Transversal } else { Kind::Tangent },
+                    kind: if order == 1 { Contact::Transversal } else { Contact::Tangent },
                     contact_order: order,
                     s: ss[i].clone(),
                     t: ss[j].clone(),

@@ -12,7 +12,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::intersect::winding::{winding_number, Winding};
+//! use casteljau::intersect::{winding_number, Winding};
 //! use casteljau::{BezierCurve, num::parse::parse_points, rat, ratio, Point};
 //! let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 //! // the lens between the parabola 0 0, 1 2, 2 0 and the chord back
@@ -239,7 +239,7 @@ pub fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &Point<B
 ///
 /// # Example
 /// ```
-/// use casteljau::intersect::winding::FillRule;
+/// use casteljau::intersect::FillRule;
 /// let rule: FillRule = "evenodd".parse().unwrap();
 /// assert_eq!(rule, FillRule::EvenOdd);
 /// assert!(FillRule::NonZero.contains(2) && !FillRule::EvenOdd.contains(2));
@@ -262,7 +262,7 @@ impl FillRule {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::FillRule;
+    /// use casteljau::intersect::FillRule;
     /// assert_eq!([0, 1, 2, -3].map(|w| FillRule::EvenOdd.contains(w)), [false, true, false, true]);
     /// ```
     pub fn contains(self, winding: i64) -> bool {
@@ -301,7 +301,7 @@ impl std::str::FromStr for FillRule {
 ///
 /// # Example
 /// ```
-/// use casteljau::intersect::winding::{ClosedPath, PathWinding};
+/// use casteljau::intersect::{ClosedPath, PathWinding};
 /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let square = |a: i64, b: i64| {
@@ -331,7 +331,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::ClosedPath;
+    /// use casteljau::intersect::ClosedPath;
     /// use casteljau::{Point, RationalBezier, rat};
     /// let p = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
     /// // a quarter circle and the two radii closing it
@@ -365,7 +365,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::ClosedPath;
+    /// use casteljau::intersect::ClosedPath;
     /// use casteljau::{BezierCurve, num::parse::parse_points};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// assert!(ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).is_ok());
@@ -384,7 +384,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::ClosedPath;
+    /// use casteljau::intersect::ClosedPath;
     /// assert!(ClosedPath::new(vec![]).unwrap().contours().is_empty());
     /// ```
     pub fn contours(&self) -> &[Vec<RationalBezier<BigRational>>] {
@@ -395,7 +395,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::ClosedPath;
+    /// use casteljau::intersect::ClosedPath;
     /// assert_eq!(ClosedPath::new(vec![]).unwrap().segments(), 0);
     /// ```
     pub fn segments(&self) -> usize {
@@ -406,7 +406,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::ClosedPath;
+    /// use casteljau::intersect::ClosedPath;
     /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
@@ -425,7 +425,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::{ClosedPath, PathWinding};
+    /// use casteljau::intersect::{ClosedPath, PathWinding};
     /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat, work::Budget};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
@@ -456,7 +456,7 @@ impl ClosedPath {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::{ClosedPath, PathWinding};
+    /// use casteljau::intersect::{ClosedPath, PathWinding};
     /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat, ratio};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
@@ -474,7 +474,7 @@ impl ClosedPath {
 ///
 /// # Example
 /// ```
-/// use casteljau::intersect::winding::{ClosedPath, PathWinding};
+/// use casteljau::intersect::{ClosedPath, PathWinding};
 /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
@@ -497,7 +497,7 @@ pub enum PathWinding {
 ///
 /// # Example
 /// ```
-/// use casteljau::intersect::winding::{FillRule, WindingNumber};
+/// use casteljau::intersect::{FillRule, WindingNumber};
 /// let w = WindingNumber::new(-2);
 /// assert!(w.inside(FillRule::NonZero) && !w.inside(FillRule::EvenOdd));
 /// assert_eq!(serde_json::to_string(&w).unwrap(), r#"{"even_odd":false,"inside":true,"winding":-2}"#);
@@ -517,7 +517,7 @@ impl WindingNumber {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::WindingNumber;
+    /// use casteljau::intersect::WindingNumber;
     /// assert_eq!(WindingNumber::new(3).winding(), 3);
     /// ```
     pub fn new(winding: i64) -> Self {
@@ -532,7 +532,7 @@ impl WindingNumber {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::WindingNumber;
+    /// use casteljau::intersect::WindingNumber;
     /// assert_eq!(WindingNumber::new(-1).winding(), -1);
     /// ```
     pub fn winding(&self) -> i64 {
@@ -543,7 +543,7 @@ impl WindingNumber {
     ///
     /// # Example
     /// ```
-    /// use casteljau::intersect::winding::{FillRule, WindingNumber};
+    /// use casteljau::intersect::{FillRule, WindingNumber};
     /// assert!(!WindingNumber::new(0).inside(FillRule::NonZero));
     /// ```
     pub fn inside(&self, rule: FillRule) -> bool {
@@ -559,7 +559,7 @@ impl WindingNumber {
 ///
 /// # Example
 /// ```
-/// use casteljau::intersect::winding::{ClosedPath, PathWinding};
+/// use casteljau::intersect::{ClosedPath, PathWinding};
 /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 2 0"), seg("2 0, 0 2"), seg("0 2, 0 0")]]).unwrap();

@@ -12,7 +12,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::num::fraction::Fraction;
+//! use casteljau::num::Fraction;
 //! use casteljau::{Scalar, ratio};
 //! let x = Fraction::from(ratio(1, 6)) + Fraction::from(ratio(1, 3));
 //! assert_eq!(x, Fraction::from(ratio(1, 2))); // numeric equality, whatever the spelling

@@ -1,23 +1,40 @@
 //! Numbers: the [`Scalar`] field trait with its [`Exact`] marker, the integer-fast exact
 //! [`Rational`], exact quadratic extensions [`QuadraticExt`], points (vectors of scalars),
-//! fixed-width exact rationals ([`small::SmallRational`], checked), word-sized number theory
-//! (gcds, residues, square extraction; crate-internal `word`), and exact numbers and point lists
-//! read from text.
+//! fixed-width exact rationals ([`SmallRational`], checked), word-sized number theory
+//! (gcds, residues, square extraction; crate-internal), and exact numbers and point lists
+//! read from text ([`parse_points`], [`parse_number`], [`NumberMode`]).
 //!
 //! The lowest layer: it imports nothing else of the crate but [`crate::error`].
+//!
+//! # Which rational type
+//!
+//! | type | use it for | `==` | overflow |
+//! | --- | --- | --- | --- |
+//! | `BigRational` (num-rational) | exact answers and inputs: every public result | canonical form | none |
+//! | [`Rational`] | a [`Scalar`] for generic code run exactly (integer values add and multiply as integers) | canonical form | none |
+//! | [`Fraction`] | long evaluations (claim expressions): no gcd per operation | cross-multiplication | none; reduced past [`REDUCE_BITS`] |
+//! | [`SmallRational`] | fixed-width fast paths, run inside [`checked`] | canonical form | reported: [`checked`] returns `None`, the caller redoes the work in `BigRational` |
+//!
+//! All four are exact ([`Exact`]): equal numbers compare equal whatever their spelling.
 
-pub mod fraction;
-pub mod parse;
-pub mod point;
-pub mod quadratic_field;
-pub mod scalar;
+pub(crate) mod fraction;
+pub(crate) mod parse;
+pub(crate) mod point;
+pub(crate) mod quadratic_field;
+pub(crate) mod scalar;
 pub mod serial;
-pub mod small;
+pub(crate) mod small;
 pub(crate) mod word;
 
+pub use fraction::{Fraction, REDUCE_BITS};
+pub use parse::{
+    MAX_BINARY_EXPONENT, MAX_EXPONENT, MAX_TOKEN_LEN, NumberMode, parse_number, parse_number_in, parse_numbers,
+    parse_points, parse_points_in,
+};
 pub use point::Point;
-pub use quadratic_field::{QuadraticExt, Radical};
-pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};
+pub use quadratic_field::{QuadraticExt, Radical, nearest_f64};
+pub use scalar::{Exact, Rational, Scalar, integer_sqrt, rat, ratio, ratio_to_f64, rational_sqrt};
+pub use small::{SmallRational, checked};
 
 /// Ring arithmetic that may fail: checked fixed-width integers give `None` on overflow, exact
 /// and interval types never do. One home for the code written once over several number types:

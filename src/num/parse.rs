@@ -51,7 +51,7 @@ pub enum NumberMode {
 ///
 /// # Example
 /// ```
-/// use casteljau::num::parse::{NumberMode, parse_number_in};
+/// use casteljau::num::{NumberMode, parse_number_in};
 /// let p = Default::default();
 /// let x = parse_number_in("0.1", p, NumberMode::Binary64).unwrap();
 /// assert_eq!(x.to_string(), "3602879701896397/36028797018963968"); // the f64 0.1, exactly
@@ -83,7 +83,7 @@ pub fn parse_number_in(token: &str, position: Position, mode: NumberMode) -> Res
 ///
 /// # Example
 /// ```
-/// use casteljau::num::parse::parse_number;
+/// use casteljau::num::parse_number;
 /// let p = Default::default();
 /// assert_eq!(parse_number("1.5e-3", p).unwrap().to_string(), "3/2000");
 /// assert_eq!(parse_number("-14/12", p).unwrap().to_string(), "-7/6");
@@ -259,7 +259,7 @@ fn tokens(text: &str) -> std::result::Result<Vec<Token<'_>>, (usize, usize)> {
 ///
 /// # Example
 /// ```
-/// use casteljau::num::parse::parse_points;
+/// use casteljau::num::parse_points;
 /// let pts = parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap();
 /// assert_eq!(pts.len(), 4);
 /// assert_eq!(pts[1].to_string(), "(-1/3, 1)");
@@ -330,7 +330,7 @@ fn group_points<T: Scalar>(
 ///
 /// # Example
 /// ```
-/// use casteljau::num::parse::{parse_points, parse_points_small};
+/// use casteljau::num::{parse_points, parse_points_small};
 /// let small = parse_points_small("0 0, 1.25 -7/3", 2, None).unwrap();
 /// let big = parse_points("0 0, 1.25 -7/3", 2, None).unwrap();
 /// assert_eq!(small[1].coords[0].to_big(), big[1].coords[0]);
@@ -424,7 +424,7 @@ fn eight_tokens(text: &str) -> Option<[&str; 8]> {
 ///
 /// # Example
 /// ```
-/// use casteljau::num::parse::integer_cubic;
+/// use casteljau::internal::integer_cubic;
 /// assert_eq!(integer_cubic("0 0, 1 -2, +3 4, 5 6"), Some([[0, 0], [1, -2], [3, 4], [5, 6]]));
 /// assert_eq!(integer_cubic("0,0,1,2,3,4,5,6,"), Some([[0, 0], [1, 2], [3, 4], [5, 6]]));
 /// assert_eq!(integer_cubic("0 0, 1/2 2, 3 4, 5 6"), None); // a fraction: parse_points reads it
@@ -484,7 +484,7 @@ pub fn integer_cubic(text: &str) -> Option<[[i64; 2]; 4]> {
 ///
 /// # Example
 /// ```
-/// use casteljau::num::parse::{NumberMode, small_cubic};
+/// use casteljau::num::{NumberMode, small_cubic};
 /// let p = small_cubic("0 0, 1/2 -2.5, 3 4, 5 6", NumberMode::Exact).unwrap();
 /// assert_eq!(p[1][1].to_string(), "-5/2");
 /// assert!(small_cubic("0 0, 0.1 0, 1 1, 2 2", NumberMode::Binary64).is_none()); // 0.1 rounds

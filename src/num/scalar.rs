@@ -36,7 +36,8 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// assert_eq!(lerp(&1.0f64, &4.0, &0.5), 2.5);
 /// ```
 pub trait Scalar:
-    Clone
+    'static
+    + Clone
     + Debug
     + Display
     + PartialEq
@@ -66,8 +67,12 @@ pub trait Scalar:
 
 /// Marker for scalars whose `==` is numeric equality and whose sign is exact.
 ///
-/// Implementations keep a canonical form (reduced fractions with positive denominators,
-/// normalised extension elements), so equal numbers compare equal.
+/// # Laws
+/// `a == b` exactly when the two numbers are equal, whatever their spelling: [`Rational`] and
+/// `BigRational` keep a canonical form (reduced, positive denominator) and compare it;
+/// [`QuadraticExt`](crate::num::QuadraticExt) normalises its radicand;
+/// [`Fraction`](crate::num::Fraction) keeps unreduced fractions and compares by
+/// cross-multiplication (`a/b = c/d ⟺ ad = bc`). The sign is exact in every case.
 pub trait Exact: Scalar + Eq {
     /// The exact sign: `Less` for negative, `Equal` for zero, `Greater` for positive.
     fn sign(&self) -> Ordering;
@@ -224,7 +229,7 @@ pub fn ratio(p: i64, q: i64) -> BigRational {
 ///
 /// # Example
 /// ```
-/// use casteljau::num::scalar::{Rational, Scalar};
+/// use casteljau::num::{Rational, Scalar};
 /// let a = Rational::from_i64(6) * Rational::from_i64(7);
 /// assert_eq!(a, Rational::from(casteljau::ratio(84, 2)));
 /// assert_eq!((a / Rational::from_i64(4)).to_string(), "21/2");

@@ -18,7 +18,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::num::small::{SmallRational, checked};
+//! use casteljau::num::{SmallRational, checked};
 //! use casteljau::{Scalar, ratio};
 //! let x = checked(|| SmallRational::from_i64(1) / SmallRational::from_i64(3) + SmallRational::from_i64(1) / SmallRational::from_i64(6));
 //! assert_eq!(x.unwrap().to_string(), "1/2");
@@ -130,7 +130,7 @@ impl SmallRational {
     ///
     /// # Example
     /// ```
-    /// use casteljau::num::small::SmallRational;
+    /// use casteljau::num::SmallRational;
     /// let mut out = b"x = ".to_vec();
     /// SmallRational::new(-6, 4).unwrap().push_to(&mut out);
     /// assert_eq!(out, b"x = -3/2");

@@ -15,7 +15,7 @@ use num_traits::{One, ToPrimitive};
 ///
 /// # Example
 /// ```
-/// assert_eq!(casteljau::poly::bernstein::binomial(5, 2), 10.into());
+/// assert_eq!(casteljau::poly::binomial(5, 2), 10.into());
 /// ```
 pub fn binomial(n: usize, k: usize) -> BigInt {
     if k > n {
@@ -152,7 +152,7 @@ pub fn bernstein_sum<S: Scalar>(points: &[Point<S>], t: &S) -> Point<S> {
 ///
 /// # Example
 /// ```
-/// let a = casteljau::poly::bernstein::bernstein_to_power_matrix(2);
+/// let a = casteljau::poly::bernstein_to_power_matrix(2);
 /// let rows: Vec<Vec<i64>> = a.iter().map(|r| r.iter().map(|x| x.try_into().unwrap()).collect()).collect();
 /// assert_eq!(rows, vec![vec![1, 0, 0], vec![-2, 2, 0], vec![1, -2, 1]]);
 /// ```
@@ -235,7 +235,7 @@ pub fn eval_power<S: Scalar>(coeffs: &[Point<S>], t: &S) -> Point<S> {
 ///
 /// # Example
 /// ```
-/// use casteljau::poly::bernstein::split_integer;
+/// use casteljau::poly::split_integer;
 /// use num_bigint::BigInt;
 /// // (1 − 2t)² has coefficients 1, −1, 1; at t = 1/2 each half is scaled by 2² = 4
 /// let c: Vec<BigInt> = [1, -1, 1].map(BigInt::from).to_vec();

@@ -6,11 +6,21 @@
 //!
 //! Depends only on [`crate::num`].
 
-pub mod algebraic;
-pub mod bernstein;
-pub mod modular;
-pub mod polynomial;
+pub(crate) mod algebraic;
+pub(crate) mod bernstein;
+pub(crate) mod modular;
+pub(crate) mod polynomial;
 pub(crate) mod resultant;
-pub mod roots;
+pub(crate) mod roots;
 
-pub use roots::{Root, isolate_bernstein, isolate_bernstein_within, isolate_in, isolate_in_within};
+pub use algebraic::{RealAlgebraic, sign_at, simplest_rational};
+pub use bernstein::{
+    bernstein, bernstein_all, bernstein_sum, bernstein_to_power_matrix, binomial, binomial_row, binomial_scalar,
+    eval_power, from_power, power_to_bernstein_matrix, to_power,
+};
+pub use modular::min_factor_degree;
+pub use polynomial::{
+    Poly, center_plus_minus_sqrt, derivative, derivative_integer, div_rem, exact_quotient_integer, gcd, gcd_integer,
+    primitive_part, quadratic_roots, rem, square_free, square_free_integer, to_integer, trim,
+};
+pub use roots::{Root, isolate_bernstein, isolate_bernstein_within, isolate_in, isolate_in_within, restrict};

@@ -15,7 +15,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::poly::modular::min_factor_degree;
+//! use casteljau::poly::min_factor_degree;
 //! use num_bigint::BigInt;
 //! let p = |c: &[i64]| c.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
 //! // t⁴ − 10t² + 1 (the minimal polynomial of √2 + √3) is irreducible over Q, but splits

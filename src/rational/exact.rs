@@ -221,7 +221,7 @@ impl RationalBezier<BigRational> {
     ///
     /// ```
     /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
-    /// use casteljau::rational::exact::ParameterInterval;
+    /// use casteljau::rational::ParameterInterval;
     /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
     /// let d = c.defined_within(&ParameterInterval::unit(), &Budget::unlimited()).unwrap();
     /// assert!(!d.defined);

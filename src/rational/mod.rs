@@ -4,10 +4,16 @@
 //!
 //! Depends on [`crate::num`], [`crate::poly`], [`crate::proof`] and [`crate::curve`].
 
-pub mod exact;
-pub mod extrema;
-pub mod implicit;
-pub mod menelaus;
-pub mod rational_bezier;
+pub(crate) mod exact;
+pub(crate) mod extrema;
+pub(crate) mod implicit;
+pub(crate) mod menelaus;
+pub(crate) mod rational_bezier;
 
-pub use rational_bezier::RationalBezier;
+pub use exact::{Conic, Definedness, ParameterInterval, RationalEvaluation, RationalSubdivision};
+pub use extrema::{
+    BoundingBox, MAX_EXTREMA_DEGREE, Stationary, bounding_box, bounding_box_polynomial, bounding_box_within,
+};
+pub use implicit::{ImplicitOutcome, MAX_IMPLICIT_DEGREE, prove_implicit, total_degree};
+pub use menelaus::Configuration;
+pub use rational_bezier::{ConicType, RationalBezier, divide};

@@ -13,10 +13,14 @@
 //! * [`seed_cubic_segment`] and [`seed_quadratic_segment`]: the seed's rational interpolation
 //!   formulas (25)–(29) and (53), as printed or corrected.
 
-pub mod knots;
-pub mod net;
+pub(crate) mod knots;
+pub(crate) mod net;
 mod report;
-pub mod surface;
+pub(crate) mod surface;
+
+pub use knots::{BezierPiece, Join, MAX_SPLINE_POINTS};
+pub use net::{NetReport, SplineNet, check_net};
+pub use surface::{NurbsSurface, NurbsSurfaceReport, PatchPiece};
 
 pub use report::{
     BezierConversion, KnotRemoval, SplineCheck, SplineSegment, SplineValue, SplineValues, SurfaceExtraction, joins_text,

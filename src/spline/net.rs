@@ -248,7 +248,7 @@ fn knots(ratios: &[BigRational]) -> Vec<BigRational> {
 ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
 ///     .collect();
 /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
-/// use casteljau::spline::net::check_net;
+/// use casteljau::spline::check_net;
 /// let r = check_net(&net, Conversion::Boehm).unwrap();
 /// assert!(r.equals_nurbs && r.smooth_joins && r.order_independent);
 /// ```
@@ -282,7 +282,7 @@ pub struct NetReport {
 ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
 ///     .collect();
 /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
-/// use casteljau::spline::net::check_net;
+/// use casteljau::spline::check_net;
 /// assert_eq!(check_net(&net, Conversion::Boehm).unwrap().patches, 4);
 /// ```
 pub fn check_net(net: &SplineNet, how: Conversion) -> Result<NetReport> {

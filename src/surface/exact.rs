@@ -71,7 +71,7 @@ pub struct PatchSplit {
 
 /// A contour `z = c` of a 3D patch ([`RationalPatch::contour`]).
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Contour {
+pub struct PatchContour {
     /// The level `c`.
     #[serde(serialize_with = "serial::string")]
     pub z: BigRational,
@@ -176,13 +176,13 @@ impl RationalPatch {
     /// assert_eq!(c.bernstein_coefficients[0], vec![ratio(-1, 2), ratio(1, 2)]);
     /// assert!(c.polyline.is_none());
     /// ```
-    pub fn contour(&self, level: &BigRational, samples: usize) -> Result<Contour> {
+    pub fn contour(&self, level: &BigRational, samples: usize) -> Result<PatchContour> {
         if self.dim() < 3 {
             return Err(Error::InvalidArgument { message: "a contour z = c needs a 3D patch".into() });
         }
         let bernstein_coefficients = self.contour_polynomial(2, level);
         let polyline = (samples > 0).then(|| self.contour_polyline(2, level, samples.min(MAX_CONTOUR_SAMPLES)));
-        Ok(Contour { z: level.clone(), bernstein_coefficients, polyline })
+        Ok(PatchContour { z: level.clone(), bernstein_coefficients, polyline })
     }
 }
 

@@ -5,7 +5,9 @@
 //! `j` (the `v` index). Three evaluations agree exactly: the closed form, rational de Casteljau
 //! in `u` then `v`, and in `v` then `u` — the tensor-product statement (44)–(47).
 
-pub mod exact;
+pub(crate) mod exact;
+
+pub use exact::{Direction, MAX_CONTOUR_SAMPLES, PatchContour, PatchSplit};
 
 use crate::error::{Error, Result};
 use crate::num::point::Point;

@@ -4,11 +4,11 @@
 //! many rational parameters, and a 200-digit decimal oracle for the floats.
 
 use crate::common::{run, stderr, stdout};
-use casteljau::curve::bezier::BezierCurve;
-use casteljau::num::point::Point;
-use casteljau::poly::algebraic::RealAlgebraic;
-use casteljau::poly::polynomial::quadratic_roots;
-use casteljau::rational::extrema::{bounding_box, bounding_box_polynomial};
+use casteljau::curve::BezierCurve;
+use casteljau::num::Point;
+use casteljau::poly::RealAlgebraic;
+use casteljau::poly::quadratic_roots;
+use casteljau::rational::{bounding_box, bounding_box_polynomial};
 use casteljau::{QuadraticExt, RationalBezier, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -102,7 +102,7 @@ fn algebraic_display_spells_rationals_quadratics_and_general_roots() {
 }
 
 fn curve(text: &str) -> BezierCurve<BigRational> {
-    BezierCurve::new(casteljau::num::parse::parse_points(text, 2, None).unwrap()).unwrap()
+    BezierCurve::new(casteljau::num::parse_points(text, 2, None).unwrap()).unwrap()
 }
 
 fn cubic() -> impl Strategy<Value = BezierCurve<BigRational>> {

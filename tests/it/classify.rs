@@ -2,9 +2,9 @@
 //! check every exact answer independently (P(t1) = P(t2) in Q(√d), P'(cusp) = 0,
 //! P'×P'' = 0 at inflections) and against the seed's moving lines and Loop–Blinn.
 
-use casteljau::classify::moving_line::MovingLines;
+use casteljau::classify::MovingLines;
 use casteljau::classify::{CurveClass, NodeType, Parameter, SegmentCategory, classify, loop_blinn};
-use casteljau::num::parse::parse_points;
+use casteljau::num::parse_points;
 use casteljau::{BezierCurve, Point, QuadraticExt, Scalar, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -274,7 +274,7 @@ proptest! {
     /// printed (9) and (12) fail on every crunode and cusp (their F, G coincide with D).
     #[test]
     fn canonical_map_corrected_proves_and_printed_9_12_fail(c in cubic()) {
-        use casteljau::{classify::canonical::canonical_map, proof::Reading};
+        use casteljau::{classify::canonical_map, proof::Reading};
         let k = classify(&c).unwrap();
         let Some(node) = k.node_type else { return Ok(()) };
         let ml = MovingLines::new(&c).unwrap();
@@ -290,7 +290,7 @@ proptest! {
 
 #[test]
 fn canonical_map_for_constructed_cusps_and_acnodes() {
-    use casteljau::{classify::canonical::canonical_map, proof::Reading};
+    use casteljau::{classify::canonical_map, proof::Reading};
     let map = |c: &BezierCurve<BigRational>, reading| {
         canonical_map(c, &classify(c).unwrap(), &MovingLines::new(c).unwrap(), reading).unwrap()
     };
@@ -309,7 +309,7 @@ fn int_cubic() -> impl Strategy<Value = [[i64; 2]; 4]> {
 fn to_curve(p: &[[i64; 2]; 4]) -> BezierCurve<BigRational> {
     BezierCurve::new(p.iter().map(|q| Point::new(vec![rat(q[0]), rat(q[1])])).collect()).unwrap()
 }
-fn exact_summary(c: &BezierCurve<BigRational>) -> casteljau::classify::certified::Summary {
+fn exact_summary(c: &BezierCurve<BigRational>) -> casteljau::internal::Summary {
     let k = classify(c).unwrap();
     (k.class, k.segment)
 }
@@ -319,7 +319,7 @@ proptest! {
 
     #[test]
     fn certified_summary_equals_exact_classification(c in cubic()) {
-        prop_assert_eq!(casteljau::classify::certified::summarize(&c), exact_summary(&c));
+        prop_assert_eq!(casteljau::internal::summarize(&c), exact_summary(&c));
     }
 
     #[test]
@@ -328,10 +328,10 @@ proptest! {
         let p = if pick == 0 { small } else { p };
         let c = to_curve(&p);
         let f = p.map(|q| q.map(|v| v as f64));
-        if let Some(s) = casteljau::classify::certified::filter_f64(&f) {
+        if let Some(s) = casteljau::internal::filter_f64(&f) {
             prop_assert_eq!(s, exact_summary(&c));
         }
-        prop_assert_eq!(casteljau::classify::certified::decide(&p.map(|q| q.map(|v| v as i128))).unwrap(), exact_summary(&c));
+        prop_assert_eq!(casteljau::internal::decide(&p.map(|q| q.map(|v| v as i128))).unwrap(), exact_summary(&c));
     }
 }
 
@@ -354,7 +354,7 @@ fn certified_summary_on_constructed_edge_cases() {
         cases.push(curve(&format!("0 0, 1 {}, 0 1, 1 0", rat(1) + eps)));
     }
     for c in &cases {
-        assert_eq!(casteljau::classify::certified::summarize(c), exact_summary(c), "{c}");
+        assert_eq!(casteljau::internal::summarize(c), exact_summary(c), "{c}");
     }
     // near a cusp the filter either certifies the true answer for its exact f64 input, or abstains
     let y = 1.0 + 1e-15;
@@ -369,7 +369,7 @@ fn certified_summary_on_constructed_edge_cases() {
     .unwrap();
     let truth = exact_summary(&exact_curve);
     assert_ne!(truth.0, CurveClass::Cubic(NodeType::Cusp));
-    if let Some(s) = casteljau::classify::certified::filter_f64(&near) {
+    if let Some(s) = casteljau::internal::filter_f64(&near) {
         assert_eq!(s, truth);
     }
 }
@@ -380,8 +380,8 @@ proptest! {
     /// At the edge of the SmallInt bound (|coordinates| just below 2²⁴) nothing overflows.
     #[test]
     fn certified_small_int_limit_is_safe(p in prop::array::uniform4(prop::array::uniform2(prop_oneof![Just((1i64 << 24) - 1), Just(-(1i64 << 24) + 1), -(1i64 << 24) + 1..(1i64 << 24)]))) {
-        prop_assert_eq!(casteljau::classify::certified::summarize_integers(&p), exact_summary(&to_curve(&p)));
-        prop_assert_eq!(casteljau::classify::certified::decide(&p.map(|q| q.map(num_bigint::BigInt::from))).unwrap(), exact_summary(&to_curve(&p)));
+        prop_assert_eq!(casteljau::internal::summarize_integers(&p), exact_summary(&to_curve(&p)));
+        prop_assert_eq!(casteljau::internal::decide(&p.map(|q| q.map(num_bigint::BigInt::from))).unwrap(), exact_summary(&to_curve(&p)));
     }
 }
 
@@ -391,7 +391,7 @@ proptest! {
     /// Float inputs (any binary64 values, including near-degenerate ones) are classified exactly.
     #[test]
     fn certified_summarize_f64_equals_exact_on_the_binary_values(p in prop::array::uniform4(prop::array::uniform2(prop_oneof![-1e3f64..1e3, (-4i32..=4).prop_map(|v| v as f64), Just(0.1f64), Just(1.0 + f64::EPSILON)]))) {
-        let s = casteljau::classify::certified::summarize_f64(&p).unwrap();
+        let s = casteljau::internal::summarize_f64(&p).unwrap();
         let c = BezierCurve::new(p.iter().map(|q| Point::new(q.iter().map(|&v| BigRational::from_float(v).unwrap()).collect())).collect()).unwrap();
         prop_assert_eq!(s, exact_summary(&c));
     }
@@ -401,7 +401,7 @@ proptest! {
 /// same classification, spelled alike, whenever the fixed-width route answers.
 fn routes_agree(c: &BezierCurve<BigRational>) -> Result<bool, TestCaseError> {
     use casteljau::classify::classify_in;
-    use casteljau::num::small::{SmallRational, checked};
+    use casteljau::num::{SmallRational, checked};
     let big = classify_in(c).unwrap();
     prop_assert_eq!(&classify(c).unwrap(), &big);
     let Some(small) = checked(|| classify_in(&c.map(SmallRational::from_ratio)).unwrap()) else { return Ok(false) };
@@ -461,7 +461,7 @@ fn classify_fixed_width_route_on_seed_kinds_and_boundaries() {
 /// when it answers; `Some(true)` when it did.
 fn integer_route_agrees(p: &[[i64; 2]; 4]) -> Result<bool, TestCaseError> {
     let mut out = vec![];
-    if !casteljau::classify::integer::classify_json(p, &mut out) {
+    if !casteljau::internal::classify_json(p, &mut out) {
         prop_assert!(out.is_empty());
         return Ok(false);
     }
@@ -543,7 +543,7 @@ fn integer_json_route_on_every_node_type_and_the_refusals() {
         assert!(!taken(s), "{s}");
     }
     // beyond 2^40: refused, the generic route answers
-    assert!(!casteljau::classify::integer::classify_json(&[[1 << 41, 0], [0, 1], [1, 1], [1, 0]], &mut vec![]));
+    assert!(!casteljau::internal::classify_json(&[[1 << 41, 0], [0, 1], [1, 1], [1, 0]], &mut vec![]));
 }
 
 proptest! {
@@ -562,7 +562,7 @@ proptest! {
             if k < 7 { text += seps[k]; }
         }
         text += trailing;
-        if let Some(p) = casteljau::num::parse::integer_cubic(&text) {
+        if let Some(p) = casteljau::internal::integer_cubic(&text) {
             let parsed = parse_points(&text, 2, None);
             prop_assert!(parsed.is_ok(), "{}", text);
             let (ours, theirs) = (to_curve(&p), parsed.unwrap());
@@ -580,7 +580,7 @@ fn scaled_route_agrees(c: &BezierCurve<BigRational>) -> Result<bool, TestCaseErr
     let p: [[num_bigint::BigInt; 2]; 4] =
         std::array::from_fn(|i| [int(&c.points()[i].coords[0]), int(&c.points()[i].coords[1])]);
     let mut out = vec![];
-    if !casteljau::classify::integer::classify_json_scaled(&p, &l, &mut out) {
+    if !casteljau::internal::classify_json_scaled(&p, &l, &mut out) {
         prop_assert!(out.is_empty());
         return Ok(false);
     }
@@ -623,7 +623,7 @@ proptest! {
             };
             if k < 7 { text += seps[k]; }
         }
-        if let Some(p) = casteljau::num::parse::small_cubic(&text, casteljau::num::parse::NumberMode::Exact) {
+        if let Some(p) = casteljau::internal::small_cubic(&text, casteljau::num::NumberMode::Exact) {
             let parsed = parse_points(&text, 2, None);
             prop_assert!(parsed.is_ok(), "{}", text);
             let theirs = parsed.unwrap();

@@ -1,8 +1,8 @@
 //! Regression tests for exactness bugs: each test names the case that once went wrong.
 
-use casteljau::num::scalar::ratio_to_f64;
-use casteljau::poly::roots::{Root, isolate_bernstein};
-use casteljau::rational::rational_bezier::RationalBezier;
+use casteljau::num::ratio_to_f64;
+use casteljau::poly::{Root, isolate_bernstein};
+use casteljau::rational::RationalBezier;
 use casteljau::surface::RationalPatch;
 use casteljau::{Exact, Point, QuadraticExt, Scalar, rat, ratio};
 use num_bigint::BigInt;

@@ -3,11 +3,11 @@
 //! fonts (TrueType `glyf` cross-checked glyph by glyph against `skrifa`; CFF2 against the
 //! outlines FreeType extracted for the fontations test suite; CFF).
 
-use casteljau::format::font::{Font, font_count};
-use casteljau::format::svg::{parse_transform, read_svg};
-use casteljau::format::svg_path::parse_path;
+use casteljau::format::parse_path;
 use casteljau::format::{Contour, Segment};
-use casteljau::num::parse::NumberMode;
+use casteljau::format::{Font, font_count};
+use casteljau::format::{parse_transform, read_svg};
+use casteljau::num::NumberMode;
 use casteljau::{Point, ratio};
 use num_rational::BigRational;
 

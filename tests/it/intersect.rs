@@ -6,11 +6,11 @@
 
 use crate::common::{run, stderr, stdout};
 use casteljau::classify::{NodeType, classify};
-use casteljau::curve::bezier::BezierCurve;
+use casteljau::curve::BezierCurve;
 use casteljau::intersect::{Domain, intersect_polynomial, self_intersect};
-use casteljau::num::parse::{NumberMode, parse_points_in};
-use casteljau::num::point::Point;
-use casteljau::poly::algebraic::RealAlgebraic;
+use casteljau::num::Point;
+use casteljau::num::{NumberMode, parse_points_in};
+use casteljau::poly::RealAlgebraic;
 use casteljau::{RationalBezier, rat};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -368,7 +368,7 @@ mod overlaps {
 
 mod winding {
     use super::*;
-    use casteljau::intersect::winding::{Winding, winding_number};
+    use casteljau::intersect::{Winding, winding_number};
 
     fn path(s: &str) -> Vec<BezierCurve<BigRational>> {
         s.split(';').map(c).collect()
@@ -642,8 +642,8 @@ fn cli_bbox_and_winding_refuse_work_beyond_the_budget_naming_the_option() {
 /// the explicitly closed one, and the fill rules read its winding numbers.
 #[test]
 fn winding_fill_path_closes_open_subpaths_and_fill_rules_decide_inside() {
-    use casteljau::format::svg_path::fill_path;
-    use casteljau::intersect::winding::{FillRule, PathWinding};
+    use casteljau::format::fill_path;
+    use casteljau::intersect::{FillRule, PathWinding};
     let open = fill_path("M0 0 L4 0 L4 4 L0 4 M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
     let closed = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3 Z", NumberMode::Exact).unwrap();
     assert_eq!(open, closed);

@@ -3,8 +3,8 @@
 //! round-trips through its printed form to the same exact value.
 
 use casteljau::Position;
-use casteljau::num::fraction::Fraction;
-use casteljau::num::parse::{parse_number, parse_points};
+use casteljau::num::Fraction;
+use casteljau::num::{parse_number, parse_points};
 use casteljau::proof::expr::{Env, parse_expr, with_step_limit};
 use casteljau::rat;
 use proptest::prelude::*;
@@ -117,7 +117,7 @@ proptest! {
     /// decimal, which is the f64 only when the decimal is a binary fraction.
     #[test]
     fn binary64_mode_reads_back_every_printed_f64(bits in any::<u64>()) {
-        use casteljau::num::parse::{NumberMode, parse_number_in};
+        use casteljau::num::{NumberMode, parse_number_in};
         let x = f64::from_bits(bits);
         prop_assume!(x.is_finite());
         let exact = num_rational::BigRational::from_float(x).unwrap();

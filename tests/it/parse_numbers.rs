@@ -1,6 +1,6 @@
 //! Exact numbers from text: accepted forms and their exact values, rejected forms with reasons.
 
-use casteljau::num::parse::parse_number;
+use casteljau::num::parse_number;
 use casteljau::{Error, Position};
 
 #[test]
@@ -91,7 +91,7 @@ fn parse_limits_token_length_and_exponent() {
 /// Hex floats are exact binary values in every mode (C99 `%a`, Rust's hexf).
 #[test]
 fn parse_hex_floats_exactly() {
-    use casteljau::num::parse::{NumberMode, parse_number_in};
+    use casteljau::num::{NumberMode, parse_number_in};
     for (text, exact) in
         [("0x1.8p-3", "3/16"), ("0x1p0", "1"), ("-0x1.0p+4", "-16"), ("0X.8P1", "1"), ("0x1p-2", "1/4")]
     {
@@ -109,7 +109,7 @@ fn parse_hex_floats_exactly() {
 /// Binary64 mode: every number is the f64 Rust's parser gives, taken exactly; where it matters.
 #[test]
 fn parse_binary64_mode_rounds_like_the_f64_parser() {
-    use casteljau::num::parse::{NumberMode, parse_number_in};
+    use casteljau::num::{NumberMode, parse_number_in};
     let b64 = |t: &str| parse_number_in(t, Position::default(), NumberMode::Binary64).unwrap();
     for text in [
         "0.1",

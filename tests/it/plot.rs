@@ -1,9 +1,9 @@
 //! Figures rendered with a real SVG renderer (resvg / tiny-skia), asserting on pixels.
 
-use casteljau::num::parse::parse_points;
-use casteljau::num::scalar::ratio_to_f64;
+use casteljau::num::parse_points;
+use casteljau::num::ratio_to_f64;
 use casteljau::plot::{CurveOptions, Figure, draw_curve, draw_rational};
-use casteljau::rational::rational_bezier::RationalBezier;
+use casteljau::rational::RationalBezier;
 use casteljau::{BezierCurve, rat};
 use resvg::{tiny_skia, usvg};
 
@@ -56,7 +56,7 @@ fn plot_curve_passes_through_its_exact_endpoints() {
         assert!(inked_near(&pix, at, 1), "no ink at the endpoint pixel {at:?}");
     }
     // and through an exact interior point
-    let m = casteljau::curve::fraction_free::eval(&c, &casteljau::ratio(1, 3));
+    let m = c.eval(&casteljau::ratio(1, 3));
     assert!(inked_near(&pix, fig.to_pixel(ratio_to_f64(&m.coords[0]), ratio_to_f64(&m.coords[1]), W), 1));
     assert!(border_is_blank(&pix));
 }

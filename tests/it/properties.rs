@@ -1,10 +1,12 @@
 //! Properties with exact `==`: independent routes to the same answer must agree.
 
-use casteljau::curve::casteljau::{subdivide, triangle};
-use casteljau::num::parse::{parse_number, parse_points};
-use casteljau::num::scalar::{Rational, ratio_to_f64};
-use casteljau::poly::bernstein::binomial;
-use casteljau::{BezierCurve, Exact, Point, QuadraticExt, Scalar, curve::fraction_free, rat};
+use casteljau::internal::{
+    eval_de_casteljau, subdivide_de_casteljau, subdivide_repeatedly_de_casteljau, triangle_de_casteljau,
+};
+use casteljau::num::{Rational, ratio_to_f64};
+use casteljau::num::{parse_number, parse_points};
+use casteljau::poly::binomial;
+use casteljau::{BezierCurve, Exact, Point, QuadraticExt, Scalar, rat};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -39,7 +41,7 @@ proptest! {
 
     #[test]
     fn eval_fraction_free_equals_naive(c in curve(), t in parameter()) {
-        prop_assert_eq!(fraction_free::eval(&c, &t), c.eval(&t));
+        prop_assert_eq!(c.eval(&t), eval_de_casteljau(&c, &t));
     }
 
     #[test]
@@ -47,27 +49,27 @@ proptest! {
         // t with a denominator near 2^k pushes the i128 path into overflow
         let t = BigRational::new(BigInt::from(3) , BigInt::from(2).pow(k) + 1);
         let big = c.elevate(12).unwrap();
-        prop_assert_eq!(fraction_free::eval(&big, &t), c.eval(&t));
+        prop_assert_eq!(big.eval(&t), eval_de_casteljau(&c, &t));
     }
 
     #[test]
     fn triangle_fraction_free_equals_naive(c in curve(), t in parameter()) {
-        prop_assert_eq!(fraction_free::triangle(&c, &t), triangle(&c, &t));
+        prop_assert_eq!(c.triangle(&t), triangle_de_casteljau(&c, &t));
     }
 
     #[test]
     fn subdivision_halves_reproduce_the_curve(c in curve(), t0 in parameter(), s in parameter()) {
-        let (l, r) = fraction_free::subdivide(&c, &t0);
+        let (l, r) = c.subdivide(&t0);
         prop_assert_eq!(l.eval(&s), c.eval(&(t0.clone() * &s)));
         prop_assert_eq!(r.eval(&s), c.eval(&(t0.clone() + (rat(1) - &t0) * &s)));
-        prop_assert_eq!((l.clone(), r.clone()), subdivide(&c, &t0));
+        prop_assert_eq!((l.clone(), r.clone()), subdivide_de_casteljau(&c, &t0));
     }
 
     #[test]
     fn repeated_subdivision_fraction_free_equals_naive(c in curve(), t0 in parameter(), depth in 0u32..=3) {
         prop_assert_eq!(
-            fraction_free::subdivide_repeatedly(&c, &t0, depth).unwrap(),
-            casteljau::curve::casteljau::subdivide_repeatedly(&c, &t0, depth).unwrap()
+            c.subdivide_repeatedly(&t0, depth).unwrap(),
+            subdivide_repeatedly_de_casteljau(&c, &t0, depth).unwrap()
         );
     }
 
@@ -85,9 +87,15 @@ proptest! {
 
     #[test]
     fn fraction_free_power_elevate_reduce_equal_generic(c in curve(), by in 0usize..=4) {
-        prop_assert_eq!(fraction_free::power_coefficients(&c), c.power_coefficients());
-        prop_assert_eq!(fraction_free::elevate(&c, by).unwrap(), c.elevate(by).unwrap());
-        prop_assert_eq!(fraction_free::reduce_degree(&c.elevate(by).unwrap()), c.reduce_degree());
+        // the generic code over the integer-fast Rational is the independent route
+        let generic = c.map(|x| Rational(x.clone()));
+        let back = |c: BezierCurve<Rational>| c.map(|x| x.0.clone());
+        let back_points = |p: Vec<Point<Rational>>| -> Vec<Point<BigRational>> {
+            p.into_iter().map(|q| Point::new(q.coords.into_iter().map(|x| x.0).collect())).collect()
+        };
+        prop_assert_eq!(c.power_coefficients(), back_points(generic.power_coefficients()));
+        prop_assert_eq!(c.elevate(by).unwrap(), back(generic.elevate(by).unwrap()));
+        prop_assert_eq!(c.elevate(by).unwrap().reduce_degree(), back(generic.reduce_degree()));
     }
 
     #[test]
@@ -100,7 +108,7 @@ proptest! {
         let d = c.derivative(1);
         let coeffs = c.power_coefficients();
         let dc: Vec<Point<BigRational>> = coeffs.iter().enumerate().skip(1).map(|(k, p)| p.scale(&rat(k as i64))).collect();
-        let expected = if dc.is_empty() { Point::origin(c.dim()) } else { casteljau::poly::bernstein::eval_power(&dc, &t) };
+        let expected = if dc.is_empty() { Point::origin(c.dim()) } else { casteljau::poly::eval_power(&dc, &t) };
         prop_assert_eq!(d.eval(&t), expected);
         // second derivative is the derivative of the derivative
         prop_assert_eq!(c.derivative(2).eval(&t), d.derivative(1).eval(&t));
@@ -145,7 +153,7 @@ proptest! {
 
     #[test]
     fn quadratic_extension_field_laws(a in small_rational(), b in small_rational(), c in small_rational(), e in small_rational(), d in 2i64..30) {
-        prop_assume!(casteljau::num::quadratic_field::rational_sqrt(&rat(d)).is_none());
+        prop_assume!(casteljau::num::rational_sqrt(&rat(d)).is_none());
         let x = QuadraticExt::new(a.clone(), b.clone(), rat(d));
         let y = QuadraticExt::new(c, e, rat(d));
         prop_assert_eq!(x.clone() * &y, y.clone() * &x);
@@ -162,16 +170,13 @@ proptest! {
 fn bernstein_partition_of_unity_and_binomial_symmetry() {
     for n in 0..30 {
         let t = BigRational::new(7.into(), 19.into());
-        let s = casteljau::poly::bernstein::bernstein_all(n, &t).into_iter().fold(rat(0), |a, b| a + b);
+        let s = casteljau::poly::bernstein_all(n, &t).into_iter().fold(rat(0), |a, b| a + b);
         assert_eq!(s, rat(1));
         for k in 0..=n {
             assert_eq!(binomial(n, k), binomial(n, n - k));
         }
     }
-    assert_eq!(
-        casteljau::poly::bernstein::binomial_row::<BigRational>(70)[35],
-        BigRational::from_integer(binomial(70, 35))
-    );
+    assert_eq!(casteljau::poly::binomial_row::<BigRational>(70)[35], BigRational::from_integer(binomial(70, 35)));
 }
 
 #[test]
@@ -188,8 +193,8 @@ fn quadratic_extension_sign_of_near_cancellation() {
 }
 
 mod polynomial_routes {
-    use casteljau::poly::polynomial::{gcd, square_free};
-    use casteljau::poly::roots::{Root, isolate_bernstein};
+    use casteljau::poly::{Root, isolate_bernstein};
+    use casteljau::poly::{gcd, square_free};
     use casteljau::rat;
     use num_rational::BigRational;
     use proptest::prelude::*;
@@ -207,7 +212,7 @@ mod polynomial_routes {
     fn poly(max_degree: usize) -> impl Strategy<Value = Vec<BigRational>> {
         prop::collection::vec(-20i64..=20, 2..=max_degree + 1)
             .prop_filter("non-constant", |v| v.iter().skip(1).any(|&x| x != 0))
-            .prop_map(|v| casteljau::poly::polynomial::trim(v.into_iter().map(rat).collect()))
+            .prop_map(|v| casteljau::poly::trim(v.into_iter().map(rat).collect()))
             .prop_filter("non-constant", |p| p.len() >= 2)
     }
 
@@ -225,9 +230,9 @@ mod polynomial_routes {
             let (ac, bc) = (mul(&a, &c), mul(&b, &c));
             let g = gcd(ac.clone(), bc.clone());
             prop_assert!(g.len() >= c.len());
-            prop_assert!(casteljau::poly::polynomial::rem(ac, &g).is_empty());
-            prop_assert!(casteljau::poly::polynomial::rem(bc, &g).is_empty());
-            prop_assert!(casteljau::poly::polynomial::rem(g, &casteljau::poly::polynomial::trim(c)).is_empty());
+            prop_assert!(casteljau::poly::rem(ac, &g).is_empty());
+            prop_assert!(casteljau::poly::rem(bc, &g).is_empty());
+            prop_assert!(casteljau::poly::rem(g, &casteljau::poly::trim(c)).is_empty());
         }
 
         /// `square_free(a²·b)` has the roots of `a·b`, each simple: it divides `a·b` and shares
@@ -237,9 +242,9 @@ mod polynomial_routes {
             let p = mul(&mul(&a, &a), &b);
             let sf = square_free(p);
             let ab = mul(&a, &b);
-            prop_assert!(casteljau::poly::polynomial::rem(ab, &sf).is_empty());
-            prop_assert_eq!(gcd(sf.clone(), casteljau::poly::polynomial::derivative(&sf)).len(), 1);
-            prop_assert!(casteljau::poly::polynomial::rem(square_free(a.clone()), &square_free(a.clone())).is_empty());
+            prop_assert!(casteljau::poly::rem(ab, &sf).is_empty());
+            prop_assert_eq!(gcd(sf.clone(), casteljau::poly::derivative(&sf)).len(), 1);
+            prop_assert!(casteljau::poly::rem(square_free(a.clone()), &square_free(a.clone())).is_empty());
         }
 
         /// Roots placed at rational points of [0, 1] (with multiplicity) are found exactly or
@@ -260,7 +265,7 @@ mod polynomial_routes {
             distinct.sort();
             // to Bernstein form of degree deg p
             let pts: Vec<casteljau::Point<BigRational>> = p.iter().map(|c| casteljau::Point::new(vec![c.clone()])).collect();
-            let bern: Vec<BigRational> = casteljau::poly::bernstein::from_power(&pts).into_iter().map(|q| q.coords[0].clone()).collect();
+            let bern: Vec<BigRational> = casteljau::poly::from_power(&pts).into_iter().map(|q| q.coords[0].clone()).collect();
             let found = isolate_bernstein(&bern).unwrap();
             prop_assert_eq!(found.len(), distinct.len());
             for (f, r) in found.iter().zip(&distinct) {
@@ -293,7 +298,7 @@ proptest! {
         p in -1000i64..1000, q in 1i64..1000, r in -1000i64..1000, s in 1i64..1000, d in 2i64..10_000, shift in 0u32..60,
     ) {
         let d = BigRational::from_integer(BigInt::from(d));
-        prop_assume!(casteljau::num::scalar::rational_sqrt(&d).is_none());
+        prop_assume!(casteljau::num::rational_sqrt(&d).is_none());
         let (a, b) = (BigRational::new(p.into(), q.into()), BigRational::new(r.into(), s.into()));
         prop_assume!(!b.is_zero());
         // a cancelling pair: a' = nearest 2^-shift-grid value to -b√d, so x = a' + b√d is tiny

@@ -2,11 +2,11 @@
 //! evaluations against each other, operations, denominator safety, implicit equations and the
 //! Menelaus configurations.
 
-use casteljau::num::parse::parse_points;
+use casteljau::num::parse_points;
 use casteljau::proof::Reading;
-use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
-use casteljau::rational::menelaus::Configuration;
-use casteljau::rational::rational_bezier::{ConicType, RationalBezier};
+use casteljau::rational::Configuration;
+use casteljau::rational::{ConicType, RationalBezier};
+use casteljau::rational::{ImplicitOutcome, prove_implicit};
 use casteljau::{Error, Point, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -155,7 +155,7 @@ fn rational_denominator_vanishing_is_an_error_with_an_isolating_interval() {
     let (a, b): (BigRational, BigRational) = (a.parse().unwrap(), b.parse().unwrap());
     // the root 1/2 − √3/6 ≈ 0.2113 lies in (a, b)
     let r = 0.5 - 3f64.sqrt() / 6.0;
-    assert!(casteljau::num::scalar::ratio_to_f64(&a) < r && r < casteljau::num::scalar::ratio_to_f64(&b));
+    assert!(casteljau::num::ratio_to_f64(&a) < r && r < casteljau::num::ratio_to_f64(&b));
     assert!(e.to_string().contains("undefined"));
     // on a sub-interval avoiding the roots it is defined
     assert!(c.check_defined(&ratio(1, 4), &ratio(3, 4)).is_ok());

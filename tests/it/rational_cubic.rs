@@ -2,7 +2,7 @@
 //! projective maps (which can send the double point to infinity) preserve node type and
 //! parameters.
 
-use casteljau::classify::rational_cubic::classify_rational;
+use casteljau::classify::classify_rational;
 use casteljau::classify::{NodeType, classify};
 use casteljau::strategies::{cubic, loop_between};
 use casteljau::{BezierCurve, Point, Scalar, rat};
@@ -99,7 +99,7 @@ proptest! {
 fn rational_cubic_double_point_sent_to_infinity() {
     // the crunode (s² − 1, s³ − s) has its node at the origin; the projective map
     // (X, Y, W) ↦ (X, Y, X + W) … sends points with X = −W to infinity: move the node first.
-    let c = BezierCurve::new(casteljau::num::parse::parse_points("0 0, 2 2, -1 2, 1 0", 2, None).unwrap()).unwrap();
+    let c = BezierCurve::new(casteljau::num::parse_points("0 0, 2 2, -1 2, 1 0", 2, None).unwrap()).unwrap();
     let k = classify(&c).unwrap();
     let d = k.double_point.unwrap(); // (1/2, 3/5)
     // W' = W − 2X: vanishes at x = 1/2

@@ -465,7 +465,7 @@ fn robustness_weight_errors_say_which_weight_of_a_patch_and_a_net() {
     assert!(e.contains("new weight 1 of row 2 (w10) is 0: 1 + -1"), "{e}");
     let net = |w: Vec<Vec<num_rational::BigRational>>| {
         let pts: Vec<Vec<_>> = (0..4).map(|i| (0..4).map(|j| p3(j, i, (i * j) % 3)).collect()).collect();
-        casteljau::spline::net::SplineNet::new((2, 2), pts, w, vec![rat(1); 5], vec![rat(1); 5])
+        casteljau::spline::SplineNet::new((2, 2), pts, w, vec![rat(1); 5], vec![rat(1); 5])
     };
     let mut w = vec![vec![rat(1); 4]; 4];
     w[2][3] = rat(0);

@@ -1,10 +1,11 @@
 //! Every example of seeds 001 and 003 reproduced exactly, from `tests/data/seeds_core.json`
 //! (each case carries its `source`); seed errata are asserted as the computed truth.
 
-use casteljau::curve::casteljau::{subdivide_repeatedly, subdivision_intervals};
-use casteljau::num::parse::{parse_number, parse_points};
-use casteljau::poly::bernstein::{bernstein, bernstein_to_power_matrix, power_to_bernstein_matrix};
-use casteljau::{BezierCurve, Point, curve::fraction_free, rat, ratio};
+use casteljau::curve::subdivision_intervals;
+use casteljau::internal::subdivide_de_casteljau;
+use casteljau::num::{parse_number, parse_points};
+use casteljau::poly::{bernstein, bernstein_to_power_matrix, power_to_bernstein_matrix};
+use casteljau::{BezierCurve, Point, rat, ratio};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use serde_json::Value;
@@ -46,11 +47,11 @@ fn subdivision_seed_001_fig9_control_polygons() {
     for case in fixture()["subdivisions"].as_array().unwrap() {
         let c = curve(&case["points"]);
         let t = num(&case["t"]);
-        let (l, r) = fraction_free::subdivide(&c, &t);
+        let (l, r) = c.subdivide(&t);
         assert_eq!(l, curve(&case["left"]), "{}", case["source"]);
         assert_eq!(r, curve(&case["right"]), "{}", case["source"]);
         // the generic (naive) route agrees
-        assert_eq!(casteljau::curve::casteljau::subdivide(&c, &t), (l, r));
+        assert_eq!(subdivide_de_casteljau(&c, &t), (l, r));
     }
 }
 
@@ -60,7 +61,7 @@ fn subdivision_seed_001_curve_is_2t_minus_1_cubed() {
     for k in -5..=15 {
         let t = ratio(k, 10);
         let u = rat(2) * &t - rat(1);
-        assert_eq!(fraction_free::eval(&c, &t), Point::new(vec![u.clone(), u.clone() * &u * &u]));
+        assert_eq!(c.eval(&t), Point::new(vec![u.clone(), u.clone() * &u * &u]));
     }
 }
 
@@ -70,7 +71,7 @@ fn repeated_subdivision_seed_001_fig10_pieces_lie_on_curve() {
         let c = curve(&case["points"]);
         let t0 = num(&case["t"]);
         let depth = case["depth"].as_u64().unwrap() as u32;
-        let pieces = subdivide_repeatedly(&c, &t0, depth).unwrap();
+        let pieces = c.subdivide_repeatedly(&t0, depth).unwrap();
         assert_eq!(pieces.len() as u64, case["pieces"].as_u64().unwrap());
         let ivs = subdivision_intervals(&t0, depth);
         for (p, (a, b)) in pieces.iter().zip(&ivs) {
@@ -143,7 +144,7 @@ fn value_tables_seed_003_exact() {
     for case in fixture()["tables"].as_array().unwrap() {
         let ts: Vec<BigRational> = case["t"].as_array().unwrap().iter().map(num).collect();
         let table = points(&case["values"]);
-        let on = |c: &BezierCurve<BigRational>| ts.iter().map(|t| fraction_free::eval(c, t)).collect::<Vec<_>>();
+        let on = |c: &BezierCurve<BigRational>| ts.iter().map(|t| c.eval(t)).collect::<Vec<_>>();
         match case.get("corrected_points") {
             None => assert_eq!(on(&curve(&case["points"])), table, "{}", case["source"]),
             Some(fix) => {
@@ -158,7 +159,7 @@ fn value_tables_seed_003_exact() {
 fn value_table_example_1_erratum_x_column_is_3t_squared() {
     let c = BezierCurve::new(parse_points("0 1, 1 2, 2 2, 3 1", 2, None).unwrap()).unwrap();
     let t = ratio(1, 10);
-    assert_eq!(fraction_free::eval(&c, &t).coords[0], ratio(3, 10)); // Example 1: x = 3t
+    assert_eq!(c.eval(&t).coords[0], ratio(3, 10)); // Example 1: x = 3t
     // the printed table has 0.03 = 3t^2 at t = 0.1
 }
 

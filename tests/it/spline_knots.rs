@@ -2,8 +2,8 @@
 //! knot insertion and exact removal, degree elevation — checked against an independent exact
 //! Cox–de Boor evaluation and the seed's scale-ratio route.
 
-use casteljau::num::point::Point;
-use casteljau::rational::implicit::{ImplicitOutcome, prove_implicit};
+use casteljau::num::Point;
+use casteljau::rational::{ImplicitOutcome, prove_implicit};
 use casteljau::spline::{Conversion, RationalSpline};
 use casteljau::{Scalar, rat, ratio};
 use num_rational::BigRational;
@@ -267,8 +267,8 @@ proptest! {
 
 #[test]
 fn knots_surface_equals_the_seed_net_route_and_is_proved() {
-    use casteljau::spline::net::SplineNet;
-    use casteljau::spline::surface::NurbsSurface;
+    use casteljau::spline::NurbsSurface;
+    use casteljau::spline::SplineNet;
     let pts: Vec<Vec<Point<BigRational>>> = (0..5)
         .map(|i| (0..5).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j + i + 2 * j) % 5)])).collect())
         .collect();
@@ -303,7 +303,7 @@ proptest! {
     /// surface and every join has the continuity of its multiplicity.
     #[test]
     fn knots_surface_patches_are_proved(p in 1usize..=3, q in 1usize..=2, mu in 1usize..=3, raw in prop::collection::vec((-5i64..=5, 1i64..=3), 64)) {
-        use casteljau::spline::surface::NurbsSurface;
+        use casteljau::spline::NurbsSurface;
         let mu = mu.min(p);
         let mut ku: Vec<BigRational> = vec![rat(0); p + 1];
         ku.extend(std::iter::repeat_n(rat(1), mu));

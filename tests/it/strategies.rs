@@ -1,8 +1,8 @@
 //! The exported edge-case strategies deliver what they promise, checked by the exact classifier
 //! and the certified fast path.
 
-use casteljau::classify::certified::summarize;
 use casteljau::classify::{CurveClass, NodeType, classify};
+use casteljau::internal::summarize;
 use casteljau::strategies::*;
 use casteljau::{Scalar, rat};
 use proptest::prelude::*;

@@ -2,10 +2,10 @@
 //! evaluations and operations), and spline nets → patches in both orders.
 
 use casteljau::proof::Reading;
-use casteljau::rational::rational_bezier::RationalBezier;
+use casteljau::rational::RationalBezier;
 use casteljau::spline::Conversion;
-use casteljau::spline::net::{SplineNet, check_net};
 use casteljau::spline::{RationalSpline, SegmentMismatch, check_segments, seed_cubic_segment, seed_quadratic_segment};
+use casteljau::spline::{SplineNet, check_net};
 use casteljau::surface::RationalPatch;
 use casteljau::{Point, rat, ratio};
 use num_rational::BigRational;
@@ -129,8 +129,7 @@ fn surface_contour_polynomial_vanishes_exactly_on_the_contour() {
     for k in 0..=8 {
         let (u, v) = (ratio(k, 8), ratio(1, 2));
         let h = p.eval_homogeneous(&u, &v);
-        let (bu, bv) =
-            (casteljau::poly::bernstein::bernstein_all(2, &u), casteljau::poly::bernstein::bernstein_all(3, &v));
+        let (bu, bv) = (casteljau::poly::bernstein_all(2, &u), casteljau::poly::bernstein_all(3, &v));
         let fv = f
             .iter()
             .enumerate()

@@ -2,12 +2,11 @@
 //! `surface::exact`, `classify::report`): each agrees with an independent route, serializes to
 //! the JSON the command line prints, and refuses over budget before any work.
 
-use casteljau::classify::report::{Classified, ClassifyOptions};
-use casteljau::curve::casteljau::subdivide;
-use casteljau::num::parse::parse_points;
-use casteljau::rational::exact::ParameterInterval;
+use casteljau::classify::{Classified, ClassifyOptions};
+use casteljau::num::parse_points;
+use casteljau::rational::ParameterInterval;
+use casteljau::surface::Direction;
 use casteljau::surface::RationalPatch;
-use casteljau::surface::exact::Direction;
 use casteljau::work::Budget;
 use casteljau::{BezierCurve, Error, RationalBezier, rat, ratio};
 
@@ -31,7 +30,7 @@ fn typed_results_eval_agrees_with_de_casteljau_and_bernstein() {
 fn typed_results_subdivision_agrees_with_generic_de_casteljau() {
     let c = curve("0 1, 1 3, 2 4, 4 2");
     let s = c.subdivide_within(&ratio(2, 5), &Budget::unlimited()).unwrap();
-    assert_eq!((s.left, s.right), subdivide(&c, &ratio(2, 5)));
+    assert_eq!((s.left, s.right), c.subdivide(&ratio(2, 5)));
 }
 
 #[test]
@@ -116,7 +115,7 @@ fn classify_routes_write_the_same_json() {
             Classified::Exact(r) => serde_json::to_string(&r).unwrap(),
         };
         let c = curve(text);
-        let big = casteljau::classify::report::ClassifyReport {
+        let big = casteljau::classify::ClassifyReport {
             classification: casteljau::classify::classify_in(&c).unwrap(),
             evidence: None,
             float: None,

@@ -3,7 +3,7 @@
 //! tolerance of an exact algebraic one. The tests in `tests/kurbo.rs` check kurbo's bounding
 //! boxes and inflections of cubics with it.
 
-use casteljau::poly::algebraic::RealAlgebraic;
+use casteljau::poly::RealAlgebraic;
 use num_rational::BigRational;
 
 /// Whether `|x − e| ≤ tol`, decided exactly: `x` and `tol` are taken as the exact values of their
@@ -13,7 +13,7 @@ use num_rational::BigRational;
 /// When `x` or `tol` is not finite.
 ///
 /// ```
-/// use casteljau::poly::algebraic::RealAlgebraic;
+/// use casteljau::poly::RealAlgebraic;
 /// use casteljau::rat;
 /// use casteljau_dependant::within;
 /// // √2 is the root of t² − 2 in [1, 2]

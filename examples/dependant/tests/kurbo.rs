@@ -4,7 +4,7 @@
 //! casteljau decides.
 
 use casteljau::classify::oracle::{FloatAnswers, Tolerances, check_f64};
-use casteljau::rational::extrema::bounding_box_polynomial;
+use casteljau::rational::bounding_box_polynomial;
 use casteljau::{BezierCurve, Point};
 use casteljau_dependant::within;
 use kurbo::{CubicBez, ParamCurveExtrema};

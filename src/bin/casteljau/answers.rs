@@ -3,21 +3,21 @@
 
 use crate::render::{Answer, Json};
 use casteljau::classify::Parameter;
-use casteljau::classify::rational_cubic::RationalClassification;
-use casteljau::classify::report::{Classified, ClassifyReport};
-use casteljau::curve::bezier::BezierCurve;
-use casteljau::curve::exact::{
+use casteljau::classify::RationalClassification;
+use casteljau::classify::{Classified, ClassifyReport};
+use casteljau::curve::BezierCurve;
+use casteljau::curve::{
     DegreeReduction, Derivative, Evaluation, PointAt, PowerForm, RepeatedSubdivision, Scheme, Subdivision,
 };
-use casteljau::num::quadratic_field::Radical;
-use casteljau::num::scalar::Scalar;
-use casteljau::rational::exact::{Conic, Definedness, RationalEvaluation, RationalSubdivision};
-use casteljau::rational::extrema::BoundingBox;
-use casteljau::rational::implicit::ImplicitOutcome;
-use casteljau::rational::rational_bezier::RationalBezier;
-use casteljau::surface::RationalPatch;
+use casteljau::num::Radical;
+use casteljau::num::Scalar;
+use casteljau::rational::BoundingBox;
+use casteljau::rational::ImplicitOutcome;
+use casteljau::rational::RationalBezier;
+use casteljau::rational::{Conic, Definedness, RationalEvaluation, RationalSubdivision};
 use casteljau::surface::PatchValue;
-use casteljau::surface::exact::{Contour, PatchSplit};
+use casteljau::surface::RationalPatch;
+use casteljau::surface::{PatchContour, PatchSplit};
 use num_rational::BigRational;
 use serde_json::Value;
 
@@ -291,7 +291,7 @@ pub(crate) fn patch(p: &RationalPatch) -> Answer {
 }
 
 /// `surface contour`.
-pub(crate) fn contour(c: &Contour) -> Answer {
+pub(crate) fn contour(c: &PatchContour) -> Answer {
     let rows: Vec<String> = c
         .bernstein_coefficients
         .iter()

@@ -543,11 +543,11 @@ pub enum Numbers {
     Binary64,
 }
 
-impl From<Numbers> for casteljau::num::parse::NumberMode {
+impl From<Numbers> for casteljau::num::NumberMode {
     fn from(n: Numbers) -> Self {
         match n {
-            Numbers::Exact => casteljau::num::parse::NumberMode::Exact,
-            Numbers::Binary64 => casteljau::num::parse::NumberMode::Binary64,
+            Numbers::Exact => casteljau::num::NumberMode::Exact,
+            Numbers::Binary64 => casteljau::num::NumberMode::Binary64,
         }
     }
 }

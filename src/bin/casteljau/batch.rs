@@ -8,7 +8,7 @@ use crate::args::{CurveArgs, RationalArgs};
 use crate::input::{Block, Blocks};
 use crate::pipeline::ordered_parallel;
 use crate::render::{Rendered, write_rendered};
-use casteljau::curve::bezier::BezierCurve;
+use casteljau::curve::BezierCurve;
 use casteljau::error::{Error, Result};
 
 use num_rational::BigRational;
@@ -58,7 +58,7 @@ pub fn batch(
     f: impl Fn(&BezierCurve<BigRational>) -> Result<Answer> + Sync,
 ) -> i32 {
     batch_lines(args, out, |line, text| {
-        casteljau::curve::bezier::parse_curve_in(text, args.dim, line, args.numbers.into()).and_then(|c| f(&c))
+        casteljau::curve::parse_curve_in(text, args.dim, line, args.numbers.into()).and_then(|c| f(&c))
     })
 }
 

@@ -10,10 +10,10 @@
 
 use crate::args::CheckArgs;
 use casteljau::classify::oracle::{self, Disagreement, FloatAnswers, Tolerances};
-use casteljau::curve::bezier::BezierCurve;
+use casteljau::curve::BezierCurve;
 use casteljau::error::{Error, Position, Result};
-use casteljau::num::parse::{NumberMode, parse_number_in, parse_points_in};
-use casteljau::num::point::Point;
+use casteljau::num::Point;
+use casteljau::num::{NumberMode, parse_number_in, parse_points_in};
 use num_rational::BigRational;
 use std::collections::BTreeMap;
 use std::io::{BufRead, Write};

@@ -7,8 +7,8 @@ use crate::batch::{batch, rational_batch};
 use crate::options::{Weights, option_number, patch_of, rational_curve, weights_family};
 use crate::render::{Answer, Json};
 use casteljau::error::{Error, Result};
+use casteljau::surface::Direction;
 use casteljau::surface::RationalPatch;
-use casteljau::surface::exact::Direction;
 use std::io::Write;
 
 pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {

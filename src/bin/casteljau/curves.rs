@@ -7,10 +7,10 @@ use crate::answers;
 use crate::args::{CurveArgs, Detail, RationalArgs};
 use crate::batch::{batch, batch_lines_with, rational_batch};
 use crate::options::{Weights, option_number_in, rational_curve};
-use casteljau::classify::report::{ClassifyOptions, classify_rational_curve};
+use casteljau::classify::{ClassifyOptions, classify_rational_curve};
 use casteljau::error::{Error, Result};
-use casteljau::rational::exact::ParameterInterval;
-use casteljau::rational::extrema::bounding_box_within;
+use casteljau::rational::ParameterInterval;
+use casteljau::rational::bounding_box_within;
 use num_rational::BigRational;
 use std::io::Write;
 

@@ -5,11 +5,11 @@
 use crate::args::IntersectArgs;
 use crate::batch::{Answer, Json, batch_lines, numbers_in};
 use casteljau::error::{Error, Result};
-use casteljau::format::svg_path;
-use casteljau::intersect::winding::{ClosedPath, FillRule, PathWinding};
+use casteljau::format::fill_path;
+use casteljau::intersect::{ClosedPath, FillRule, PathWinding};
 use casteljau::intersect::{Domain, Intersections, intersect, intersect_within, self_intersect, self_intersect_within};
-use casteljau::num::parse::{NumberMode, parse_points_in};
-use casteljau::num::scalar::rat;
+use casteljau::num::rat;
+use casteljau::num::{NumberMode, parse_points_in};
 use casteljau::rational::RationalBezier;
 use num_rational::BigRational;
 use std::io::Write;
@@ -111,7 +111,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
 
 /// `casteljau winding --point "x y" PATH`: the winding number of a closed path (segments
 /// separated by `;`, or SVG path data with `--svg`, every subpath closed as SVG fills it,
-/// [`svg_path::fill_path`]) around the point, or where the point lies on the path. JSON: the
+/// [`fill_path`]) around the point, or where the point lies on the path. JSON: the
 /// fields of [`PathWinding`]: `winding` (absent on the boundary), `inside` (non-zero rule),
 /// `even_odd`, `on_boundary` (`{"subpath", "segment", "t", "t_float"}` or absent).
 pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 {
@@ -132,7 +132,7 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
     let curve_args = args.batch.curve_args(args.path.clone());
     batch_lines(&curve_args, out, |line, text_line| {
         let path = if svg {
-            svg_path::fill_path(text_line, mode)?
+            fill_path(text_line, mode)?
         } else {
             let contour = text_line
                 .split(';')

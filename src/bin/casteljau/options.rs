@@ -2,10 +2,10 @@
 //! `--weights`/`--homogeneous`, and a patch's `--degree m,n`. Errors name the option.
 
 use crate::args::RationalArgs;
-use casteljau::curve::bezier::BezierCurve;
+use casteljau::curve::BezierCurve;
 use casteljau::error::{Error, Position, Result};
-use casteljau::num::parse::{NumberMode, parse_number_in, parse_numbers};
-use casteljau::rational::rational_bezier::RationalBezier;
+use casteljau::num::{NumberMode, parse_number_in, parse_numbers};
+use casteljau::rational::RationalBezier;
 use casteljau::surface::RationalPatch;
 use num_rational::BigRational;
 

@@ -9,16 +9,16 @@
 //! index among shape elements), `tag`, `subpath`; text batches: `line`; then `index` (the
 //! segment's place in its contour/subpath/line), the fields of `classify --json` (`degree`,
 //! `class`, `segment`, exact parameters, …), `points` (exact strings) and `flags` (see
-//! `casteljau::classify::SegmentFlag`); the records are `casteljau::format::scan::ScanRecord`s. A piece that is no polynomial Bézier curve (an SVG
+//! `casteljau::classify::SegmentFlag`); the records are `casteljau::format::ScanRecord`s. A piece that is no polynomial Bézier curve (an SVG
 //! arc) has `skipped` (the reason), `from` and `to` instead; an element or glyph that cannot be
 //! read has `error`.
 
 use crate::args::ScanArgs;
 use casteljau::classify::{Classification, SegmentFlag, classify, segment_flags};
-use casteljau::curve::bezier::BezierCurve;
-use casteljau::format::scan::{Element, ScanRecord, Source as Provenance};
-use casteljau::format::{Contour, Segment, font, svg, svg_path};
-use casteljau::num::parse::{NumberMode, parse_points_in};
+use casteljau::curve::BezierCurve;
+use casteljau::format::{Contour, Font, Segment, font_count, parse_path, read_svg};
+use casteljau::format::{Element, ScanRecord, Source as Provenance};
+use casteljau::num::{NumberMode, parse_points_in};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::io::{IsTerminal, Write};
@@ -201,7 +201,7 @@ pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
     let mut write = |r: &Rendered| -> bool { out.write_all(&r.lines).is_ok() };
     if let Some(d) = &args.path {
         let at = Provenance { element: Some(Element::Index(0)), ..Provenance::new("<path>") };
-        let r = match svg_path::parse_path(d, sc.mode) {
+        let r = match parse_path(d, sc.mode) {
             Ok(contours) => sc.render(&at, &contours, Unit::Element),
             Err(e) => sc.rendered_error(&at, e.to_string()),
         };
@@ -264,9 +264,9 @@ type Each<'e> = dyn FnMut(Vec<Rendered>, Option<usize>) -> bool + 'e;
 
 fn scan_font(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
     let data = std::fs::read(file).map_err(|e| format!("cannot read: {e}"))?;
-    let faces = font::font_count(&data).map_err(|e| e.to_string())?;
+    let faces = font_count(&data).map_err(|e| e.to_string())?;
     for face in 0..faces {
-        let mut f = font::Font::open(&data, face).map_err(|e| e.to_string())?;
+        let mut f = Font::open(&data, face).map_err(|e| e.to_string())?;
         if let Some(v) = &sc.variation {
             f.set_variation(v).map_err(|e| format!("--variation: {e}"))?;
         }
@@ -301,7 +301,7 @@ fn scan_font(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each
 
 fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
     let text = std::fs::read_to_string(file).map_err(|e| format!("cannot read: {e}"))?;
-    let shapes = svg::read_svg(&text, sc.mode).map_err(|e| e.to_string())?;
+    let shapes = read_svg(&text, sc.mode).map_err(|e| e.to_string())?;
     let n = shapes.len();
     for chunk in shapes.chunks(UNITS_PER_CHUNK) {
         let rendered: Vec<Rendered> = pool.install(|| {

@@ -25,7 +25,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::poly::algebraic::RealAlgebraic;
+//! use casteljau::poly::RealAlgebraic;
 //! use casteljau::{rat, ratio};
 //! // t² − 2: √2 and −√2; t³ − 2: ∛2
 //! let r = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)]);
