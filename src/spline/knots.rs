@@ -427,20 +427,31 @@ impl RationalSpline {
     /// assert_eq!(pieces[0].homogeneous[2], pieces[1].homogeneous[0]); // C^0 at least: they share a point
     /// ```
     pub fn bezier_pieces(&self) -> Result<Vec<BezierPiece>> {
+        // Each piece depends only on its span's n + 1 control points and 2n + 1 knots: insert
+        // the span's ends into that window (linear in the spline's size, where inserting into
+        // the whole spline copied it for every insertion).
         let n = self.degree;
-        let (mut u, mut p) = (self.knots.clone(), self.homogeneous.clone());
-        let mut breaks: Vec<BigRational> = self.span_indices().iter().map(|&j| self.knots[j].clone()).collect();
-        breaks.push(self.domain().1);
-        for b in &breaks {
-            while multiplicity(&u[1..], b) < n {
-                (u, p) = insert(&u, &p, n, b);
-            }
-        }
-        Ok(breaks
-            .windows(2)
-            .map(|w| {
-                let k = u.iter().rposition(|x| *x == w[0]).expect("break is a knot");
-                BezierPiece { span: (w[0].clone(), w[1].clone()), homogeneous: p[k - n..=k].to_vec() }
+        let end = self.domain().1;
+        let spans = self.span_indices();
+        Ok(spans
+            .iter()
+            .enumerate()
+            .map(|(s, &j)| {
+                let (a, b) =
+                    (self.knots[j].clone(), spans.get(s + 1).map_or(end.clone(), |&next| self.knots[next].clone()));
+                let mut u: Vec<BigRational> = self.knots[j - n..].iter().take(2 * n + 1).cloned().collect();
+                if u.len() < 2 * n + 1 {
+                    // the last knot t_{m+n+1} is not kept: it never influences the curve
+                    u.push(u.last().expect("knots").clone());
+                }
+                let mut p: Vec<Point<BigRational>> = self.homogeneous[j - n..=j].to_vec();
+                for knot in [&a, &b] {
+                    while multiplicity(&u[1..], knot) < n {
+                        (u, p) = insert(&u, &p, n, knot);
+                    }
+                }
+                let k = u.iter().rposition(|x| *x == a).expect("a is a knot");
+                BezierPiece { span: (a, b), homogeneous: p[k - n..=k].to_vec() }
             })
             .collect())
     }
@@ -482,12 +493,17 @@ impl RationalSpline {
     /// ```
     pub fn joins(&self, segments: &[RationalBezier<BigRational>]) -> Vec<Join> {
         let n = self.degree;
+        let indices = self.span_indices();
         let spans: Vec<(BigRational, BigRational)> =
-            self.span_indices().iter().map(|&j| (self.knots[j].clone(), self.knots[j + 1].clone())).collect();
+            indices.iter().map(|&j| (self.knots[j].clone(), self.knots[j + 1].clone())).collect();
         (0..segments.len().saturating_sub(1).min(spans.len().saturating_sub(1)))
             .map(|s| {
                 let knot = spans[s].1.clone();
-                let mu = multiplicity(&self.knots[1..], &knot).min(n + 1);
+                // the knots do not decrease: the copies of t_{j+1} in t_1 … are its neighbours
+                let at = indices[s] + 1;
+                let left = self.knots[1..at].iter().rev().take_while(|k| **k == knot).count();
+                let right = self.knots[at..].iter().take_while(|k| **k == knot).count();
+                let mu = (left + right).min(n + 1);
                 let order = n as i64 - mu as i64;
                 let (la, lb) = (spans[s].1.clone() - &spans[s].0, spans[s + 1].1.clone() - &spans[s + 1].0);
                 let proved = order < 0 || joins_with_order(&segments[s], &segments[s + 1], &la, &lb, order as usize);

@@ -268,8 +268,12 @@ impl RationalSpline {
         budget.check(self.work_what("Bézier segments of"), crate::work::spline_conversion(self.work_shape()))?;
         let segs = self.to_bezier(how)?;
         let joins = self.joins(&segs);
-        let segments =
-            segs.into_iter().enumerate().map(|(s, curve)| SplineSegment { curve, span: self.span(s) }).collect();
+        let spans = self.span_indices();
+        let segments = segs
+            .into_iter()
+            .zip(spans)
+            .map(|(curve, j)| SplineSegment { curve, span: (self.knots[j].clone(), self.knots[j + 1].clone()) })
+            .collect();
         Ok(BezierConversion { degree: self.degree, joins, method: how, segments })
     }
 
