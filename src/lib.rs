@@ -18,12 +18,12 @@
 //! * [`rational`], [`surface`], [`spline`]: rational curves ([`RationalBezier`]), Menelaus
 //!   configurations and implicit equations; rational tensor-product patches; rational splines
 //!   and spline nets.
-//! * [`classify`]: exact cubic classification, the certified fast path, moving lines,
+//! * [`classify`](mod@classify): exact cubic classification, the certified fast path, moving lines,
 //!   canonical forms, rational cubics.
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
 //!
-//! [`error`], [`work`] (cost estimates checked before exact work starts) and [`oracle`] (the float oracles' matching, for [`classify`] and [`intersect`]) are shared by all. The command line lives in `src/bin/casteljau/` and is not part
+//! [`error`], [`work`] (cost estimates checked before exact work starts) and [`oracle`] (the float oracles' matching, for [`classify`](mod@classify) and [`intersect`](mod@intersect)) are shared by all. The command line lives in `src/bin/casteljau/` and is not part
 //! of the library.
 //!
 //! ```

@@ -4,8 +4,8 @@
 //! Casteljau at `t = p/q` multiplies bit lengths by the degree, a power form carries binomials
 //! of `n` bits. An accepted input must get its answer in bounded time, so every exact operation
 //! the command line offers has a library entry taking a [`Budget`] (`BezierCurve::eval_within`
-//! and the others of [`crate::curve::exact`], [`crate::rational::exact`],
-//! [`crate::rational::extrema::bounding_box_within`], ...) that estimates its cost here first and
+//! and the other `*_within` operations of [`crate::curve`], [`crate::rational`],
+//! [`crate::rational::bounding_box_within`], ...) that estimates its cost here first and
 //! refuses with [`Error::WorkLimit`] (naming the limit and the option that raises it) when the
 //! estimate exceeds the budget.
 //!

@@ -4,7 +4,7 @@
 //!
 //! * `id` (unique across the catalogue), `source` (the place in the seed: equation, example,
 //!   figure), `statement` (in words), `expect` = `"holds"` or `"fails-as-printed"`;
-//! * the checkable content: `kind` and that kind's fields (see [`claims`]), written
+//! * the checkable content: `kind` and that kind's fields (see [`ClaimContent`]), written
 //!   **as printed** in the seed, OCR and typesetting errors included;
 //! * for `fails-as-printed`, a `[claim.corrected]` table overriding the fields that change, and
 //!   optionally `note`: the corrected statement must hold.

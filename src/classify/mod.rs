@@ -15,7 +15,7 @@
 //!   `D = a0 + a1 t_E + a2 (t_E² + d) + a3 (t_E³ + 3 t_E d)`.
 //!
 //! Segment features on the closed interval `[0, 1]` are decided exactly in `Q(√d)`.
-//! The seed's moving-line route ([`crate::classify::moving_line`]) and the Loop–Blinn discriminant
+//! The seed's moving-line route ([`MovingLines`]) and the Loop–Blinn discriminant
 //! ([`loop_blinn`]) are independent cross-checks.
 
 pub(crate) mod canonical;

@@ -104,7 +104,7 @@ impl ClassifyOptions {
     /// The direct route: a planar cubic whose numbers are integers (or fit a fixed-width
     /// rational over a common denominator), with neither evidence nor floats asked for, is
     /// classified straight to its JSON object (`{…}`, the fields of [`ClassifyReport`]'s JSON),
-    /// appended to `out` ([`crate::classify::integer`]). False, with `out` unchanged, when the
+    /// appended to `out` (the crate's integer route). False, with `out` unchanged, when the
     /// route does not apply: then [`ClassifyOptions::classify_text`] answers.
     pub fn write_json_direct(&self, text: &str, out: &mut Vec<u8>) -> bool {
         use crate::classify::integer::{classify_json, classify_json_small};

@@ -276,7 +276,7 @@ impl BezierCurve<BigRational> {
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as
-    /// [`fraction_free::elevate`].
+    /// [`BezierCurve::elevate`] (fraction-free).
     ///
     /// ```
     /// use casteljau::{BezierCurve, num::parse::parse_points, work::Budget};

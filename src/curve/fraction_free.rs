@@ -87,7 +87,7 @@ pub fn eval(curve: &BezierCurve<BigRational>, t: &BigRational) -> Point<BigRatio
     eval_integer(&IntegerCurve::new(curve), t)
 }
 
-/// [`eval`] on a curve already brought over a common denominator (for repeated evaluation).
+/// [`BezierCurve::eval`] on a curve already brought over a common denominator (for repeated evaluation).
 pub fn eval_integer(curve: &IntegerCurve, t: &BigRational) -> Point<BigRational> {
     let raw = horner::<i128>(curve, t.numer(), t.denom())
         .unwrap_or_else(|| horner::<BigInt>(curve, t.numer(), t.denom()).expect("BigInt arithmetic does not overflow"));

@@ -1,5 +1,5 @@
-//! Users' files read into exact Bézier segments: SVG path data ([`svg_path`]) and SVG documents
-//! ([`svg`]), TrueType and CFF fonts ([`font`]). The edge layer: it depends on the numbers and
+//! Users' files read into exact Bézier segments: SVG path data ([`parse_path`]) and SVG documents
+//! (`read_svg`, feature `svg`), TrueType and CFF fonts (`Font`, feature `fonts`). The edge layer: it depends on the numbers and
 //! curves below it and nothing depends on it; readers never round — a number that cannot be
 //! taken exactly is an error or a skipped piece with its reason, never an approximation.
 //!

@@ -2,7 +2,7 @@
 //! exact polynomial arithmetic (trim, division, gcd, square-free part, quadratic roots),
 //! exact real root isolation, exact real algebraic numbers ([`algebraic::RealAlgebraic`]),
 //! polynomials over `Z[v]` and their resultants (crate-internal `resultant`, shared with the
-//! intersection code), and factor-degree bounds from reductions modulo primes ([`modular`]).
+//! intersection code), and factor-degree bounds from reductions modulo primes ([`min_factor_degree`]).
 //!
 //! Depends only on [`crate::num`].
 

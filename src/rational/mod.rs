@@ -1,6 +1,6 @@
 //! Rational Bézier curves (seeds 000 and 002 §2): [`RationalBezier`] in homogeneous form,
 //! Menelaus configurations, implicit equations proved along a curve, and exact extrema and
-//! bounding boxes ([`extrema`], polynomial curves included).
+//! bounding boxes ([`bounding_box`], polynomial curves included).
 //!
 //! Depends on [`crate::num`], [`crate::poly`], [`crate::proof`] and [`crate::curve`].
 

@@ -355,7 +355,7 @@ impl ConicType {
 impl RationalBezier<BigRational> {
     /// A fraction-free exact evaluator for repeated use: the homogeneous curve is brought over
     /// one common denominator once, each call runs the integer Horner kernel of
-    /// [`crate::curve::fraction_free`] and divides by `W(t)` at the end. Equal to [`Self::eval`].
+    /// the fraction-free kernels and divides by `W(t)` at the end. Equal to [`Self::eval`].
     ///
     /// # Errors
     /// The returned function gives [`Error::WeightsVanish`] where `W(t) = 0`.
