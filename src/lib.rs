@@ -27,9 +27,9 @@
 //! of the library.
 //!
 //! ```
-//! use casteljau::{BezierCurve, curve::fraction_free, num::parse::parse_points, ratio};
+//! use casteljau::{BezierCurve, parse_points, ratio};
 //! let c = BezierCurve::new(parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap()).unwrap();
-//! let (left, right) = fraction_free::subdivide(&c, &ratio(1, 3));
+//! let (left, right) = c.subdivide(&ratio(1, 3)); // fraction-free over BigRational
 //! assert_eq!(left.to_string(), "-1 -1, -7/9 -1/3, -5/9 -1/9, -1/3 -1/27");
 //! assert_eq!(right.to_string(), "-1/3 -1/27, 1/9 1/9, 5/9 -1/3, 1 1");
 //! ```

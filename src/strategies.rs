@@ -3,7 +3,7 @@
 //!
 //! Every edge-case curve is a random invertible affine image (small integer matrix, integer
 //! offset) of a canonical curve reparametrised so the feature sits exactly where promised; the
-//! control points are exact rationals (use [`crate::num::scalar::ratio_to_f64`] to feed float code).
+//! control points are exact rationals (use [`crate::num::ratio_to_f64`] to feed float code).
 //!
 //! ```
 //! use casteljau::{classify::classify, strategies};

@@ -16,7 +16,7 @@
 //! The estimates are for the typical case (they are not worst-case bounds); where the work
 //! depends on the input beyond its sizes, the operation also counts its steps while running
 //! and stops with an error naming the limit: root isolation charges each subdivision against
-//! the budget ([`crate::poly::roots::isolate_bernstein_within`]), and the expression language
+//! the budget ([`crate::poly::isolate_bernstein_within`]), and the expression language
 //! charges each `sum`/`prod` term, large power, binomial and Bernstein polynomial
 //! ([`crate::proof::expr::with_step_limit`]; the command line allows one step per 200 units).
 //!

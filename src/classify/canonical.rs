@@ -38,7 +38,7 @@ use std::cmp::Ordering;
 ///
 /// # Example
 /// ```
-/// use casteljau::{Scalar, rat, classify::canonical::Sqrt3Field};
+/// use casteljau::{Scalar, rat, classify::Sqrt3Field};
 /// let s3 = Sqrt3Field::sqrt(rat(3));
 /// assert_eq!(s3.clone() * s3, Sqrt3Field::from_i64(3));
 /// ```
@@ -47,7 +47,7 @@ pub type Sqrt3Field = QuadraticExt<BigRational>;
 ///
 /// # Example
 /// ```
-/// use casteljau::{Scalar, rat, classify::canonical::{Tower, tower_sqrt}};
+/// use casteljau::{Scalar, rat, classify::{Tower, tower_sqrt}};
 /// let x = tower_sqrt(&rat(5)) * tower_sqrt(&rat(3));
 /// assert_eq!(x.clone() * x, Tower::from_i64(15));
 /// ```
@@ -57,8 +57,8 @@ pub type Tower = QuadraticExt<Sqrt3Field>;
 ///
 /// # Example
 /// ```
-/// # use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
-/// # use casteljau::classify::{classify, canonical::*, moving_line::MovingLines};
+/// # use casteljau::{BezierCurve, num::parse_points, proof::Reading};
+/// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_equation, canonical_map, Tower};
 /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
 /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
 /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
@@ -83,7 +83,7 @@ pub struct CanonicalMap {
 ///
 /// # Example
 /// ```
-/// use casteljau::classify::{NodeType, canonical::canonical_equation};
+/// use casteljau::classify::{NodeType, canonical_equation};
 /// assert_eq!(canonical_equation(NodeType::Crunode), "x^3 + x^2 - 3*y^2 = 0");
 /// ```
 pub fn canonical_equation(node: NodeType) -> &'static str {
@@ -111,7 +111,7 @@ fn sqrt3() -> Tower {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Scalar, rat, classify::canonical::{Tower, tower_sqrt}};
+/// use casteljau::{Scalar, rat, classify::{Tower, tower_sqrt}};
 /// assert_eq!(tower_sqrt(&rat(4)), Tower::from_i64(2));
 /// assert_eq!(tower_sqrt(&rat(12)) * tower_sqrt(&rat(12)), Tower::from_i64(12));
 /// ```
@@ -134,7 +134,7 @@ pub fn tower_sqrt(r: &BigRational) -> Tower {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Scalar, classify::{NodeType, canonical::{Tower, canonical_point}}};
+/// use casteljau::{Scalar, classify::{NodeType, Tower, canonical_point}};
 /// // the canonical cusp x³ − 3y² = 0 at s = 1
 /// let p = canonical_point(NodeType::Cusp, &Tower::from_i64(1));
 /// let (x, y) = (p.coords[0].clone(), p.coords[1].clone());
@@ -184,8 +184,8 @@ impl Lines<'_> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
-/// use casteljau::classify::{classify, NodeType, canonical::canonical_map, moving_line::MovingLines};
+/// use casteljau::{BezierCurve, num::parse_points, proof::Reading};
+/// use casteljau::classify::{classify, NodeType, canonical_map, MovingLines};
 /// // a cusp at t = 1/2: canonical curve x³ − 3y² = 0
 /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
 /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
@@ -291,8 +291,8 @@ impl CanonicalMap {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
-    /// # use casteljau::classify::{classify, canonical::*, moving_line::MovingLines};
+    /// # use casteljau::{BezierCurve, num::parse_points, proof::Reading};
+    /// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_equation, canonical_map, Tower};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
     /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
@@ -318,8 +318,8 @@ impl CanonicalMap {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, proof::Reading};
-    /// # use casteljau::classify::{classify, canonical::*, moving_line::MovingLines};
+    /// # use casteljau::{BezierCurve, num::parse_points, proof::Reading};
+    /// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_equation, canonical_map, Tower};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
     /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();

@@ -119,8 +119,8 @@ impl CanonicalEvidence {
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, num::parse::parse_points};
-/// use casteljau::classify::{classify, evidence::cubic_evidence};
+/// use casteljau::{BezierCurve, num::parse_points};
+/// use casteljau::classify::{classify, cubic_evidence};
 /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
 /// let k = classify(&c).unwrap();
 /// let e = cubic_evidence(&c, &k).unwrap().unwrap();

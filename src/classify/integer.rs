@@ -159,7 +159,7 @@ fn node_of(class: CurveClass) -> Option<Option<NodeType>> {
 }
 
 /// The parameters of a genuine cubic from `t_E` and `d` (`count` of them): `t_E ∓ √r` as
-/// [`center_plus_minus_sqrt`](crate::poly::polynomial::center_plus_minus_sqrt) gives them, built
+/// [`center_plus_minus_sqrt`](crate::poly::center_plus_minus_sqrt) gives them, built
 /// from their parts (no field operations with `0`, which cost a big gcd each in `BigRational`).
 fn parameters<K: Radical>(
     node: NodeType,
@@ -415,13 +415,13 @@ thread_local! {
 }
 
 /// [`classify_json_scaled`] of a cubic with fixed-width rational control points (as
-/// [`small_cubic`](crate::num::parse::small_cubic) reads them): scaled by the lcm of the
+/// [`small_cubic`](crate::internal::small_cubic) reads them): scaled by the lcm of the
 /// denominators; `false` when that scale does not fit `i128` or the route does not take the curve.
 ///
 /// # Example
 /// ```
 /// use casteljau::internal::classify_json_small;
-/// use casteljau::num::{NumberMode, small_cubic};
+/// use casteljau::{internal::small_cubic, num::NumberMode};
 /// let p = small_cubic("0 0, 1/2 1/2, 0 1/2, 1/2 0", NumberMode::Exact).unwrap();
 /// let mut out = vec![];
 /// assert!(classify_json_small(&p, &mut out));

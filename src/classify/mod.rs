@@ -350,7 +350,7 @@ impl<K: Radical> Classification<K> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, classify::{classify, NodeType}, num::parse::parse_points};
+/// use casteljau::{BezierCurve, classify::{classify, NodeType}, num::parse_points};
 /// // a cusp at t = 1/2: P0 P1 P2 P3 = (0,0) (1,1) (0,1) (1,0)
 /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
 /// let k = classify(&c).unwrap();
@@ -674,7 +674,7 @@ impl std::fmt::Display for SegmentFlag {
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, classify::{SegmentFlag, classify, segment_flags}, num::parse::parse_points};
+/// use casteljau::{BezierCurve, classify::{SegmentFlag, classify, segment_flags}, num::parse_points};
 /// let c = BezierCurve::new(parse_points("0 0, 0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
 /// let k = classify(&c).unwrap();
 /// assert_eq!(segment_flags(c.points(), &k), [SegmentFlag::ZeroLengthHandle, SegmentFlag::CuspAtEndpoint]);

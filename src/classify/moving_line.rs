@@ -30,7 +30,7 @@ type P3 = Point<BigRational>;
 ///
 /// # Example
 /// ```
-/// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+/// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
 /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
 /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
 /// let ml = MovingLines::new(&c).unwrap();
@@ -64,7 +64,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -83,7 +83,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -112,7 +112,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -127,7 +127,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -141,7 +141,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -159,7 +159,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -174,7 +174,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -188,7 +188,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();
@@ -211,7 +211,7 @@ impl MovingLines {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{BezierCurve, num::parse::parse_points, classify::moving_line::MovingLines, ratio};
+    /// # use casteljau::{BezierCurve, num::parse_points, classify::MovingLines, ratio};
     /// // the cusp P0..P3 = (0,0) (1,1) (0,1) (1,0): cusp at t = 1/2, D = (1/2, 3/4)
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let ml = MovingLines::new(&c).unwrap();

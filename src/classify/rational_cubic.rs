@@ -103,7 +103,7 @@ impl serde::Serialize for RationalClassification {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, classify::rational_cubic::classify_rational, classify::NodeType};
+/// use casteljau::{Point, rat, classify::classify_rational, classify::NodeType};
 /// // seed 000 example 2 (the folium): b = (0,0) (1,0) (2,1) (3/2,3/2), w = 1 1 1 2
 /// let h: Vec<Point<_>> = [(0, 0, 1), (1, 0, 1), (2, 1, 1), (3, 3, 2)]
 ///     .iter().map(|&(x, y, w)| Point::new(vec![rat(x), rat(y), rat(w)])).collect();

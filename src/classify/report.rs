@@ -1,7 +1,7 @@
 //! Classifying a curve written as text, by the fastest exact route that answers what was asked
 //! (one place chooses the route): [`ClassifyOptions::write_json_direct`] for planar cubics in
 //! fixed-width integers straight to JSON, then [`ClassifyOptions::classify_text`] in fixed-width
-//! rationals when every step fits ([`crate::num::small::checked`]), else in big rationals. The
+//! rationals when every step fits ([`crate::num::checked`]), else in big rationals. The
 //! cubic's evidence ([`crate::classify::evidence`]) is always computed in big rationals.
 //!
 //! ```
@@ -122,7 +122,7 @@ impl ClassifyOptions {
     /// else in big rationals.
     ///
     /// # Errors
-    /// As [`crate::num::parse::parse_points_in`], [`BezierCurve::new`] and
+    /// As [`crate::num::parse_points_in`], [`BezierCurve::new`] and
     /// [`crate::classify::classify_in`].
     pub fn classify_text(&self, text: &str, line: Option<usize>) -> Result<Classified> {
         // count the numbers before reading them: memory stays a small multiple of the line
@@ -151,7 +151,7 @@ impl ClassifyOptions {
 /// [`Error::InvalidArgument`] unless the curve is a planar cubic; as [`classify_rational`].
 ///
 /// ```
-/// use casteljau::{RationalBezier, num::parse::parse_points, rat, classify::report::classify_rational_curve};
+/// use casteljau::{RationalBezier, num::parse_points, rat, classify::classify_rational_curve};
 /// let folium = RationalBezier::new(parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(),
 ///     vec![rat(1), rat(1), rat(1), rat(2)]).unwrap();
 /// assert_eq!(classify_rational_curve(&folium).unwrap().double_point.unwrap().to_string(), "(0, 0)");

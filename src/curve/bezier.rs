@@ -58,7 +58,7 @@ pub fn check_polygon_text(text: &str, dim: usize) -> Result<()> {
 /// untrusted text (a line of a batch), whose memory stays proportional to the text.
 ///
 /// # Errors
-/// As [`check_polygon_text`], [`crate::num::parse::parse_points_in`] and [`BezierCurve::new`].
+/// As [`check_polygon_text`], [`crate::num::parse_points_in`] and [`BezierCurve::new`].
 ///
 /// # Example
 /// ```
@@ -85,7 +85,7 @@ pub fn parse_curve_in(
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, num::parse::parse_points, ratio};
+/// use casteljau::{BezierCurve, num::parse_points, ratio};
 /// let c = BezierCurve::new(parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap()).unwrap();
 /// // seed 001: this is (2t − 1, (2t − 1)³)
 /// assert_eq!(c.eval(&ratio(1, 3)).to_string(), "(-1/3, -1/27)");
@@ -158,7 +158,7 @@ impl<S: Scalar> BezierCurve<S> {
     /// ```
     /// use casteljau::{BezierCurve, num::parse_points, ratio};
     /// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
-    /// assert_eq!(c.eval(&ratio(1, 3)).to_string(), "(23/27, 8/3)");
+    /// assert_eq!(c.eval(&ratio(1, 3)).to_string(), "(28/27, 70/27)");
     /// ```
     pub fn eval(&self, t: &S) -> Point<S> {
         if let Some((c, t)) = as_exact(self, t) {

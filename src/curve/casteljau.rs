@@ -17,9 +17,9 @@ pub const MAX_SUBDIVISION_DEPTH: u32 = 16;
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, curve::casteljau::triangle, num::parse::parse_points, ratio};
+/// use casteljau::{BezierCurve, num::parse_points, ratio};
 /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-/// let tri = triangle(&c, &ratio(1, 2));
+/// let tri = c.triangle(&ratio(1, 2));
 /// assert_eq!(tri.rows[1][0].to_string(), "(1/2, 1)");
 /// assert_eq!(tri.point().to_string(), "(1, 1)");
 /// ```
@@ -61,9 +61,9 @@ pub fn triangle<S: Scalar>(curve: &BezierCurve<S>, t: &S) -> DeCasteljauTriangle
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, curve::casteljau::subdivide, num::parse::parse_points, ratio};
+/// use casteljau::{BezierCurve, num::parse_points, ratio};
 /// let c = BezierCurve::new(parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap()).unwrap();
-/// let (l, r) = subdivide(&c, &ratio(1, 3));
+/// let (l, r) = c.subdivide(&ratio(1, 3));
 /// assert_eq!(l.to_string(), "-1 -1, -7/9 -1/3, -5/9 -1/9, -1/3 -1/27");
 /// assert_eq!(r.eval(&ratio(0, 1)), l.eval(&ratio(1, 1)));
 /// ```

@@ -6,7 +6,7 @@
 //! The kernels are the fraction-free ones of [`crate::curve::fraction_free`].
 //!
 //! ```
-//! use casteljau::{BezierCurve, num::parse::parse_points, ratio, work::Budget};
+//! use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
 //! let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
 //! let e = c.eval_within(&[ratio(1, 2)], &Budget::unlimited()).unwrap();
 //! assert_eq!(e.values[0].point.to_string(), "(1, 1)");
@@ -140,7 +140,7 @@ impl PowerForm {
     /// Coordinate `k` as a polynomial in `var` ([`polynomial_text`]).
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
     /// let p = c.power_form_within(&Budget::unlimited()).unwrap();
     /// assert_eq!(p.coordinate_text(1, "t"), "4t - 4t^2");
@@ -202,7 +202,7 @@ impl BezierCurve<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, ratio, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
     /// let e = c.eval_within(&[ratio(1, 3)], &Budget::unlimited()).unwrap();
     /// assert_eq!((e.degree, e.values[0].point.to_string()), (3, "(28/27, 70/27)".to_string()));
@@ -222,7 +222,7 @@ impl BezierCurve<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, ratio, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
     /// let c = BezierCurve::new(parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap()).unwrap();
     /// let s = c.subdivide_within(&ratio(1, 3), &Budget::unlimited()).unwrap();
     /// assert_eq!(s.left.to_string(), "-1 -1, -7/9 -1/3, -5/9 -1/9, -1/3 -1/27");
@@ -244,7 +244,7 @@ impl BezierCurve<BigRational> {
     /// [`MAX_SUBDIVISION_DEPTH`](crate::curve::casteljau::MAX_SUBDIVISION_DEPTH).
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, ratio, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1", 2, None).unwrap()).unwrap();
     /// let s = c.subdivide_repeatedly_within(&ratio(1, 2), 2, &Budget::unlimited()).unwrap();
     /// assert_eq!(s.pieces.len(), 4);
@@ -279,7 +279,7 @@ impl BezierCurve<BigRational> {
     /// [`BezierCurve::elevate`] (fraction-free).
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
     /// let e = c.elevate_within(1, &Budget::unlimited()).unwrap();
     /// assert_eq!(e.to_string(), "0 0, 2/3 2/3, 4/3 2/3, 2 0");
@@ -300,7 +300,7 @@ impl BezierCurve<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
     /// let p = c.power_form_within(&Budget::unlimited()).unwrap();
     /// assert_eq!(p.coefficients[1].to_string(), "(2, 4)");
@@ -323,7 +323,7 @@ impl BezierCurve<BigRational> {
     /// estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, ratio, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
     /// let s = c.triangle_within(&ratio(1, 2), &Budget::unlimited()).unwrap();
     /// assert_eq!(s.triangle.rows[1][0].to_string(), "(1/2, 1)");
@@ -345,7 +345,7 @@ impl BezierCurve<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
     /// let d = c.derivative_within(1, &Budget::unlimited()).unwrap();
     /// assert_eq!((d.order, d.curve.to_string()), (1, "2 4, 2 -4".to_string()));
@@ -365,7 +365,7 @@ impl BezierCurve<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 2/3 2/3, 4/3 2/3, 2 0", 2, None).unwrap()).unwrap();
     /// let r = c.reduce_degree_within(&Budget::unlimited()).unwrap();
     /// assert_eq!((r.written_degree, r.real_degree), (3, 2));
@@ -384,7 +384,7 @@ impl BezierCurve<BigRational> {
 /// zero polynomial.
 ///
 /// ```
-/// use casteljau::{curve::exact::polynomial_text, rat, ratio};
+/// use casteljau::{curve::polynomial_text, rat, ratio};
 /// assert_eq!(polynomial_text(&[rat(1), rat(0), ratio(-1, 2), rat(3)], "t"), "1 - 1/2*t^2 + 3t^3");
 /// assert_eq!(polynomial_text(&[rat(0), rat(-1)], "s"), "-s");
 /// assert_eq!(polynomial_text(&[], "t"), "0");

@@ -78,10 +78,10 @@ impl IntegerCurve {
 ///
 /// # Example
 /// ```
-/// use casteljau::{BezierCurve, curve::fraction_free, num::parse::parse_points, ratio};
+/// use casteljau::{BezierCurve, num::parse_points, ratio};
 /// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
 /// // seed 003, example 2: x = 3t + t³, y = 1 + 6t − 3t² − 2t³
-/// assert_eq!(fraction_free::eval(&c, &ratio(1, 10)).to_string(), "(301/1000, 196/125)");
+/// assert_eq!(c.eval(&ratio(1, 10)).to_string(), "(301/1000, 196/125)"); // this kernel
 /// ```
 pub fn eval(curve: &BezierCurve<BigRational>, t: &BigRational) -> Point<BigRational> {
     eval_integer(&IntegerCurve::new(curve), t)

@@ -7,7 +7,7 @@
 //! ```
 //! use casteljau::classify::{classify, segment_flags};
 //! use casteljau::format::{ScanRecord, Source};
-//! use casteljau::{BezierCurve, num::parse::parse_points};
+//! use casteljau::{BezierCurve, num::parse_points};
 //! let ps = parse_points("0 0, 1 1", 2, None).unwrap();
 //! let k = classify(&BezierCurve::new(ps.clone()).unwrap()).unwrap();
 //! let at = Source { line: Some(3), ..Source::new("curves.txt") };

@@ -19,7 +19,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::format::{Segment, svg_path::parse_path};
+//! use casteljau::format::{Segment, parse_path};
 //! use casteljau::num::NumberMode;
 //! let subpaths = parse_path("M0 0 c1 1 2 1 3 0 s1-1 2 0z", NumberMode::Exact).unwrap();
 //! assert_eq!(subpaths.len(), 1);

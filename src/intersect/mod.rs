@@ -18,7 +18,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::{BezierCurve, num::parse::parse_points, intersect::{intersect_polynomial, Domain}};
+//! use casteljau::{BezierCurve, num::parse_points, intersect::{intersect_polynomial, Domain}};
 //! let c = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 //! // the parabola y = 4t(1 − t)·… touches the line y = 1 at its apex: one tangency of order 2
 //! let r = intersect_polynomial(&c("0 0, 1 2, 2 0"), &c("0 1, 2 1"), Domain::Unit).unwrap();

@@ -13,7 +13,7 @@
 //! # Example
 //! ```
 //! use casteljau::intersect::{winding_number, Winding};
-//! use casteljau::{BezierCurve, num::parse::parse_points, rat, ratio, Point};
+//! use casteljau::{BezierCurve, num::parse_points, rat, ratio, Point};
 //! let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 //! // the lens between the parabola 0 0, 1 2, 2 0 and the chord back
 //! let path = vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")];
@@ -297,12 +297,12 @@ impl std::str::FromStr for FillRule {
 
 /// A path of closed contours, each a chain of planar (rational) Bézier segments that ends
 /// where it starts: what a fill rule fills. Open outlines become closed ones by
-/// [`crate::format::svg_path::close_for_fill`] (a closing line, as SVG fills them).
+/// [`crate::format::close_for_fill`] (a closing line, as SVG fills them).
 ///
 /// # Example
 /// ```
 /// use casteljau::intersect::{ClosedPath, PathWinding};
-/// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
+/// use casteljau::{BezierCurve, Point, num::parse_points, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let square = |a: i64, b: i64| {
 ///     let p = |x: i64, y: i64| format!("{x} {y}");
@@ -366,7 +366,7 @@ impl ClosedPath {
     /// # Example
     /// ```
     /// use casteljau::intersect::ClosedPath;
-    /// use casteljau::{BezierCurve, num::parse::parse_points};
+    /// use casteljau::{BezierCurve, num::parse_points};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// assert!(ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).is_ok());
     /// ```
@@ -407,7 +407,7 @@ impl ClosedPath {
     /// # Example
     /// ```
     /// use casteljau::intersect::ClosedPath;
-    /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
+    /// use casteljau::{BezierCurve, Point, num::parse_points, rat};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
     /// assert!(path.winding_estimate(&Point::new(vec![rat(1), rat(1)])) > 0.0);
@@ -426,7 +426,7 @@ impl ClosedPath {
     /// # Example
     /// ```
     /// use casteljau::intersect::{ClosedPath, PathWinding};
-    /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat, work::Budget};
+    /// use casteljau::{BezierCurve, Point, num::parse_points, rat, work::Budget};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
     /// let on = path.winding_within(&Point::new(vec![rat(1), rat(0)]), &Budget::unlimited()).unwrap();
@@ -457,7 +457,7 @@ impl ClosedPath {
     /// # Example
     /// ```
     /// use casteljau::intersect::{ClosedPath, PathWinding};
-    /// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat, ratio};
+    /// use casteljau::{BezierCurve, Point, num::parse_points, rat, ratio};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
     /// let w = path.winding(&Point::new(vec![rat(1), ratio(1, 2)])).unwrap();
@@ -475,7 +475,7 @@ impl ClosedPath {
 /// # Example
 /// ```
 /// use casteljau::intersect::{ClosedPath, PathWinding};
-/// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
+/// use casteljau::{BezierCurve, Point, num::parse_points, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
 /// let on = path.winding(&Point::new(vec![rat(1), rat(1)])).unwrap();
@@ -560,7 +560,7 @@ impl WindingNumber {
 /// # Example
 /// ```
 /// use casteljau::intersect::{ClosedPath, PathWinding};
-/// use casteljau::{BezierCurve, Point, num::parse::parse_points, rat};
+/// use casteljau::{BezierCurve, Point, num::parse_points, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 2 0"), seg("2 0, 0 2"), seg("0 2, 0 0")]]).unwrap();
 /// let PathWinding::OnBoundary { on_boundary: b } = path.winding(&Point::new(vec![rat(1), rat(1)])).unwrap() else { panic!() };

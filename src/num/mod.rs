@@ -38,7 +38,7 @@ pub use small::{SmallRational, checked};
 
 /// Ring arithmetic that may fail: checked fixed-width integers give `None` on overflow, exact
 /// and interval types never do. One home for the code written once over several number types:
-/// the certified cubic classification ([`crate::classify::certified::SignRing`] adds signs) and
+/// the certified cubic classification ([`crate::internal::SignRing`] adds signs) and
 /// the intersection oracle's Bézoutians (checked `i128`, `BigInt`, `f64` enclosures).
 ///
 /// # Example

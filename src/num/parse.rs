@@ -330,7 +330,7 @@ fn group_points<T: Scalar>(
 ///
 /// # Example
 /// ```
-/// use casteljau::num::{parse_points, parse_points_small};
+/// use casteljau::{internal::parse_points_small, num::parse_points};
 /// let small = parse_points_small("0 0, 1.25 -7/3", 2, None).unwrap();
 /// let big = parse_points("0 0, 1.25 -7/3", 2, None).unwrap();
 /// assert_eq!(small[1].coords[0].to_big(), big[1].coords[0]);
@@ -484,7 +484,7 @@ pub fn integer_cubic(text: &str) -> Option<[[i64; 2]; 4]> {
 ///
 /// # Example
 /// ```
-/// use casteljau::num::{NumberMode, small_cubic};
+/// use casteljau::{internal::small_cubic, num::NumberMode};
 /// let p = small_cubic("0 0, 1/2 -2.5, 3 4, 5 6", NumberMode::Exact).unwrap();
 /// assert_eq!(p[1][1].to_string(), "-5/2");
 /// assert!(small_cubic("0 0, 0.1 0, 1 1, 2 2", NumberMode::Binary64).is_none()); // 0.1 rounds
@@ -543,7 +543,7 @@ fn small_number(token: &str) -> Option<SmallRational> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{num::parse::parse_numbers, rat, ratio};
+/// use casteljau::{num::parse_numbers, rat, ratio};
 /// assert_eq!(parse_numbers("1, 1/2, 0.25").unwrap(), vec![rat(1), ratio(1, 2), ratio(1, 4)]);
 /// assert_eq!(parse_numbers("1 1/2 0.25").unwrap(), parse_numbers("1, 1/2, 0.25").unwrap());
 /// assert!(parse_numbers("1 x").is_err());

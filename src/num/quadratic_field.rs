@@ -412,7 +412,7 @@ impl Radical for BigRational {
 
 impl<K: Exact> QuadraticExt<K> {
     /// The same number with `f` applied to `a`, `b` and `d` (a change of base field: `f` must be
-    /// an injective field homomorphism, such as [`SmallRational::to_big`](crate::num::small::SmallRational::to_big)).
+    /// an injective field homomorphism, such as [`SmallRational::to_big`](crate::num::SmallRational::to_big)).
     pub fn map<L: Exact>(&self, f: impl Fn(&K) -> L) -> QuadraticExt<L> {
         QuadraticExt::new_unchecked(f(&self.a), f(&self.b), f(&self.d))
     }

@@ -4,7 +4,7 @@
 //! `f64` (fast, approximate) and [`BigRational`] (exact). [`Exact`] marks the types whose
 //! `==` is numeric equality and whose [`Exact::sign`] is decided without rounding: identity
 //! checks and classifications require `S: Exact`. The quadratic extension
-//! [`QuadraticExt`](crate::num::quadratic_field::QuadraticExt) is another `Exact` scalar built on any `Exact` one.
+//! [`QuadraticExt`](crate::num::QuadraticExt) is another `Exact` scalar built on any `Exact` one.
 //!
 //! # Laws
 //! For every implementation (exactly for `Exact` types, up to rounding for `f64`):
@@ -160,7 +160,7 @@ impl Exact for BigRational {
 ///
 /// # Example
 /// ```
-/// use casteljau::{ratio, num::scalar::rational_sqrt};
+/// use casteljau::{ratio, num::rational_sqrt};
 /// assert_eq!(rational_sqrt(&ratio(9, 4)), Some(ratio(3, 2)));
 /// assert_eq!(rational_sqrt(&ratio(2, 1)), None);
 /// ```
@@ -197,7 +197,7 @@ pub fn integer_sqrt(n: &BigInt) -> Option<BigInt> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{ratio, num::scalar::ratio_to_f64};
+/// use casteljau::{ratio, num::ratio_to_f64};
 /// assert_eq!(ratio_to_f64(&ratio(1, 10)), 0.1);
 /// assert_eq!(ratio_to_f64(&ratio(1, 3)), 1.0 / 3.0);
 /// ```

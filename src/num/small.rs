@@ -324,7 +324,7 @@ macro_rules! by_value {
 by_value!(Add add, Sub sub, Mul mul, Div div);
 
 /// The square root of a non-negative `d = p/q` in the spelling of
-/// [`QuadraticExt::sqrt`](crate::num::quadratic_field::QuadraticExt::sqrt): rational when `d` is a
+/// [`QuadraticExt::sqrt`](crate::num::QuadraticExt::sqrt): rational when `d` is a
 /// square, else `b·√m` with `m` the integer `p·q` freed of the squares of primes below 1000 and
 /// `b = k/q`.
 /// Poisons when `m` does not fit.

@@ -1,10 +1,10 @@
 //! Word-sized number theory: binary gcds of `u128`s (and of big integers through one big
 //! remainder), exact square roots of words, residues of big integers modulo words, and the
 //! extraction of the squares of the primes below 1000 (the spelling rule of
-//! [`QuadraticExt::sqrt`](crate::num::quadratic_field::QuadraticExt::sqrt)).
+//! [`QuadraticExt::sqrt`](crate::num::QuadraticExt::sqrt)).
 //!
 //! Hand-written because the hot paths — reducing
-//! [`SmallRational`](crate::num::small::SmallRational)s, the contents of integer polynomials,
+//! [`SmallRational`](crate::num::SmallRational)s, the contents of integer polynomials,
 //! reductions modulo small primes — need word arithmetic without allocation, and num-bigint's
 //! gcd is the bit-by-bit Stein algorithm.
 
@@ -181,7 +181,7 @@ const ODD_PRIMES64: [(u64, u64, u64); 167] = {
 };
 
 /// `(k, m)` with `n = k²·m` and `m` free of the squares of primes below 1000 — the square
-/// extraction of [`QuadraticExt::sqrt`](crate::num::quadratic_field::QuadraticExt::sqrt) for `BigRational`,
+/// extraction of [`QuadraticExt::sqrt`](crate::num::QuadraticExt::sqrt) for `BigRational`,
 /// on words (64-bit words once `n` fits one).
 pub(crate) fn extract_small_squares(mut n: u128) -> (u128, u128) {
     let mut k = 1u128;
@@ -251,7 +251,7 @@ pub(crate) fn residue(n: &num_bigint::BigInt, m: u64) -> u64 {
 
 /// [`extract_small_squares`] of a big number: `(k, m)` with `n = k²·m` and `m` free of the
 /// squares of primes below 1000 (the rule of
-/// [`QuadraticExt::sqrt`](crate::num::quadratic_field::QuadraticExt::sqrt)).
+/// [`QuadraticExt::sqrt`](crate::num::QuadraticExt::sqrt)).
 /// Divisibility is read from one remainder per group of primes ([`PRIME_GROUPS`]), not one big
 /// division per prime.
 pub(crate) fn extract_small_squares_big(n: &num_bigint::BigUint) -> (num_bigint::BigUint, num_bigint::BigUint) {

@@ -20,7 +20,7 @@ impl CurveOptions {
     /// naming the first control point beyond the `f64` range.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse::parse_points, plot::CurveOptions, work::Budget};
+    /// use casteljau::{BezierCurve, num::parse_points, plot::CurveOptions, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
     /// assert!(CurveOptions::default().check_drawable_within(&c, &Budget::unlimited()).is_ok());
     /// let far = BezierCurve::new(parse_points("0 0, 1e400 0", 2, None).unwrap()).unwrap();
@@ -54,7 +54,7 @@ impl CurveOptions {
 /// members before the failing one are already drawn.
 ///
 /// ```
-/// use casteljau::{RationalBezier, num::parse::parse_points, rat, plot::{Figure, PALETTE, draw_weight_family}};
+/// use casteljau::{RationalBezier, num::parse_points, rat, plot::{Figure, PALETTE, draw_weight_family}};
 /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1); 3]).unwrap();
 /// let mut fig = Figure::new();
 /// draw_weight_family(&mut fig, &c, 1, &[rat(1), rat(2), rat(3)], true).unwrap();

@@ -101,7 +101,7 @@ pub fn powers<S: Scalar>(t: &S, n: usize) -> Vec<S> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{poly::bernstein::bernstein, ratio};
+/// use casteljau::{poly::bernstein, ratio};
 /// assert_eq!(bernstein(1, 3, &ratio(1, 3)), ratio(4, 9));
 /// ```
 pub fn bernstein<S: Scalar>(i: usize, n: usize, t: &S) -> S {
@@ -267,7 +267,7 @@ pub fn split_integer(c: &[BigInt], p: &BigInt, q: &BigInt) -> (Vec<BigInt>, Vec<
 ///
 /// # Example
 /// ```
-/// use casteljau::{rat, ratio, poly::bernstein::split};
+/// use casteljau::{rat, ratio, poly::split};
 /// // 1 − 2t (coefficients 1, −1) on [0, 1/4] and [1/4, 1]
 /// assert_eq!(split(&[rat(1), rat(-1)], &ratio(1, 4)), (vec![rat(1), ratio(1, 2)], vec![ratio(1, 2), rat(-1)]));
 /// ```

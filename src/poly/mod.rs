@@ -16,7 +16,7 @@ pub(crate) mod roots;
 pub use algebraic::{RealAlgebraic, sign_at, simplest_rational};
 pub use bernstein::{
     bernstein, bernstein_all, bernstein_sum, bernstein_to_power_matrix, binomial, binomial_row, binomial_scalar,
-    eval_power, from_power, power_to_bernstein_matrix, to_power,
+    eval_power, from_power, power_to_bernstein_matrix, split, split_integer, to_power,
 };
 pub use modular::min_factor_degree;
 pub use polynomial::{

@@ -5,7 +5,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::{rat, poly::polynomial::{gcd, square_free, quadratic_roots}};
+//! use casteljau::{rat, poly::{gcd, square_free, quadratic_roots}};
 //! // (t − 1)²(t + 2) = t³ − 3t + 2 and its derivative 3t² − 3
 //! let p = vec![rat(2), rat(-3), rat(0), rat(1)];
 //! assert_eq!(gcd(p.clone(), vec![rat(-3), rat(0), rat(3)]), vec![rat(-1), rat(1)]); // t − 1

@@ -58,7 +58,7 @@ fn sign_changes(c: &[BigInt]) -> usize {
 ///
 /// # Example
 /// ```
-/// use casteljau::{ratio, rat, poly::roots::{isolate_bernstein, Root}};
+/// use casteljau::{ratio, rat, poly::{isolate_bernstein, Root}};
 /// // coefficients 1, −2, 1: 6t² − 6t + 1, roots 1/2 ± √3/6, each isolated
 /// let r = isolate_bernstein(&[rat(1), rat(-2), rat(1)]).unwrap();
 /// assert!(matches!(r.as_slice(), [Root::Isolated(..), Root::Isolated(..)]));
@@ -83,7 +83,7 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{rat, poly::roots::isolate_bernstein_within, work::Budget};
+/// use casteljau::{rat, poly::isolate_bernstein_within, work::Budget};
 /// let tight = Budget::new(1.0, "--max-work");
 /// // all weights positive: no root, no work
 /// assert_eq!(isolate_bernstein_within(&vec![rat(1); 5000], &tight).unwrap(), Some(vec![]));

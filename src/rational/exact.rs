@@ -4,7 +4,7 @@
 //! polynomial kernels run on the homogeneous curve `(w_i P_i, w_i)`.
 //!
 //! ```
-//! use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
+//! use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
 //! let pts = parse_points("1 0, 1 1, 0 1", 2, None).unwrap();
 //! let arc = RationalBezier::new(pts, vec![rat(1), rat(1), rat(2)]).unwrap();
 //! let e = arc.eval_within(&[ratio(1, 2)], &Budget::unlimited()).unwrap();
@@ -24,15 +24,25 @@ use num_rational::BigRational;
 use serde::Serialize;
 use serde::ser::{SerializeStruct, Serializer};
 
+/// A rational curve in JSON (fields in the order the command line prints them): `degree`, `homogeneous` (the control points `w·P, w`), `points`
+/// (affine, `null` at infinity) and `weights`, exact numbers as strings.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, RationalBezier, rat};
+/// let c = RationalBezier::new(vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(2)])], vec![rat(1), rat(2)]).unwrap();
+/// assert_eq!(
+///     serde_json::to_string(&c).unwrap(),
+///     r#"{"degree":1,"homogeneous":[["0","0","1"],["2","4","2"]],"points":[["0","0"],["1","2"]],"weights":["1","2"]}"#
+/// );
+/// ```
 impl Serialize for RationalBezier<BigRational> {
-    /// `{"degree", "points", "weights", "homogeneous"}`: `points` holds `null` for a point at
-    /// infinity (weight 0); numbers are exact strings.
     fn serialize<Z: Serializer>(&self, s: Z) -> std::result::Result<Z::Ok, Z::Error> {
         let mut st = s.serialize_struct("RationalBezier", 4)?;
         st.serialize_field("degree", &self.degree())?;
+        st.serialize_field("homogeneous", self.homogeneous().points())?;
         st.serialize_field("points", &self.points())?;
         st.serialize_field("weights", &self.weights().iter().map(serial::AsString).collect::<Vec<_>>())?;
-        st.serialize_field("homogeneous", self.homogeneous().points())?;
         st.end()
     }
 }
@@ -51,7 +61,7 @@ impl ParameterInterval {
     /// [`Error::InvalidArgument`] unless `0 ≤ from < to ≤ 1`.
     ///
     /// ```
-    /// use casteljau::{rat, ratio, rational::exact::ParameterInterval};
+    /// use casteljau::{rat, ratio, rational::ParameterInterval};
     /// assert!(ParameterInterval::new(ratio(1, 4), rat(1)).is_ok());
     /// assert!(ParameterInterval::new(rat(1), ratio(1, 2)).is_err());
     /// assert_eq!(ParameterInterval::unit().to(), &rat(1));
@@ -155,7 +165,7 @@ impl RationalBezier<BigRational> {
     /// parameter where the denominator is 0.
     ///
     /// ```
-    /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
+    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
     /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
     /// let e = c.eval_within(&[rat(0)], &Budget::unlimited()).unwrap();
     /// assert!(!e.defined_on_0_1); // W(t) = (2t − 1)²
@@ -178,7 +188,7 @@ impl RationalBezier<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as [`RationalBezier::subdivide`].
     ///
     /// ```
-    /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
+    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
     /// let c = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
     /// let s = c.subdivide_within(&ratio(1, 2), &Budget::unlimited()).unwrap();
     /// assert_eq!(s.left.points()[2].as_ref().unwrap().to_string(), "(3/5, 4/5)");
@@ -198,7 +208,7 @@ impl RationalBezier<BigRational> {
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as [`RationalBezier::elevate`].
     ///
     /// ```
-    /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
+    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
     /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(2), rat(1)]).unwrap();
     /// let e = c.elevate_within(1, &Budget::unlimited()).unwrap();
     /// assert_eq!(e.weights(), vec![rat(1), ratio(5, 3), ratio(5, 3), rat(1)]);
@@ -214,13 +224,13 @@ impl RationalBezier<BigRational> {
     }
 
     /// Where the denominator vanishes on `interval`, within `budget` (root isolation charged
-    /// step by step: [`crate::poly::roots::isolate_in_within`]).
+    /// step by step: [`crate::poly::isolate_in_within`]).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the isolation would exceed `budget`.
     ///
     /// ```
-    /// use casteljau::{RationalBezier, num::parse::parse_points, rat, ratio, work::Budget};
+    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
     /// use casteljau::rational::ParameterInterval;
     /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
     /// let d = c.defined_within(&ParameterInterval::unit(), &Budget::unlimited()).unwrap();
@@ -245,7 +255,7 @@ impl RationalBezier<BigRational> {
     /// As [`prove_implicit`]; [`Error::WorkLimit`] when the evaluation exceeds the steps.
     ///
     /// ```
-    /// use casteljau::{RationalBezier, num::parse::parse_points, rat, work::Budget};
+    /// use casteljau::{RationalBezier, num::parse_points, rat, work::Budget};
     /// let arc = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
     /// assert!(arc.implicit_within("x^2 + y^2 - 1", &Budget::unlimited()).unwrap().proved());
     /// ```
@@ -259,7 +269,7 @@ impl RationalBezier<BigRational> {
     /// [`Error::InvalidArgument`] unless the degree is 2.
     ///
     /// ```
-    /// use casteljau::{RationalBezier, num::parse::parse_points, rat, rational::rational_bezier::ConicType};
+    /// use casteljau::{RationalBezier, num::parse_points, rat, rational::ConicType};
     /// let c = RationalBezier::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap(), vec![rat(1), rat(3), rat(1)]).unwrap();
     /// let k = c.conic().unwrap();
     /// assert_eq!((k.conic, k.shape_factor), (ConicType::Hyperbola, Some(rat(9))));

@@ -10,7 +10,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::{BezierCurve, num::parse::parse_points, rational::extrema::bounding_box_polynomial};
+//! use casteljau::{BezierCurve, num::parse_points, rational::bounding_box_polynomial};
 //! // the arch 0 0, 1 2, 2 0: y = 4t(1 − t) peaks at t = 1/2 with y = 1
 //! let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
 //! let b = bounding_box_polynomial(&c).unwrap();

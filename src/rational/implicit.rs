@@ -116,7 +116,7 @@ pub const MAX_IMPLICIT_DEGREE: usize = 20_000;
 ///
 /// # Example
 /// ```
-/// use casteljau::{rational::implicit::{prove_implicit, ImplicitOutcome}, rational::rational_bezier::RationalBezier, num::parse::parse_points, rat};
+/// use casteljau::{rational::{prove_implicit, ImplicitOutcome}, rational::RationalBezier, num::parse_points, rat};
 /// let folium = RationalBezier::new(parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(), vec![rat(1), rat(1), rat(1), rat(2)]).unwrap();
 /// assert!(matches!(prove_implicit(&folium, "x^3 - 3*x*y + y^3").unwrap(), ImplicitOutcome::Proved { degree_bound: 9, .. }));
 /// assert!(matches!(prove_implicit(&folium, "x^3 - 2*x*y + y^3").unwrap(), ImplicitOutcome::Counterexample { .. }));

@@ -43,7 +43,7 @@ pub fn divide<S: Scalar>(a: &S, b: &S, p: &Point<S>, q: &Point<S>) -> Option<Poi
 ///
 /// # Example
 /// ```
-/// use casteljau::{rational::rational_bezier::RationalBezier, num::parse::parse_points, ratio, rat};
+/// use casteljau::{rational::RationalBezier, num::parse_points, ratio, rat};
 /// // seed 000 example 2: the folium (3t/(1+t³), 3t²/(1+t³))
 /// let c = RationalBezier::new(parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(), vec![rat(1), rat(1), rat(1), rat(2)]).unwrap();
 /// assert_eq!(c.eval(&ratio(1, 2)).unwrap().to_string(), "(4/3, 2/3)");
@@ -68,18 +68,6 @@ pub(crate) fn weighted_homogeneous<S: Scalar>(p: &Point<S>, w: &S) -> Point<S> {
     }
 }
 
-/// A rational curve in JSON: `degree`, `homogeneous` (the control points `w·P, w`), `points`
-/// (affine, `null` at infinity) and `weights`, exact numbers as strings.
-///
-/// # Example
-/// ```
-/// use casteljau::{Point, RationalBezier, rat};
-/// let c = RationalBezier::new(vec![Point::new(vec![rat(0), rat(0)]), Point::new(vec![rat(1), rat(2)])], vec![rat(1), rat(2)]).unwrap();
-/// assert_eq!(
-///     serde_json::to_string(&c).unwrap(),
-///     r#"{"degree":1,"homogeneous":[["0","0","1"],["2","4","2"]],"points":[["0","0"],["1","2"]],"weights":["1","2"]}"#
-/// );
-/// ```
 impl<S: Scalar> RationalBezier<S> {
     /// From control points and weights.
     ///

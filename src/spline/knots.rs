@@ -40,7 +40,7 @@ use std::cmp::Ordering;
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::{RationalSpline, knots::MAX_SPLINE_POINTS}};
+/// use casteljau::{Point, rat, spline::{RationalSpline, MAX_SPLINE_POINTS}};
 /// let n = MAX_SPLINE_POINTS + 1;
 /// let p = vec![Point::new(vec![rat(0), rat(0), rat(1)]); n];
 /// let knots: Vec<_> = (0..n + 2).map(|k| rat(k as i64)).collect();

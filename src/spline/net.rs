@@ -19,7 +19,7 @@ use num_rational::BigRational;
 ///
 /// # Example
 /// ```
-/// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+/// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
 /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
 /// let pts: Vec<Vec<Point<_>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
@@ -57,7 +57,7 @@ impl SplineNet {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
     /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
     /// let pts: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
@@ -111,7 +111,7 @@ impl SplineNet {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
     /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
     /// let pts: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
@@ -182,7 +182,7 @@ impl SplineNet {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
     /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
     /// let pts: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
@@ -214,7 +214,7 @@ impl SplineNet {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+    /// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
     /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
     /// let pts: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
@@ -242,7 +242,7 @@ fn knots(ratios: &[BigRational]) -> Vec<BigRational> {
 ///
 /// # Example
 /// ```
-/// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+/// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
 /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
 /// let pts: Vec<Vec<Point<_>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
@@ -276,7 +276,7 @@ pub struct NetReport {
 ///
 /// # Example
 /// ```
-/// # use casteljau::{Point, rat, spline::{Conversion, net::SplineNet}};
+/// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
 /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
 /// let pts: Vec<Vec<Point<_>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())

@@ -215,7 +215,7 @@ pub struct KnotRemoval {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::surface::NurbsSurface, work::Budget};
+/// use casteljau::{Point, rat, spline::NurbsSurface, work::Budget};
 /// let row = |y: i64| (0..2).map(|x| Point::new(vec![rat(x), rat(y), rat(x * y), rat(1)])).collect::<Vec<_>>();
 /// let s = NurbsSurface::from_knots((1, 1), vec![row(0), row(1)], &[0, 0, 1, 1].map(rat), &[0, 0, 1, 1].map(rat)).unwrap();
 /// let e = s.extraction_within(&Budget::unlimited()).unwrap();
@@ -382,7 +382,7 @@ impl RationalSpline {
     ///
     /// # Errors
     /// As [`Self::insert_knot`]; [`Error::TooLarge`] when the result would exceed
-    /// [`crate::spline::knots::MAX_SPLINE_POINTS`].
+    /// [`crate::spline::MAX_SPLINE_POINTS`].
     ///
     /// # Example
     /// ```
@@ -462,7 +462,7 @@ impl NurbsSurface {
     ///
     /// # Example
     /// ```
-    /// use casteljau::{Point, rat, spline::surface::NurbsSurface, work::Budget};
+    /// use casteljau::{Point, rat, spline::NurbsSurface, work::Budget};
     /// let row = |y: i64| (0..3).map(|x| Point::new(vec![rat(x), rat(y), rat(x * y), rat(1)])).collect::<Vec<_>>();
     /// let s = NurbsSurface::from_knots((1, 1), vec![row(0), row(1)], &[0, 0, 1, 1].map(rat), &[0, 0, 1, 2, 2].map(rat)).unwrap();
     /// let e = s.extraction_within(&Budget::unlimited()).unwrap();

@@ -18,7 +18,7 @@ use num_rational::BigRational;
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+/// use casteljau::{Point, rat, ratio, spline::NurbsSurface};
 /// // a clamped biquadratic surface, 4×3 net, a double interior knot in u
 /// let rows: Vec<Vec<Point<_>>> = (0..4)
 ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
@@ -46,7 +46,7 @@ pub struct NurbsSurface {
 ///
 /// # Example
 /// ```
-/// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+/// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
 /// let rows: Vec<Vec<Point<_>>> = (0..4)
 ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
 ///     .collect();
@@ -68,7 +68,7 @@ pub struct PatchPiece {
 ///
 /// # Example
 /// ```
-/// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+/// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
 /// let rows: Vec<Vec<Point<_>>> = (0..4)
 ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
 ///     .collect();
@@ -106,7 +106,7 @@ impl NurbsSurface {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
     /// let rows: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
     ///     .collect();
@@ -155,7 +155,7 @@ impl NurbsSurface {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
     /// let rows: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
     ///     .collect();
@@ -176,7 +176,7 @@ impl NurbsSurface {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
     /// let rows: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
     ///     .collect();
@@ -196,7 +196,7 @@ impl NurbsSurface {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
     /// let rows: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
     ///     .collect();
@@ -240,7 +240,7 @@ impl NurbsSurface {
     ///
     /// # Example
     /// ```
-    /// # use casteljau::{Point, rat, ratio, spline::surface::NurbsSurface};
+    /// # use casteljau::{Point, rat, ratio, spline::NurbsSurface};
     /// let rows: Vec<Vec<Point<_>>> = (0..4)
     ///     .map(|i| (0..3).map(|j| Point::new(vec![rat(i), rat(j), rat((i * j) % 3), rat(1)])).collect())
     ///     .collect();

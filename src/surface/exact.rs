@@ -2,7 +2,7 @@
 //! `Serialize` is their JSON (exact numbers as strings).
 //!
 //! ```
-//! use casteljau::{num::parse::parse_points, ratio, surface::RationalPatch};
+//! use casteljau::{num::parse_points, ratio, surface::RationalPatch};
 //! let net = parse_points("0 0 0, 1 0 1, 2 0 0, 0 1 1, 1 1 2, 2 1 1", 3, None).unwrap();
 //! let p = RationalPatch::from_net(&net, (1, 2), None).unwrap();
 //! let e = p.eval_checked(&ratio(1, 2), &ratio(1, 3)).unwrap();
@@ -98,7 +98,7 @@ impl RationalPatch {
     /// numbers of points or weights do not match; as [`RationalPatch::new`].
     ///
     /// ```
-    /// use casteljau::{num::parse::parse_points, rat, surface::RationalPatch};
+    /// use casteljau::{num::parse_points, rat, surface::RationalPatch};
     /// let net = parse_points("0 0 0, 1 0 1, 0 1 1, 1 1 0", 3, None).unwrap();
     /// let p = RationalPatch::from_net(&net, (1, 1), Some(&[rat(1), rat(2), rat(1), rat(1)])).unwrap();
     /// assert_eq!(p.weights()[0], vec![rat(1), rat(2)]);
@@ -132,7 +132,7 @@ impl RationalPatch {
     /// As [`RationalPatch::from_net`] and [`RationalPatch::from_homogeneous`].
     ///
     /// ```
-    /// use casteljau::{num::parse::parse_points, rat, surface::RationalPatch};
+    /// use casteljau::{num::parse_points, rat, surface::RationalPatch};
     /// let net = parse_points("0 0 0 1, 2 0 2 2, 0 1 1 1, 1 1 0 1", 4, None).unwrap();
     /// let p = RationalPatch::from_homogeneous_net(&net, (1, 1)).unwrap();
     /// assert_eq!(p.weights()[0], vec![rat(1), rat(2)]);
@@ -147,7 +147,7 @@ impl RationalPatch {
     /// As [`RationalPatch::subdivide_u`] and [`RationalPatch::subdivide_v`].
     ///
     /// ```
-    /// use casteljau::{num::parse::parse_points, ratio, surface::{RationalPatch, exact::Direction}};
+    /// use casteljau::{num::parse_points, ratio, surface::{RationalPatch, Direction}};
     /// let net = parse_points("0 0 0, 1 0 1, 0 1 1, 1 1 0", 3, None).unwrap();
     /// let p = RationalPatch::from_net(&net, (1, 1), None).unwrap();
     /// let s = p.split(Direction::U, &ratio(1, 2)).unwrap();
@@ -169,7 +169,7 @@ impl RationalPatch {
     /// [`Error::InvalidArgument`] for a patch of fewer than 3 dimensions.
     ///
     /// ```
-    /// use casteljau::{num::parse::parse_points, rat, ratio, surface::RationalPatch};
+    /// use casteljau::{num::parse_points, rat, ratio, surface::RationalPatch};
     /// let net = parse_points("0 0 0, 1 0 1, 0 1 1, 1 1 0", 3, None).unwrap();
     /// let p = RationalPatch::from_net(&net, (1, 1), None).unwrap();
     /// let c = p.contour(&ratio(1, 2), 0).unwrap();

@@ -90,7 +90,7 @@ impl RealAlgebraic {
     ///
     /// # Example
     /// ```
-    /// use casteljau::{rat, poly::algebraic::RealAlgebraic};
+    /// use casteljau::{rat, poly::RealAlgebraic};
     /// let s2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone(); // √2
     /// // (x² + x)/(x + 1) = x; x³ = 2√2
     /// assert_eq!(s2.map_rational(&[rat(0), rat(1), rat(1)], &[rat(1), rat(1)]), s2);
@@ -183,7 +183,7 @@ impl RealAlgebraic {
     ///
     /// # Example
     /// ```
-    /// use casteljau::{rat, poly::algebraic::RealAlgebraic};
+    /// use casteljau::{rat, poly::RealAlgebraic};
     /// use num_bigint::BigInt;
     /// let s2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone(); // √2
     /// let b = |c: &[i64]| c.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();

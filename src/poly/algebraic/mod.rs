@@ -332,12 +332,12 @@ impl RealAlgebraic {
 
     /// A lower bound for the degree of the number over `Q` (the degree of its minimal
     /// polynomial): `1` for a rational, at least `2` for a root (which is irrational), more when
-    /// [`crate::poly::modular::min_factor_degree`] proves that its polynomial has no factor of
+    /// [`crate::poly::min_factor_degree`] proves that its polynomial has no factor of
     /// smaller degree. Stops looking once the bound reaches `enough`.
     ///
     /// # Example
     /// ```
-    /// use casteljau::{rat, poly::algebraic::RealAlgebraic};
+    /// use casteljau::{rat, poly::RealAlgebraic};
     /// // a root of t³ − 2 (irreducible: degree 3); √2 as a root of t⁴ − 4 = (t² − 2)(t² + 2): 2
     /// let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
     /// assert_eq!(c[0].degree_lower_bound(10), 3);
