@@ -2,10 +2,14 @@
 
 #![allow(dead_code)] // each test file uses its own subset
 
+#[cfg(feature = "cli")]
 use std::io::Write;
-use std::process::{Child, Command, Output, Stdio};
+use std::process::Output;
+#[cfg(feature = "cli")]
+use std::process::{Child, Command, Stdio};
 
 /// Starts the binary with `args` and all three streams piped.
+#[cfg(feature = "cli")]
 pub fn spawn<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Child {
     Command::new(env!("CARGO_BIN_EXE_casteljau"))
         .args(args)
@@ -17,6 +21,7 @@ pub fn spawn<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Child {
 }
 
 /// Runs the binary with `args`, feeding `stdin` when given.
+#[cfg(feature = "cli")]
 pub fn run(args: &[&str], stdin: Option<&str>) -> Output {
     let mut child = spawn(args);
     if let Some(s) = stdin {

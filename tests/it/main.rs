@@ -4,7 +4,6 @@
 //! Modules that run the binary need the `cli` feature; with `--no-default-features` the
 //! library's own tests still run.
 
-#[cfg(feature = "cli")]
 mod common;
 
 #[cfg(feature = "cli")]
