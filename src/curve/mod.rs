@@ -7,6 +7,7 @@ pub(crate) mod bezier;
 pub(crate) mod casteljau;
 pub(crate) mod exact;
 pub(crate) mod fraction_free;
+mod operations;
 
 pub use bezier::{BezierCurve, MAX_DEGREE, check_polygon_text, parse_curve_in};
 pub use casteljau::{DeCasteljauTriangle, MAX_SUBDIVISION_DEPTH, subdivision_intervals};
