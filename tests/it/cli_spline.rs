@@ -218,3 +218,11 @@ fn cli_spline_help_states_the_knot_convention() {
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(text.contains("m + n + 2") && text.contains("t_(j+1) = t_j + l_j"), "{text}");
 }
+
+#[test]
+fn cli_spline_method_is_a_closed_set_refused_before_work() {
+    let o = run(&["spline", "to-bezier", "--method", "nope", "0 0, 1 1"], None);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert!(err.contains("boehm, seed, seed-printed"), "{err}");
+}

@@ -307,8 +307,8 @@ pub enum SplineOp {
         /// `boehm` (knot insertion, any degree and knot vector), `seed` (the seed's rational
         /// interpolation formulas: cubic (25)-(29), quadratic (53) corrected; positive ratios
         /// only) or `seed-printed` ((53) as printed).
-        #[arg(long, default_value = "boehm")]
-        method: String,
+        #[arg(long, value_enum, default_value_t = Method::Boehm)]
+        method: Method,
         /// The spline.
         #[command(flatten)]
         spline: SplineArgs,
@@ -371,6 +371,28 @@ pub enum SplineOp {
         #[command(flatten)]
         curve: CurveArgs,
     },
+}
+
+/// How `spline to-bezier` converts (a closed set: clap refuses anything else before work starts).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Boehm knot insertion (any degree and knot vector).
+    Boehm,
+    /// The seed's rational interpolation formulas, (53) corrected.
+    Seed,
+    /// The seed's formulas with (53) as printed.
+    SeedPrinted,
+}
+
+impl From<Method> for casteljau::spline::Conversion {
+    fn from(m: Method) -> Self {
+        use casteljau::proof::Reading;
+        match m {
+            Method::Boehm => casteljau::spline::Conversion::Boehm,
+            Method::Seed => casteljau::spline::Conversion::Seed(Reading::Corrected),
+            Method::SeedPrinted => casteljau::spline::Conversion::Seed(Reading::AsPrinted),
+        }
+    }
 }
 
 /// A knot to insert or remove, and how many times.

@@ -2,7 +2,7 @@
 //! JSON object per line) and each operation's text and JSON.
 
 use crate::answers::weighted_text;
-use crate::args::{KnotArgs, SplineArgs, SplineOp};
+use crate::args::{KnotArgs, Method, SplineArgs, SplineOp};
 use crate::batch::{Answer, Json, batch_lines, numbers, option_number, parse_weights};
 use casteljau::error::{Error, Position, Result};
 use casteljau::num::Point;
@@ -131,8 +131,8 @@ fn spline_text(sp: &RationalSpline) -> String {
     format!("degree {}, knots {}: {pts}", sp.degree, knots.join(" "))
 }
 
-fn to_bezier(sp: &RationalSpline, method: &str) -> Result<Answer> {
-    let r = sp.bezier_conversion_within(method.parse()?, &Budget::unlimited())?;
+fn to_bezier(sp: &RationalSpline, method: Method) -> Result<Answer> {
+    let r = sp.bezier_conversion_within(method.into(), &Budget::unlimited())?;
     let mut lines: Vec<String> =
         r.segments.iter().map(|s| format!("[{}, {}]: {}", s.span.0, s.span.1, weighted_text(&s.curve))).collect();
     if !r.joins.is_empty() {
@@ -182,7 +182,7 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
     match op {
         SplineOp::ToBezier { method, spline } => {
             let given = Given::new(&spline);
-            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&given, line, text)?, &method))
+            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&given, line, text)?, method))
         }
         SplineOp::Check { spline } => {
             let given = Given::new(&spline);
