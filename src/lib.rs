@@ -56,7 +56,7 @@ pub mod surface;
 pub mod work;
 
 pub use classify::{Classification, NodeType, SegmentFlag, classify};
-pub use curve::{BezierCurve, DeCasteljauTriangle};
+pub use curve::{BezierCurve, DeCasteljauTriangle, Parametric};
 pub use error::{Error, Position, Result};
 pub use intersect::{
     ClosedPath, Domain, FillRule, Intersection, Intersections, Overlap, intersect, self_intersect, winding_number,

@@ -8,6 +8,7 @@ pub(crate) mod casteljau;
 pub(crate) mod exact;
 pub(crate) mod fraction_free;
 mod operations;
+pub(crate) mod parametric;
 
 pub use bezier::{BezierCurve, MAX_DEGREE, check_polygon_text, parse_curve_in};
 pub use casteljau::{DeCasteljauTriangle, MAX_SUBDIVISION_DEPTH, subdivision_intervals};
@@ -15,3 +16,4 @@ pub use exact::{
     DegreeReduction, Derivative, Evaluation, MAX_MATRIX_DEGREE, MAX_SUBDIVISION_POINTS, MAX_TRIANGLE_DEGREE, Piece,
     PointAt, PowerForm, RepeatedSubdivision, Scheme, Subdivision, polynomial_text,
 };
+pub use parametric::Parametric;
