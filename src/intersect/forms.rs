@@ -47,6 +47,16 @@ pub(super) fn coefficient<T: CheckedRing>(p: &[T], k: usize) -> T {
     p.get(k).cloned().unwrap_or_else(T::zero)
 }
 
+/// `X/W` and `Y/W` are constant: every parameter gives one point.
+pub(super) fn is_point(f: &[Vec<BigInt>; 3]) -> bool {
+    let parallel = |a: &[BigInt], w: &[BigInt]| {
+        let n = a.len().max(w.len());
+        (0..n)
+            .all(|i| (i + 1..n).all(|j| coefficient(a, i) * coefficient(w, j) == coefficient(a, j) * coefficient(w, i)))
+    };
+    parallel(&f[0], &f[2]) && parallel(&f[1], &f[2])
+}
+
 /// The point `(X/W, Y/W)` at `x`.
 pub(super) fn point_at(f: &[Vec<BigInt>; 3], x: &RealAlgebraic) -> [RealAlgebraic; 2] {
     let w = to_rational(&f[2]);

@@ -35,6 +35,7 @@ mod forms;
 mod oracle;
 mod overlap;
 mod pairing;
+mod roots;
 mod self_intersect;
 pub(crate) mod winding;
 
@@ -246,5 +247,5 @@ pub fn self_intersect_within(
 ) -> Result<Intersections> {
     check(a, domain)?;
     budget.check(format!("self-intersecting degree {}", a.degree()), estimate(a, a))?;
-    self_intersect::self_intersections_of_forms(&forms::integer_forms(a), domain)
+    overlap::self_intersections(&forms::integer_forms(a), domain)
 }

@@ -31,7 +31,8 @@
 //! parameters); with [`Domain::All`] only the isolated intersections use every real parameter.
 
 use super::forms::{coefficient, to_rational};
-use super::pairing::finite_roots;
+use super::roots::finite_roots;
+use super::self_intersect::self_intersections_of_forms;
 use super::{Domain, Intersection, Intersections, Overlap};
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
@@ -55,16 +56,6 @@ pub(super) fn reduced(f: &Forms) -> Forms {
         return f.clone();
     }
     f.clone().map(|p| if p.is_empty() { p } else { exact_quotient_integer(p, &g) })
-}
-
-/// `X/W` and `Y/W` are constant: every parameter gives one point.
-pub(super) fn is_point(f: &Forms) -> bool {
-    let parallel = |a: &[BigInt], w: &[BigInt]| {
-        let n = a.len().max(w.len());
-        (0..n)
-            .all(|i| (i + 1..n).all(|j| coefficient(a, i) * coefficient(w, j) == coefficient(a, j) * coefficient(w, i)))
-    };
-    parallel(&f[0], &f[2]) && parallel(&f[1], &f[2])
 }
 
 fn degree(f: &Forms) -> usize {
@@ -137,6 +128,15 @@ pub(super) fn overlap(fa: &Forms, fb: &Forms, domain: Domain) -> Result<Intersec
     let overlaps = phi.arcs();
     let intersections = phi.crossings(&fa, &fb, domain)?;
     Ok(Intersections { intersections, overlaps })
+}
+
+/// Every self-intersection of the curve with forms `f` in the domain: the isolated ones, or its
+/// [`self_overlap`] when the self-intersection resultant vanishes identically.
+pub(super) fn self_intersections(f: &Forms, domain: Domain) -> Result<Intersections> {
+    match self_intersections_of_forms(f, domain)? {
+        Some(found) => Ok(found),
+        None => self_overlap(f),
+    }
 }
 
 /// Self-overlaps of a curve whose self-intersection resultant vanishes identically: pairs of
@@ -527,7 +527,7 @@ impl Mobius {
         let q = |x: &BigInt| BigRational::from_integer(x.clone());
         let (num, den) = (vec![-q(&self.b), q(&self.d)], vec![q(&self.a), -q(&self.c)]);
         let mut out = vec![];
-        let finite = super::self_intersect::self_intersections_of_forms(fa, Domain::All)?;
+        let finite = self_intersections(fa, Domain::All)?;
         for i in &finite.intersections {
             for (s, other, s_float) in [(&i.s, &i.t, i.s_float), (&i.t, &i.s, i.t_float)] {
                 if !in_domain(s) || other.sign_of(&den) == Ordering::Equal {
@@ -550,7 +550,7 @@ impl Mobius {
                     r
                 });
                 let zero = RealAlgebraic::from(rat(0));
-                for i in super::self_intersect::self_intersections_of_forms(&rev, Domain::All)?.intersections {
+                for i in self_intersections(&rev, Domain::All)?.intersections {
                     for (u, other) in [(&i.s, &i.t), (&i.t, &i.s)] {
                         if *other == zero && *u != zero {
                             let s = u.map_rational(&[rat(1)], &[rat(0), rat(1)]);

@@ -1,17 +1,20 @@
 //! Self-intersections `A(s) = A(t)`, `s < t`, from the resultant of the divided differences
-//! `(X(s)W(t) − X(t)W(s))/(s − t)` and the same for `Y`, paired like [`super::pairing`]'s.
+//! `(X(s)W(t) − X(t)W(s))/(s − t)` and the same for `Y`, paired like the curve–curve route's
+//! (`pairing`). When that resultant vanishes identically the curve shares a component with itself:
+//! `None`, and `overlap::self_intersections` (the entry point's route) asks `overlap::self_overlap`.
 
 use super::elimination::divided_difference;
 use super::filter::apart;
 use super::forms::{point_at, rational_point, to_rational};
-use super::pairing::{Side, finite_roots, multiplicity, roots};
-use super::{Contact, Domain, Intersection, Intersections, overlap};
+use super::roots::{Side, finite_roots, multiplicity, roots};
+use super::{Contact, Domain, Intersection, Intersections};
 use crate::error::{Error, Result};
 use crate::poly::algebraic::{RealAlgebraic, resultant_zv};
 use num_bigint::BigInt;
 
-/// [`self_intersect`](super::self_intersect()) of the curve with integer power forms `fa` (checked by the caller).
-pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain) -> Result<Intersections> {
+/// [`self_intersect`](super::self_intersect()) of the curve with integer power forms `fa` (checked by the caller);
+/// `None` when the resultant vanishes identically (a component shared with itself).
+pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain) -> Result<Option<Intersections>> {
     let dx = divided_difference(&fa[0], &fa[2]);
     let dy = divided_difference(&fa[1], &fa[2]);
     if dx.is_empty() || dy.is_empty() {
@@ -23,7 +26,7 @@ pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain)
     }
     let r = resultant_zv(&dx, &dy);
     if r.is_empty() {
-        return overlap::self_overlap(fa);
+        return Ok(None);
     }
     let (ss, simple) = roots(&r, domain);
     let ss = finite_roots(ss, fa);
@@ -63,5 +66,5 @@ pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain)
             }
         }
     }
-    Ok(Intersections { intersections: out, overlaps: vec![] })
+    Ok(Some(Intersections { intersections: out, overlaps: vec![] }))
 }
