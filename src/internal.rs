@@ -18,6 +18,6 @@ pub use crate::curve::casteljau::{
 
 /// `b(t)` by the generic de Casteljau scheme whatever the scalar (for `BigRational`, the route
 /// [`BezierCurve::eval`](crate::BezierCurve::eval) does not take): the naive route of the benches.
-pub fn eval_de_casteljau<S: crate::Scalar>(c: &crate::BezierCurve<S>, t: &S) -> crate::Point<S> {
+pub fn eval_de_casteljau<S: crate::num::Scalar>(c: &crate::curve::BezierCurve<S>, t: &S) -> crate::num::Point<S> {
     c.eval_de_casteljau(t)
 }

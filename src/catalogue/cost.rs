@@ -222,7 +222,7 @@ fn curve_formula(c: &polynomial::CurveFormula) -> Result<f64> {
     for f in [Some(&c.x), Some(&c.y), c.z.as_ref()].into_iter().flatten() {
         // a malformed formula is reported by the check itself
         if let Ok((a, b)) = parse_expr(f).and_then(|e| {
-            e.degree("t", &mut Env::new()).map_err(|e| crate::Error::InvalidArgument { message: e.to_string() })
+            e.degree("t", &mut Env::new()).map_err(|e| crate::error::Error::InvalidArgument { message: e.to_string() })
         }) {
             degree = degree.max(n.saturating_add(a.max(b)));
         }

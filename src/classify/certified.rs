@@ -359,7 +359,7 @@ pub fn summarize_f64(p: &[[f64; 2]; 4]) -> crate::error::Result<Summary> {
     let mut pts = Vec::with_capacity(4);
     for (i, q) in p.iter().enumerate() {
         let coords = q.iter().map(|&v| BigRational::from_float(v)).collect::<Option<Vec<_>>>().ok_or_else(|| {
-            crate::Error::InvalidArgument { message: format!("control point {} is not finite", i + 1) }
+            crate::error::Error::InvalidArgument { message: format!("control point {} is not finite", i + 1) }
         })?;
         pts.push(crate::num::point::Point::new(coords));
     }

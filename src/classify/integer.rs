@@ -542,11 +542,11 @@ fn write_values_with<K: Digits>(v: &Values<K>, out: &mut Vec<u8>, te_s: &mut Vec
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::BezierCurve;
+    use crate::curve::BezierCurve;
     use crate::num::point::Point;
 
     fn generic(p: &[[i64; 2]; 4]) -> String {
-        let pts = p.iter().map(|c| Point::new(vec![crate::rat(c[0]), crate::rat(c[1])])).collect();
+        let pts = p.iter().map(|c| Point::new(vec![crate::num::rat(c[0]), crate::num::rat(c[1])])).collect();
         serde_json::to_string(&crate::classify::classify(&BezierCurve::new(pts).unwrap()).unwrap()).unwrap()
     }
 

@@ -423,7 +423,7 @@ pub struct CurveOptions {
 /// Only for curves that are not planar.
 pub fn draw_curve(fig: &mut Figure, curve: &BezierCurve<BigRational>, opts: &CurveOptions, color: &str) -> Result<()> {
     if curve.dim() != 2 {
-        return Err(crate::Error::DimensionMismatch { expected: 2, found: curve.dim() });
+        return Err(crate::error::Error::DimensionMismatch { expected: 2, found: curve.dim() });
     }
     let poly: Vec<(f64, f64)> = curve.points().iter().map(f64_point).collect();
     let size = size_of(&poly);
