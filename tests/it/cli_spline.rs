@@ -226,3 +226,18 @@ fn cli_spline_method_is_a_closed_set_refused_before_work() {
     let err = String::from_utf8(o.stderr).unwrap();
     assert!(err.contains("boehm, seed, seed-printed"), "{err}");
 }
+
+#[test]
+fn cli_spline_commands_refuse_past_max_work_before_starting() {
+    let knots = "0 0 0 0 1 1 2 3 3 3 3";
+    let pts = "0 0, 1 2, 2 -1, 3 3, 4 0, 5 1, 6 2";
+    for op in ["check", "to-bezier"] {
+        let o = run(&["spline", op, "--max-work", "10", "--degree", "3", "--knots", knots, pts], None);
+        assert_eq!(o.status.code(), Some(2), "{op}");
+        assert!(String::from_utf8(o.stderr).unwrap().contains("--max-work"), "{op}");
+        let o = run(&["spline", op, "--degree", "3", "--knots", knots, pts], None);
+        assert_eq!(o.status.code(), Some(0), "{op} within the default budget");
+    }
+    let o = run(&["spline", "eval", "--max-work", "10", "--u", "1/2", "--degree", "3", "--knots", knots, pts], None);
+    assert_eq!(o.status.code(), Some(2));
+}

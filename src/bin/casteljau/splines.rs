@@ -131,8 +131,8 @@ fn spline_text(sp: &RationalSpline) -> String {
     format!("degree {}, knots {}: {pts}", sp.degree, knots.join(" "))
 }
 
-fn to_bezier(sp: &RationalSpline, method: Method) -> Result<Answer> {
-    let r = sp.bezier_conversion_within(method.into(), &Budget::unlimited())?;
+fn to_bezier(sp: &RationalSpline, method: Method, budget: &Budget) -> Result<Answer> {
+    let r = sp.bezier_conversion_within(method.into(), budget)?;
     let mut lines: Vec<String> =
         r.segments.iter().map(|s| format!("[{}, {}]: {}", s.span.0, s.span.1, weighted_text(&s.curve))).collect();
     if !r.joins.is_empty() {
@@ -141,13 +141,13 @@ fn to_bezier(sp: &RationalSpline, method: Method) -> Result<Answer> {
     Ok(Answer { text: lines.join("\n"), json: json_of(&r), failed: !r.proved() })
 }
 
-fn check(sp: &RationalSpline) -> Result<Answer> {
-    let r = sp.check_within(&Budget::unlimited())?;
+fn check(sp: &RationalSpline, budget: &Budget) -> Result<Answer> {
+    let r = sp.check_within(budget)?;
     Ok(Answer { text: r.report.join("\n"), json: json_of(&r), failed: !r.passed })
 }
 
-fn eval(sp: &RationalSpline, us: &[BigRational]) -> Result<Answer> {
-    let r = sp.eval_many_within(us, &Budget::unlimited())?;
+fn eval(sp: &RationalSpline, us: &[BigRational], budget: &Budget) -> Result<Answer> {
+    let r = sp.eval_many_within(us, budget)?;
     let text = r.values.iter().map(|v| format!("C({}) = {}", v.u, v.point)).collect::<Vec<_>>().join("\n");
     Ok(Answer { text, json: json_of(&r), failed: false })
 }
@@ -182,16 +182,19 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
     match op {
         SplineOp::ToBezier { method, spline } => {
             let given = Given::new(&spline);
-            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&given, line, text)?, method))
+            let budget = spline.curve.budget();
+            batch_lines(&spline.curve, out, |line, text| to_bezier(&spline_of(&given, line, text)?, method, &budget))
         }
         SplineOp::Check { spline } => {
             let given = Given::new(&spline);
-            batch_lines(&spline.curve, out, |line, text| check(&spline_of(&given, line, text)?))
+            let budget = spline.curve.budget();
+            batch_lines(&spline.curve, out, |line, text| check(&spline_of(&given, line, text)?, &budget))
         }
         SplineOp::Eval { u, spline } => {
             let us: Result<Vec<BigRational>> = u.iter().map(|s| option_number("--u", s)).collect();
             let given = Given::new(&spline);
-            batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&given, line, text)?, &us.clone()?))
+            let budget = spline.curve.budget();
+            batch_lines(&spline.curve, out, |line, text| eval(&spline_of(&given, line, text)?, &us.clone()?, &budget))
         }
         SplineOp::Insert { knot: KnotArgs { knot, times }, spline } => {
             let u = option_number("--knot", &knot);
@@ -208,6 +211,7 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
             batch_lines(&spline.curve, out, |line, text| elevate(&spline_of(&given, line, text)?))
         }
         SplineOp::Surface { degree, knots_u, knots_v, rational, mut curve } => {
+            let budget = curve.budget();
             if curve.dim == 2 {
                 curve.dim = 3; // surfaces are 3D unless --dim says otherwise
             }
@@ -240,14 +244,14 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
                     homogeneous_control_points(&points, parse_weights(&rational)?.as_deref())?
                 };
                 let rows: Vec<Vec<Point<BigRational>>> = hom.chunks(cols).map(<[_]>::to_vec).collect();
-                surface(&NurbsSurface::from_knots((p, q), rows, &ku, &kv)?)
+                surface(&NurbsSurface::from_knots((p, q), rows, &ku, &kv)?, &budget)
             })
         }
     }
 }
 
-fn surface(s: &NurbsSurface) -> Result<Answer> {
-    let r = s.extraction_within(&Budget::unlimited())?;
+fn surface(s: &NurbsSurface, budget: &Budget) -> Result<Answer> {
+    let r = s.extraction_within(budget)?;
     let mut lines: Vec<String> = r
         .patches
         .iter()
