@@ -395,6 +395,28 @@ impl From<Method> for casteljau::spline::Conversion {
     }
 }
 
+/// A kind of segment `scan --only` keeps (a closed set: clap refuses anything else).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OnlyKind {
+    /// A cusp on [0, 1].
+    Cusp,
+    /// A loop on [0, 1].
+    Loop,
+    /// An inflection on [0, 1].
+    Inflection,
+    /// Real degree below the written degree.
+    Degenerate,
+    /// A control point on its end point.
+    #[value(name = "zero_length_handle")]
+    ZeroLengthHandle,
+    /// A cusp, loop or inflection exactly at t = 0 or 1.
+    Endpoint,
+    /// A piece that is not a polynomial Bézier curve.
+    Skipped,
+    /// A piece that could not be read.
+    Error,
+}
+
 /// A knot to insert or remove, and how many times.
 #[derive(Args, Debug)]
 pub struct KnotArgs {
@@ -585,8 +607,8 @@ pub struct ScanArgs {
     /// Only segments of these kinds (comma-separated): cusp, loop, inflection (on [0,1]),
     /// degenerate, zero_length_handle, endpoint (a cusp, loop or inflection exactly at t = 0 or 1),
     /// skipped, error.
-    #[arg(long)]
-    pub only: Option<String>,
+    #[arg(long, value_enum, value_delimiter = ',')]
+    pub only: Vec<OnlyKind>,
     /// How SVG and text numbers are read: `exact` (0.1 is 1/10) or `binary64` (the f64 nearest
     /// to it, exactly). Font coordinates are always the font's exact values.
     #[arg(long, value_enum, default_value_t = Numbers::Exact)]

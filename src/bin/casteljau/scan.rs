@@ -13,7 +13,7 @@
 //! arc) has `skipped` (the reason), `from` and `to` instead; an element or glyph that cannot be
 //! read has `error`.
 
-use crate::args::ScanArgs;
+use crate::args::{OnlyKind, ScanArgs};
 use casteljau::classify::{Classification, SegmentFlag, classify, segment_flags};
 use casteljau::curve::BezierCurve;
 use casteljau::format::{Contour, Font, Segment, font_count, parse_path, read_svg};
@@ -49,10 +49,6 @@ impl Tally {
     }
 }
 
-/// The `--only` kinds.
-const ONLY_KINDS: [&str; 8] =
-    ["cusp", "loop", "inflection", "degenerate", "zero_length_handle", "endpoint", "skipped", "error"];
-
 /// The rendered lines of one unit (glyph, element, batch line) and its tally.
 struct Rendered {
     lines: Vec<u8>,
@@ -69,24 +65,25 @@ enum Unit {
 }
 
 struct Scanner {
-    only: Option<Vec<String>>,
+    only: Vec<OnlyKind>,
     mode: NumberMode,
     variation: Option<Vec<(String, f64)>>,
 }
 
 impl Scanner {
     fn keep(&self, k: Option<&Classification>, flags: &[SegmentFlag], skipped: bool, error: bool) -> bool {
-        let Some(only) = &self.only else { return true };
-        only.iter().any(|o| match o.as_str() {
-            "cusp" => k.is_some_and(|k| k.segment.has_cusp),
-            "loop" => k.is_some_and(|k| k.segment.has_loop),
-            "inflection" => k.is_some_and(|k| k.segment.inflections > 0),
-            "degenerate" => flags.contains(&SegmentFlag::Degenerate),
-            "zero_length_handle" => flags.contains(&SegmentFlag::ZeroLengthHandle),
-            "endpoint" => flags.iter().any(|f| f.at_endpoint()),
-            "skipped" => skipped,
-            "error" => error,
-            _ => false,
+        if self.only.is_empty() {
+            return true;
+        }
+        self.only.iter().any(|o| match o {
+            OnlyKind::Cusp => k.is_some_and(|k| k.segment.has_cusp),
+            OnlyKind::Loop => k.is_some_and(|k| k.segment.has_loop),
+            OnlyKind::Inflection => k.is_some_and(|k| k.segment.inflections > 0),
+            OnlyKind::Degenerate => flags.contains(&SegmentFlag::Degenerate),
+            OnlyKind::ZeroLengthHandle => flags.contains(&SegmentFlag::ZeroLengthHandle),
+            OnlyKind::Endpoint => flags.iter().any(|f| f.at_endpoint()),
+            OnlyKind::Skipped => skipped,
+            OnlyKind::Error => error,
         })
     }
 
@@ -172,17 +169,7 @@ const UNITS_PER_CHUNK: usize = 256;
 /// Runs `scan`; returns the exit code (2 when any file, glyph, element or line could not be
 /// read; 0 otherwise).
 pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
-    let only = match &args.only {
-        None => None,
-        Some(s) => {
-            let kinds: Vec<String> = s.split(',').map(|k| k.trim().to_string()).filter(|k| !k.is_empty()).collect();
-            if let Some(bad) = kinds.iter().find(|k| !ONLY_KINDS.contains(&k.as_str())) {
-                eprintln!("casteljau: --only: unknown kind {bad:?} (kinds: {})", ONLY_KINDS.join(", "));
-                return 2;
-            }
-            Some(kinds)
-        }
-    };
+    let only = args.only.clone();
     if args.files.is_empty() && args.path.is_none() {
         eprintln!("casteljau: scan needs FILE arguments or --path");
         return 2;
