@@ -455,11 +455,12 @@ pub fn integer_cubic(text: &str) -> Option<[[i64; 2]; 4]> {
         let start = i;
         let mut v: i64 = 0;
         while i < b.len() && b[i].is_ascii_digit() {
-            v = v * 10 + i64::from(b[i] - b'0');
-            i += 1;
-            if i - start > 18 {
+            // 18 digits always fit an i64; a 19th could overflow the product: not this route
+            if i - start == 18 {
                 return None;
             }
+            v = v * 10 + i64::from(b[i] - b'0');
+            i += 1;
         }
         if i == start {
             return None;

@@ -134,3 +134,12 @@ fn parse_binary64_mode_rounds_like_the_f64_parser() {
     let e = parse_number_in("-1e309", Position::default(), NumberMode::Binary64).unwrap_err().to_string();
     assert!(e.contains("\"-1e309\"") && e.contains("binary64"), "{e}");
 }
+
+#[test]
+fn integer_cubic_fast_path_declines_19_digit_coordinates_without_overflow() {
+    // 19 nines overflow an i64 product: the fast route must decline, not wrap or panic
+    assert_eq!(casteljau::internal::integer_cubic("9999999999999999999 0, 1 1, 2 0, 3 1"), None);
+    assert_eq!(casteljau::internal::integer_cubic("-9999999999999999999 0, 1 1, 2 0, 3 1"), None);
+    let p = casteljau::internal::integer_cubic("999999999999999999 0, 1 1, 2 0, 3 1").unwrap();
+    assert_eq!(p[0], [999_999_999_999_999_999, 0]);
+}
