@@ -49,6 +49,7 @@ pub mod plot;
 pub mod poly;
 pub mod proof;
 pub mod rational;
+pub mod shape;
 pub mod spline;
 #[cfg(feature = "proptest")]
 pub mod strategies;

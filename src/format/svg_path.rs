@@ -401,6 +401,14 @@ pub fn fill_path(d: &str, mode: NumberMode) -> Result<ClosedPath> {
     ClosedPath::from_polynomial(contours)
 }
 
+/// SVG path data as the shape its fill covers ([`fill_path`], numbers read exactly).
+impl std::str::FromStr for crate::shape::Shape {
+    type Err = Error;
+    fn from_str(d: &str) -> Result<Self> {
+        Ok(crate::shape::Shape::new(fill_path(d, NumberMode::Exact)?))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -62,7 +62,7 @@ enum Event {
 
 /// A rational strictly between `a < b`: the intervals are refined until the upper end of `a`'s
 /// lies below the lower end of `b`'s (or equals it with both irrational: open intervals).
-fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> BigRational {
+pub(crate) fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> BigRational {
     let (mut a, mut b) = (a.clone(), b.clone());
     loop {
         let ((_, ah), (bl, _)) = (a.interval(), b.interval());

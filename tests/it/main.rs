@@ -37,6 +37,7 @@ mod rational_cubic;
 #[cfg(feature = "cli")]
 mod robustness;
 mod seed_examples;
+mod shapes;
 mod spline_knots;
 mod strategies;
 mod surfaces_splines;

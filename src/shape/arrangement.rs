@@ -1,0 +1,1042 @@
+//! The exact arrangement of the segments of several closed paths.
+//!
+//! 1. **Pairs.** Every pair of segments whose outward-rounded boxes meet is decided: two
+//!    segments that share an end point `P` and lie on opposite sides of a line through `P`
+//!    (every other control point strictly on its side: their convex hulls meet only at `P`)
+//!    meet only there — the common case of neighbours in a contour, decided without a
+//!    resultant; two segments whose control hulls are strictly separated by a line meet nowhere;
+//!    every other pair goes to [`crate::intersect::intersect_within`] (isolated points, tangencies
+//!    and shared arcs, exactly). Each segment is checked for self-intersections unless its
+//!    hodograph lies in a closed half-plane with one vector strictly inside (then it is monotone
+//!    in that direction and injective).
+//! 2. **Split.** Each segment is cut at every parameter where it meets anything (and at 0 and 1):
+//!    its edges are the pieces between consecutive cuts. Points are identified by the records
+//!    that produced them (a union–find over (segment, parameter)), so a vertex where three or
+//!    more curves meet is one vertex, and an irrational vertex is never rounded.
+//! 3. **Merge.** Pieces on a shared arc are one edge that records every input piece it carries,
+//!    with its direction relative to the edge.
+//! 4. **Sides.** For each edge, the winding number of every input on its left and on its right:
+//!    the winding number by a ray from a rational point inside the edge toward its left, not
+//!    counting the crossings at the origin (see the private `ray` module), and the right one
+//!    from `left − right = Σ ±1` over the pieces the edge carries (`+1` forwards). Edges joined
+//!    at a vertex of degree 2 bound the same two faces, so one ray serves a whole chain.
+//! 5. **Faces** (on demand): the edges around each vertex in counter-clockwise order (see the
+//!    private `germ` module), each face boundary traced with the face on its left; a cycle whose
+//!    left side has winding number 1 around itself is the outer boundary of a bounded face,
+//!    the others are inner boundaries, given to the innermost outer boundary around them.
+
+use super::germ::{Angle, Germ, compare_tangent};
+use super::ray::{Axis, Origin, Piece, RayWinding, whole, winding};
+use super::segment::Seg;
+use crate::error::{Error, Result};
+use crate::intersect::winding::rational_between;
+use crate::intersect::{ClosedPath, Domain};
+use crate::num::point::Point;
+use crate::num::scalar::rat;
+use crate::poly::algebraic::RealAlgebraic;
+use crate::work::Budget;
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+use serde::Serialize;
+use std::cmp::Ordering;
+
+/// Most segments over all inputs of one arrangement.
+pub const MAX_ARRANGEMENT_SEGMENTS: usize = 50_000;
+
+/// Where a piece of an input lies: the input (0-based: `A` is 0, `B` is 1), the contour in it,
+/// the segment in the contour, and the exact parameters `from` and `to` on the segment (`from >
+/// to` when the piece runs backwards). JSON: `input`, `contour`, `segment`, `from`, `to` (exact
+/// strings), `from_float`, `to_float`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct InputPiece {
+    /// The input.
+    pub input: usize,
+    /// The contour within the input.
+    pub contour: usize,
+    /// The segment within the contour.
+    pub segment: usize,
+    /// Where the piece starts on the segment.
+    #[serde(serialize_with = "crate::num::serial::string")]
+    pub from: RealAlgebraic,
+    /// Where it ends.
+    #[serde(serialize_with = "crate::num::serial::string")]
+    pub to: RealAlgebraic,
+    /// `from`, correctly rounded.
+    pub from_float: f64,
+    /// `to`, correctly rounded.
+    pub to_float: f64,
+}
+
+/// A vertex: an exact point where edges meet. JSON: `point` (exact strings: rationals, or real
+/// algebraic numbers), `point_float`, `degree` (edge ends at it).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Vertex {
+    /// The exact coordinates.
+    #[serde(serialize_with = "crate::num::serial::strings")]
+    pub point: Vec<RealAlgebraic>,
+    /// The coordinates, correctly rounded.
+    pub point_float: [f64; 2],
+    /// The number of edge ends at the vertex.
+    pub degree: usize,
+}
+
+/// An edge: a piece of an input segment between two vertices, with every input piece on it.
+/// JSON: `from`, `to` (vertex indices), `pieces` (the first is the edge's own curve, in the
+/// edge's direction; the others run along or against it), `winding_left`, `winding_right` (per
+/// input, the winding number on each side).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Edge {
+    /// The vertex it starts at.
+    pub from: usize,
+    /// The vertex it ends at.
+    pub to: usize,
+    /// The input pieces it carries.
+    pub pieces: Vec<InputPiece>,
+    /// Per input, the winding number just left of the edge.
+    pub winding_left: Vec<i64>,
+    /// Per input, the winding number just right of it.
+    pub winding_right: Vec<i64>,
+}
+
+/// A side of an edge: the edge, and whether it is traversed forwards (its left side).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct HalfEdge {
+    /// The edge.
+    pub edge: usize,
+    /// Traversed from `from` to `to` (the face is on its left).
+    pub forward: bool,
+}
+
+/// A face: a connected component of the plane minus the edges. JSON: `bounded`, `outer` (the
+/// outer boundary, half-edges with the face on their left; empty for the unbounded face),
+/// `inner` (the boundaries of the components inside it), `winding` (per input).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Face {
+    /// Whether the face is bounded.
+    pub bounded: bool,
+    /// The outer boundary (counter-clockwise).
+    pub outer: Vec<HalfEdge>,
+    /// The inner boundaries (clockwise).
+    pub inner: Vec<Vec<HalfEdge>>,
+    /// Per input, the winding number in the face.
+    pub winding: Vec<i64>,
+}
+
+/// Where a point lies in an [`Arrangement`]. JSON: `{"vertex": i}`, `{"edge": i, "t": …,
+/// "t_float": …}` (the parameter on the edge's first piece) or `{"face": i, "winding": […]}`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Location {
+    /// On a vertex.
+    Vertex {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// Inside an edge.
+    Edge {
+        /// The edge.
+        edge: usize,
+        /// The parameter on the edge's first piece's segment.
+        #[serde(serialize_with = "crate::num::serial::string")]
+        t: RealAlgebraic,
+        /// `t`, correctly rounded.
+        t_float: f64,
+    },
+    /// Inside a face.
+    Face {
+        /// The face (see [`Arrangement::faces`]).
+        face: usize,
+        /// Per input, the winding number there.
+        winding: Vec<i64>,
+    },
+}
+
+/// An internal edge: a piece of segment `seg` on `[lo, hi]` and what it carries.
+#[derive(Clone, Debug)]
+pub(crate) struct EdgeData {
+    pub seg: usize,
+    pub lo: RealAlgebraic,
+    pub hi: RealAlgebraic,
+    pub from: usize,
+    pub to: usize,
+    /// `(segment, lo, hi, forward)`.
+    pub carriers: Vec<(usize, RealAlgebraic, RealAlgebraic, bool)>,
+    pub left: Vec<i64>,
+    pub right: Vec<i64>,
+}
+
+/// The exact arrangement of closed paths (see the module documentation).
+///
+/// # Example
+/// ```
+/// use casteljau::shape::{Arrangement, Location, Shape};
+/// use casteljau::{Point, rat};
+/// // two unit squares side by side share the edge x = 1
+/// let a: Shape = "M0 0 H1 V1 H0 Z".parse().unwrap();
+/// let b: Shape = "M1 0 H2 V1 H1 Z".parse().unwrap();
+/// let arr = Arrangement::new(&[a, b]).unwrap();
+/// assert_eq!(arr.vertices().len(), 6);
+/// assert_eq!(arr.edges().len(), 7); // the shared edge is one edge carrying two pieces
+/// let shared = arr.edges().iter().find(|e| e.pieces.len() == 2).unwrap();
+/// assert_eq!((shared.winding_left.clone(), shared.winding_right.clone()), (vec![1, 0], vec![0, 1]));
+/// let p = |x, y| Point::new(vec![x, y]);
+/// let faces = arr.faces().unwrap();
+/// assert_eq!(faces.len(), 3); // two squares and the outside
+/// let Location::Face { winding, .. } = arr.locate(&p(rat(3) / rat(2), rat(1) / rat(2))).unwrap() else { panic!() };
+/// assert_eq!(winding, vec![0, 1]);
+/// assert!(matches!(arr.locate(&p(rat(1), rat(0))).unwrap(), Location::Vertex { .. }));
+/// ```
+#[derive(Clone, Debug)]
+pub struct Arrangement {
+    pub(crate) segs: Vec<Seg>,
+    pub(crate) inputs: usize,
+    /// Per input, per contour, the segment indices.
+    pub(crate) contours: Vec<Vec<Vec<usize>>>,
+    pub(crate) edges: Vec<EdgeData>,
+    /// Per vertex, a representative `(segment, parameter)`.
+    pub(crate) vertex_at: Vec<(usize, RealAlgebraic)>,
+    pub(crate) degree: Vec<usize>,
+}
+
+/// What two segments share, as found.
+#[allow(clippy::large_enum_variant)] // short-lived, one per contact
+enum Link {
+    Point(usize, RealAlgebraic, usize, RealAlgebraic),
+    Arc(usize, [RealAlgebraic; 2], usize, [RealAlgebraic; 2]),
+}
+
+/// Union–find with parity.
+struct Union {
+    parent: Vec<usize>,
+    parity: Vec<bool>,
+}
+
+impl Union {
+    fn new(n: usize) -> Self {
+        Union { parent: (0..n).collect(), parity: vec![false; n] }
+    }
+    fn find(&mut self, x: usize) -> (usize, bool) {
+        let mut path = vec![];
+        let mut r = x;
+        while self.parent[r] != r {
+            path.push(r);
+            r = self.parent[r];
+        }
+        // compress, accumulating parity from the top
+        let mut acc = false;
+        for &n in path.iter().rev() {
+            acc ^= self.parity[n];
+            self.parity[n] = acc;
+            self.parent[n] = r;
+        }
+        (r, if path.is_empty() { false } else { self.parity[x] })
+    }
+    /// Joins `a` and `b` with `parity(a) ^ parity(b) = p`; false on a contradiction.
+    fn union(&mut self, a: usize, b: usize, p: bool) -> bool {
+        let (ra, pa) = self.find(a);
+        let (rb, pb) = self.find(b);
+        if ra == rb {
+            return pa ^ pb == p;
+        }
+        let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
+        self.parent[hi] = lo;
+        self.parity[hi] = pa ^ pb ^ p;
+        true
+    }
+}
+
+/// Whether every point of `xs` is strictly on the negative side of the line through `p` with
+/// normal `n`, and every point of `ys` strictly on the positive side (points equal to `p` aside).
+fn separated_at(
+    p: &Point<BigRational>,
+    n: &[BigRational; 2],
+    xs: &[Point<BigRational>],
+    ys: &[Point<BigRational>],
+) -> bool {
+    let dot = |q: &Point<BigRational>| (&q.coords[0] - &p.coords[0]) * &n[0] + (&q.coords[1] - &p.coords[1]) * &n[1];
+    xs.iter().filter(|q| *q != p).all(|q| dot(q).is_negative())
+        && ys.iter().filter(|q| *q != p).all(|q| dot(q).is_positive())
+}
+
+/// Two segments sharing the end point `p`: a line through `p` with their other control points
+/// strictly on opposite sides.
+fn split_at_common_point(p: &Point<BigRational>, a: &[Point<BigRational>], b: &[Point<BigRational>]) -> bool {
+    let away = |ps: &[Point<BigRational>]| -> Option<[BigRational; 2]> {
+        // the control point nearest to p along the polygon that differs from it
+        let first = if ps[0] == *p { ps.iter().find(|q| *q != p) } else { ps.iter().rev().find(|q| *q != p) };
+        first.map(|q| [&q.coords[0] - &p.coords[0], &q.coords[1] - &p.coords[1]])
+    };
+    let (Some(da), Some(db)) = (away(a), away(b)) else { return false };
+    let l1 = |v: &[BigRational; 2]| v[0].abs() + v[1].abs();
+    let (na, nb) = (l1(&da), l1(&db));
+    let candidates = [
+        [&db[0] / &nb - &da[0] / &na, &db[1] / &nb - &da[1] / &na],
+        [db[0].clone(), db[1].clone()],
+        [-da[0].clone(), -da[1].clone()],
+    ];
+    candidates.iter().any(|n| !(n[0].is_zero() && n[1].is_zero()) && separated_at(p, n, a, b))
+}
+
+/// Whether a line strictly separates the convex hulls of `a` and `b` (tested on the normals of
+/// every chord of either point set: a separating axis of two convex polygons is normal to one of
+/// their edges).
+fn hulls_separated(a: &[Point<BigRational>], b: &[Point<BigRational>]) -> bool {
+    let proj = |n: &[BigRational; 2], ps: &[Point<BigRational>]| -> (BigRational, BigRational) {
+        let mut it = ps.iter().map(|q| &q.coords[0] * &n[0] + &q.coords[1] * &n[1]);
+        let first = it.next().expect("control points");
+        it.fold((first.clone(), first), |(lo, hi), v| {
+            (if v < lo { v.clone() } else { lo }, if v > hi { v } else { hi })
+        })
+    };
+    for set in [a, b] {
+        for i in 0..set.len() {
+            for j in i + 1..set.len() {
+                let n = [&set[i].coords[1] - &set[j].coords[1], &set[j].coords[0] - &set[i].coords[0]];
+                if n[0].is_zero() && n[1].is_zero() {
+                    continue;
+                }
+                let ((alo, ahi), (blo, bhi)) = (proj(&n, a), proj(&n, b));
+                if ahi < blo || bhi < alo {
+                    return true;
+                }
+            }
+        }
+    }
+    false
+}
+
+/// A polynomial segment monotone in some direction (its hodograph in a closed half-plane with a
+/// vector strictly inside), hence injective; or a rational quadratic with positive weights
+/// whose control points are not collinear (an arc of a proper conic).
+fn injective(s: &Seg) -> bool {
+    let Some(ps) = &s.hull else { return false };
+    if s.degree() <= 1 {
+        return true;
+    }
+    let polynomial = s.curve.weights().windows(2).all(|w| w[0] == w[1]);
+    if !polynomial {
+        if s.degree() == 2 {
+            let d = |i: usize, j: usize, k: usize| {
+                (&ps[j].coords[0] - &ps[i].coords[0]) * (&ps[k].coords[1] - &ps[i].coords[1])
+            };
+            let e = |i: usize, j: usize, k: usize| {
+                (&ps[j].coords[1] - &ps[i].coords[1]) * (&ps[k].coords[0] - &ps[i].coords[0])
+            };
+            return d(0, 1, 2) != e(0, 1, 2);
+        }
+        return false;
+    }
+    let h: Vec<[BigRational; 2]> =
+        ps.windows(2).map(|w| [&w[1].coords[0] - &w[0].coords[0], &w[1].coords[1] - &w[0].coords[1]]).collect();
+    let mut candidates: Vec<[BigRational; 2]> = h.clone();
+    let sum = h.iter().fold([rat(0), rat(0)], |acc, v| [&acc[0] + &v[0], &acc[1] + &v[1]]);
+    candidates.push(sum);
+    candidates.push([&h[0][0] + &h[h.len() - 1][0], &h[0][1] + &h[h.len() - 1][1]]);
+    candidates.iter().any(|n| {
+        let dots: Vec<BigRational> = h.iter().map(|v| &v[0] * &n[0] + &v[1] * &n[1]).collect();
+        dots.iter().all(|d| !d.is_negative()) && dots.iter().any(|d| d.is_positive())
+    })
+}
+
+/// A rational strictly inside `(lo, hi)` where the segment's tangent does not vanish.
+fn inner_parameter(s: &Seg, lo: &RealAlgebraic, hi: &RealAlgebraic) -> BigRational {
+    let mut t = rational_between(lo, hi);
+    for _ in 0..64 {
+        let d = s.direction_at(&t);
+        if !(d[0].is_zero() && d[1].is_zero()) {
+            return t;
+        }
+        t = rational_between(lo, &RealAlgebraic::from(t));
+    }
+    t // a curve whose tangent vanishes on an interval is a point, excluded before
+}
+
+impl Arrangement {
+    /// The arrangement of the inputs' segments, without a work limit.
+    ///
+    /// # Errors
+    /// As [`Self::new_within`].
+    pub fn new(inputs: &[super::Shape]) -> Result<Self> {
+        Self::new_within(inputs, &Budget::unlimited())
+    }
+
+    /// The arrangement of the inputs' segments, with the estimated work of every resultant pair,
+    /// self-intersection and side winding number checked against `budget` before any of them
+    /// starts.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] beyond [`MAX_ARRANGEMENT_SEGMENTS`]; [`Error::WorkLimit`] over the
+    /// budget; the errors of [`crate::intersect::intersect_within`] and
+    /// [`crate::intersect::self_intersect_within`] for a pair or a segment (a curve that traces
+    /// a curve more than once off a line); [`Error::InvalidArgument`] when two overlapping
+    /// segments are split inconsistently (a defect, reported rather than answered wrongly).
+    pub fn new_within(inputs: &[super::Shape], budget: &Budget) -> Result<Self> {
+        let paths: Vec<&ClosedPath> = inputs.iter().map(|s| s.path()).collect();
+        let total: usize = paths.iter().map(|p| p.segments()).sum();
+        if total > MAX_ARRANGEMENT_SEGMENTS {
+            return Err(Error::TooLarge {
+                what: "segments in an arrangement",
+                value: total,
+                limit: MAX_ARRANGEMENT_SEGMENTS,
+            });
+        }
+        let mut segs = vec![];
+        let mut contours = vec![];
+        for (i, p) in paths.iter().enumerate() {
+            let mut cs = vec![];
+            for (c, contour) in p.contours().iter().enumerate() {
+                let mut ids = vec![];
+                for (k, curve) in contour.iter().enumerate() {
+                    ids.push(segs.len());
+                    segs.push(Seg::new(i, c, k, curve.clone())?);
+                }
+                cs.push(ids);
+            }
+            contours.push(cs);
+        }
+        let pairs = candidate_pairs(&segs);
+        // decide the easy pairs, estimate the rest
+        let mut links = vec![];
+        let mut general = vec![];
+        for (a, b) in pairs {
+            match easy_pair(&segs[a], &segs[b]) {
+                Some(found) => links.extend(found.into_iter().map(|(s, t)| Link::Point(a, s, b, t))),
+                None => general.push((a, b)),
+            }
+        }
+        let selfs: Vec<usize> = (0..segs.len()).filter(|&k| !segs[k].degenerate && !injective(&segs[k])).collect();
+        let est = |s: &Seg| crate::work::max_bits(s.curve.homogeneous().points());
+        let mut estimate: f64 = general
+            .iter()
+            .map(|&(a, b)| {
+                crate::work::intersection(segs[a].degree(), segs[b].degree(), est(&segs[a]).max(est(&segs[b])))
+            })
+            .sum();
+        estimate += selfs
+            .iter()
+            .map(|&k| crate::work::intersection(segs[k].degree(), segs[k].degree(), est(&segs[k])))
+            .sum::<f64>();
+        // one ray per edge at most, each over every segment
+        let rays: f64 = segs.iter().map(|s| crate::work::winding_segment(s.degree(), est(s))).sum();
+        estimate += rays * (segs.len() + 2 * general.len()) as f64 * inputs.len().max(1) as f64 / 8.0;
+        budget.check(
+            format!("the arrangement of {} segments ({} pairs to solve)", segs.len(), general.len()),
+            estimate,
+        )?;
+        let unlimited = Budget::unlimited();
+        for &(a, b) in &general {
+            let r = crate::intersect::intersect_within(&segs[a].curve, &segs[b].curve, Domain::Unit, &unlimited)
+                .map_err(|e| located(e, &segs[a], Some(&segs[b])))?;
+            for i in r.intersections {
+                links.push(Link::Point(a, i.s, b, i.t));
+            }
+            for o in r.overlaps {
+                links.push(Link::Arc(a, o.s, b, o.t));
+            }
+        }
+        for &k in &selfs {
+            let r = crate::intersect::self_intersect_within(&segs[k].curve, Domain::Unit, &unlimited)
+                .map_err(|e| located(e, &segs[k], None))?;
+            for i in r.intersections {
+                links.push(Link::Point(k, i.s, k, i.t));
+            }
+            for o in r.overlaps {
+                links.push(Link::Arc(k, o.s, k, o.t));
+            }
+        }
+        build(segs, inputs.len(), contours, links)
+    }
+
+    /// The vertices.
+    pub fn vertices(&self) -> Vec<Vertex> {
+        self.vertex_at
+            .iter()
+            .enumerate()
+            .map(|(v, (k, t))| {
+                let s = &self.segs[*k];
+                Vertex {
+                    point: s.point_at_algebraic(t).to_vec(),
+                    point_float: s.point_float(t),
+                    degree: self.degree[v],
+                }
+            })
+            .collect()
+    }
+
+    /// The edges.
+    pub fn edges(&self) -> Vec<Edge> {
+        self.edges
+            .iter()
+            .map(|e| Edge {
+                from: e.from,
+                to: e.to,
+                pieces: e.carriers.iter().map(|(k, lo, hi, fwd)| self.input_piece(*k, lo, hi, *fwd)).collect(),
+                winding_left: e.left.clone(),
+                winding_right: e.right.clone(),
+            })
+            .collect()
+    }
+
+    pub(crate) fn input_piece(&self, k: usize, lo: &RealAlgebraic, hi: &RealAlgebraic, forward: bool) -> InputPiece {
+        let s = &self.segs[k];
+        let (from, to) = if forward { (lo.clone(), hi.clone()) } else { (hi.clone(), lo.clone()) };
+        let (from_float, to_float) = (from.to_f64(), to.to_f64());
+        InputPiece { input: s.input, contour: s.contour, segment: s.index, from, to, from_float, to_float }
+    }
+
+    /// The number of inputs.
+    pub fn inputs(&self) -> usize {
+        self.inputs
+    }
+
+    /// The half-edges leaving vertex `v` in counter-clockwise order.
+    pub(crate) fn rotation(&self, v: usize, keep: &dyn Fn(HalfEdge) -> bool) -> Result<Vec<HalfEdge>> {
+        let mut out: Vec<(HalfEdge, Germ<'_>)> = vec![];
+        for (i, e) in self.edges.iter().enumerate() {
+            let s = &self.segs[e.seg];
+            if e.from == v && keep(HalfEdge { edge: i, forward: true }) {
+                out.push((HalfEdge { edge: i, forward: true }, Germ { seg: s, t0: e.lo.clone(), sigma: 1 }));
+            }
+            if e.to == v && keep(HalfEdge { edge: i, forward: false }) {
+                out.push((HalfEdge { edge: i, forward: false }, Germ { seg: s, t0: e.hi.clone(), sigma: -1 }));
+            }
+        }
+        if out.len() <= 2 {
+            return Ok(out.into_iter().map(|(h, _)| h).collect());
+        }
+        let angles: Vec<Angle> = out.iter().map(|(_, g)| g.angle()).collect::<Result<_>>()?;
+        let (k, t) = &self.vertex_at[v];
+        let point = t.to_rational().map(|r| self.segs[*k].point_at(r));
+        let mut order: Vec<usize> = (0..out.len()).collect();
+        let mut failure = None;
+        order.sort_by(|&i, &j| match angles[i].cmp_direction(&angles[j]) {
+            Ordering::Equal => {
+                let Some(p) = &point else {
+                    failure.get_or_insert_with(|| Error::InvalidArgument {
+                        message: format!(
+                            "two curves leave the irrational vertex near ({}, {}) tangentially; their order around it is not decided",
+                            self.segs[*k].point_float(t)[0],
+                            self.segs[*k].point_float(t)[1]
+                        ),
+                    });
+                    return Ordering::Equal;
+                };
+                let v2 = [p.coords[0].clone(), p.coords[1].clone()];
+                match compare_tangent(&out[i].1, &out[j].1, &angles[i], &angles[j], &v2) {
+                    Ok(o) => o,
+                    Err(e) => {
+                        failure.get_or_insert(e);
+                        Ordering::Equal
+                    }
+                }
+            }
+            o => o,
+        });
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        Ok(order.into_iter().map(|i| out[i].0).collect())
+    }
+
+    /// The winding number of a cycle of half-edges just beside half-edge `h` (on its left), not
+    /// counting `h` itself.
+    pub(crate) fn beside(&self, cycles: &[Vec<HalfEdge>], h: HalfEdge) -> Result<i64> {
+        let (p, axis) = self.beside_point(h);
+        let pieces: Vec<Vec<Piece<'_>>> = cycles.iter().map(|c| c.iter().map(|&x| self.piece(x)).collect()).collect();
+        match winding(&pieces, &p, axis, Origin::Excluded)? {
+            RayWinding::Off(w) => Ok(w),
+            RayWinding::On { .. } => unreachable!("an excluded origin is never reported"),
+        }
+    }
+
+    /// A rational point inside the edge of `h` and an axis direction pointing to `h`'s left.
+    pub(crate) fn beside_point(&self, h: HalfEdge) -> (Point<BigRational>, Axis) {
+        let e = &self.edges[h.edge];
+        let s = &self.segs[e.seg];
+        let t = inner_parameter(s, &e.lo, &e.hi);
+        let d = s.direction_at(&t);
+        let n = if h.forward { [-d[1].clone(), d[0].clone()] } else { [d[1].clone(), -d[0].clone()] };
+        (s.point_at(&t), Axis::toward(&n))
+    }
+
+    pub(crate) fn piece(&self, h: HalfEdge) -> Piece<'_> {
+        let e = &self.edges[h.edge];
+        Piece { seg: &self.segs[e.seg], lo: e.lo.clone(), hi: e.hi.clone(), forward: h.forward }
+    }
+
+    /// The winding number of cycles around a rational point not on them.
+    pub(crate) fn winding_around(&self, cycles: &[Vec<HalfEdge>], q: &Point<BigRational>) -> Result<i64> {
+        let pieces: Vec<Vec<Piece<'_>>> = cycles.iter().map(|c| c.iter().map(|&x| self.piece(x)).collect()).collect();
+        match winding(&pieces, q, Axis::PosX, Origin::Free)? {
+            RayWinding::Off(w) => Ok(w),
+            RayWinding::On { .. } => Err(Error::InvalidArgument { message: "the point lies on the cycle".into() }),
+        }
+    }
+
+    /// Cycles of the half-edges selected by `keep` (each vertex having as many selected
+    /// half-edges in as out), joined at each vertex with the next selected half-edge clockwise:
+    /// the boundaries of the regions on their left, each passing a pinch vertex once per sector.
+    pub(crate) fn cycles(&self, keep: &dyn Fn(HalfEdge) -> bool) -> Result<Vec<Vec<HalfEdge>>> {
+        let n = self.edges.len();
+        let id = |h: HalfEdge| 2 * h.edge + usize::from(!h.forward);
+        let head = |h: HalfEdge| if h.forward { self.edges[h.edge].to } else { self.edges[h.edge].from };
+        let mut next = vec![usize::MAX; 2 * n];
+        // group the selected half-edges by the vertex they leave and the one they enter
+        let mut at: Vec<Vec<HalfEdge>> = vec![vec![]; self.vertex_at.len()];
+        let mut inn: Vec<Vec<HalfEdge>> = vec![vec![]; self.vertex_at.len()];
+        for e in 0..n {
+            for forward in [true, false] {
+                let h = HalfEdge { edge: e, forward };
+                if keep(h) {
+                    let tail = if forward { self.edges[e].from } else { self.edges[e].to };
+                    at[tail].push(h);
+                    inn[head(h)].push(h);
+                }
+            }
+        }
+        let twin_of = |h: HalfEdge| HalfEdge { edge: h.edge, forward: !h.forward };
+        for (v, outs) in at.iter().enumerate() {
+            if outs.len() != inn[v].len() {
+                return Err(Error::InvalidArgument {
+                    message: format!(
+                        "internal: {} boundary edges enter vertex {v} and {} leave",
+                        inn[v].len(),
+                        outs.len()
+                    ),
+                });
+            }
+            match outs.len() {
+                0 => continue,
+                1 => {
+                    next[id(inn[v][0])] = id(outs[0]);
+                    continue;
+                }
+                _ => {}
+            }
+            // all selected half-edges at v, leaving or (reversed) entering, counter-clockwise
+            let rot = self.rotation(v, &|h: HalfEdge| keep(h) || keep(twin_of(h)))?;
+            let m = rot.len();
+            for (i, &g) in rot.iter().enumerate() {
+                let entering = twin_of(g);
+                if !keep(entering) {
+                    continue;
+                }
+                // the next selected leaving half-edge clockwise from g
+                if let Some(c) = (1..=m).map(|k| rot[(i + m - k) % m]).find(|&c| keep(c)) {
+                    next[id(entering)] = id(c);
+                }
+            }
+        }
+        let mut seen = vec![false; 2 * n];
+        let mut out = vec![];
+        for e in 0..n {
+            for forward in [true, false] {
+                let h = HalfEdge { edge: e, forward };
+                if !keep(h) || seen[id(h)] {
+                    continue;
+                }
+                let mut cycle = vec![];
+                let mut cur = id(h);
+                while !seen[cur] {
+                    seen[cur] = true;
+                    cycle.push(HalfEdge { edge: cur / 2, forward: cur % 2 == 0 });
+                    cur = next[cur];
+                    if cur == usize::MAX {
+                        return Err(Error::InvalidArgument { message: "internal: an open boundary".into() });
+                    }
+                }
+                if cur != id(h) {
+                    return Err(Error::InvalidArgument { message: "internal: boundary cycles cross".into() });
+                }
+                out.push(cycle);
+            }
+        }
+        Ok(out)
+    }
+
+    /// The faces: the bounded ones (each with its outer boundary and the inner boundaries of the
+    /// components inside it), then the unbounded face.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] when two curves leave a vertex tangentially where their order
+    /// cannot be decided exactly (an irrational vertex, or a cusp at the vertex).
+    pub fn faces(&self) -> Result<Vec<Face>> {
+        let all = |_: HalfEdge| true;
+        let cycles = self.cycles(&all)?;
+        let mut outer = vec![];
+        let mut inner = vec![];
+        for c in cycles {
+            if self.beside(std::slice::from_ref(&c), c[0])? == 1 {
+                outer.push(c);
+            } else {
+                inner.push(c);
+            }
+        }
+        let depth = self.depths(&outer)?;
+        let mut faces: Vec<Face> = outer
+            .iter()
+            .map(|c| Face { bounded: true, outer: c.clone(), inner: vec![], winding: self.side(c[0]).to_vec() })
+            .collect();
+        let mut unbounded = Face { bounded: false, outer: vec![], inner: vec![], winding: vec![0; self.inputs] };
+        for c in inner {
+            let mut best: Option<usize> = None;
+            for (i, o) in outer.iter().enumerate() {
+                if self.beside(std::slice::from_ref(o), c[0])? != 0 && best.is_none_or(|b| depth[i] > depth[b]) {
+                    best = Some(i);
+                }
+            }
+            match best {
+                Some(i) => faces[i].inner.push(c),
+                None => unbounded.inner.push(c),
+            }
+        }
+        faces.push(unbounded);
+        Ok(faces)
+    }
+
+    /// For each outer cycle, how many other outer cycles enclose its face.
+    fn depths(&self, outer: &[Vec<HalfEdge>]) -> Result<Vec<usize>> {
+        let mut depth = vec![0; outer.len()];
+        for (i, c) in outer.iter().enumerate() {
+            for (j, o) in outer.iter().enumerate() {
+                if i != j && self.beside(std::slice::from_ref(o), c[0])? != 0 {
+                    depth[i] += 1;
+                }
+            }
+        }
+        Ok(depth)
+    }
+
+    /// The per-input winding numbers on the left of a half-edge.
+    pub(crate) fn side(&self, h: HalfEdge) -> &[i64] {
+        let e = &self.edges[h.edge];
+        if h.forward { &e.left } else { &e.right }
+    }
+
+    /// Where a rational point lies: on a vertex, inside an edge, or inside a face (with every
+    /// input's winding number there). Faces are numbered as [`Self::faces`] lists them.
+    ///
+    /// # Errors
+    /// As [`Self::faces`]; [`Error::InvalidArgument`] for a point that is not planar.
+    pub fn locate(&self, q: &Point<BigRational>) -> Result<Location> {
+        if q.dim() != 2 {
+            return Err(Error::InvalidArgument { message: "points to locate are planar".into() });
+        }
+        let (qx, qy) = (crate::num::scalar::ratio_to_f64(&q.coords[0]), crate::num::scalar::ratio_to_f64(&q.coords[1]));
+        for (v, (k, t)) in self.vertex_at.iter().enumerate() {
+            let f = self.segs[*k].point_float(t);
+            if (f[0] - qx).abs() <= 1e-300_f64.max(f[0].abs() * 4.0 * f64::EPSILON)
+                && (f[1] - qy).abs() <= 1e-300_f64.max(f[1].abs() * 4.0 * f64::EPSILON)
+                && self.segs[*k].passes_through(t, q)
+            {
+                return Ok(Location::Vertex { vertex: v });
+            }
+        }
+        for (i, e) in self.edges.iter().enumerate() {
+            let s = &self.segs[e.seg];
+            if let Some([x0, y0, x1, y1]) = s.bbox
+                && (qx < x0 || qx > x1 || qy < y0 || qy > y1)
+            {
+                continue;
+            }
+            let piece = Piece { seg: s, lo: e.lo.clone(), hi: e.hi.clone(), forward: true };
+            // a single-piece cycle: only "on it or not" is used
+            if let RayWinding::On { t, .. } = winding(&[vec![piece]], q, Axis::PosX, Origin::Free)? {
+                let t_float = t.to_f64();
+                return Ok(Location::Edge { edge: i, t, t_float });
+            }
+        }
+        let faces = self.faces()?;
+        let bounded: Vec<&Face> = faces.iter().filter(|f| f.bounded).collect();
+        let mut best: Option<(usize, usize)> = None;
+        for (i, f) in bounded.iter().enumerate() {
+            if self.winding_around(std::slice::from_ref(&f.outer), q)? == 0 {
+                continue;
+            }
+            let depth = bounded
+                .iter()
+                .enumerate()
+                .filter(|&(j, g)| {
+                    j != i && self.beside(std::slice::from_ref(&g.outer), f.outer[0]).is_ok_and(|w| w != 0)
+                })
+                .count();
+            if best.is_none_or(|(_, d)| depth > d) {
+                best = Some((i, depth));
+            }
+        }
+        Ok(match best {
+            Some((i, _)) => Location::Face { face: i, winding: faces[i].winding.clone() },
+            None => Location::Face { face: faces.len() - 1, winding: vec![0; self.inputs] },
+        })
+    }
+}
+
+/// An error from one pair or segment, naming where it is.
+fn located(e: Error, a: &Seg, b: Option<&Seg>) -> Error {
+    let name = |s: &Seg| format!("input {} contour {} segment {}", s.input, s.contour, s.index);
+    match e {
+        Error::InvalidArgument { message } => Error::InvalidArgument {
+            message: match b {
+                Some(b) => format!("{message} ({} against {})", name(a), name(b)),
+                None => format!("{message} ({})", name(a)),
+            },
+        },
+        other => other,
+    }
+}
+
+/// The pairs of non-degenerate segments whose boxes meet (a sweep over `x`), or that have no box.
+fn candidate_pairs(segs: &[Seg]) -> Vec<(usize, usize)> {
+    let mut boxed: Vec<usize> = vec![];
+    let mut unboxed: Vec<usize> = vec![];
+    for (k, s) in segs.iter().enumerate() {
+        if s.degenerate {
+            continue;
+        }
+        if s.bbox.is_some() { boxed.push(k) } else { unboxed.push(k) }
+    }
+    let bx = |k: usize| segs[k].bbox.expect("boxed");
+    boxed.sort_by(|&a, &b| bx(a)[0].total_cmp(&bx(b)[0]));
+    let mut pairs = vec![];
+    let mut active: Vec<usize> = vec![];
+    for &k in &boxed {
+        let b = bx(k);
+        active.retain(|&j| bx(j)[2] >= b[0]);
+        for &j in &active {
+            let c = bx(j);
+            if c[1] <= b[3] && b[1] <= c[3] {
+                pairs.push((j.min(k), j.max(k)));
+            }
+        }
+        active.push(k);
+    }
+    for &u in &unboxed {
+        for k in 0..segs.len() {
+            if k != u && !segs[k].degenerate && (segs[k].bbox.is_some() || k > u) {
+                pairs.push((u.min(k), u.max(k)));
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs.dedup();
+    pairs
+}
+
+/// Pairs decided without a resultant: the common points found (possibly none), or `None`.
+fn easy_pair(a: &Seg, b: &Seg) -> Option<Vec<(RealAlgebraic, RealAlgebraic)>> {
+    let (ha, hb) = (a.hull.as_ref()?, b.hull.as_ref()?);
+    let ends = [(&a.end, &b.start, 1, 0), (&a.start, &b.end, 0, 1), (&a.start, &b.start, 0, 0), (&a.end, &b.end, 1, 1)];
+    let shared: Vec<_> = ends.iter().filter(|(p, q, _, _)| p == q).collect();
+    match shared.len() {
+        0 => hulls_separated(ha, hb).then(Vec::new),
+        1 => {
+            let (p, _, s, t) = shared[0];
+            split_at_common_point(p, ha, hb).then(|| vec![(rat(*s).into(), rat(*t).into())])
+        }
+        _ => None,
+    }
+}
+
+/// Splits, identifies, merges and sides (steps 2–4 of the module documentation).
+fn build(segs: Vec<Seg>, inputs: usize, contours: Vec<Vec<Vec<usize>>>, links: Vec<Link>) -> Result<Arrangement> {
+    let n = segs.len();
+    let mut params: Vec<Vec<RealAlgebraic>> = vec![vec![rat(0).into(), rat(1).into()]; n];
+    for l in &links {
+        match l {
+            Link::Point(a, s, b, t) => {
+                params[*a].push(s.clone());
+                params[*b].push(t.clone());
+            }
+            Link::Arc(a, s, b, t) => {
+                params[*a].extend(s.iter().cloned());
+                params[*b].extend(t.iter().cloned());
+            }
+        }
+    }
+    for p in &mut params {
+        p.sort();
+        p.dedup();
+    }
+    let mut base = vec![0usize; n + 1];
+    for k in 0..n {
+        base[k + 1] = base[k] + params[k].len();
+    }
+    let node = |k: usize, t: &RealAlgebraic, params: &Vec<Vec<RealAlgebraic>>| -> usize {
+        base[k] + params[k].binary_search(t).expect("every linked parameter is a cut")
+    };
+    let mut nodes = Union::new(base[n]);
+    for input in &contours {
+        for c in input {
+            let live: Vec<usize> = c.iter().copied().filter(|&k| !segs[k].degenerate).collect();
+            for (i, &k) in live.iter().enumerate() {
+                let next = live[(i + 1) % live.len()];
+                let last = params[k].len() - 1;
+                nodes.union(base[k] + last, base[next], false);
+            }
+        }
+    }
+    for l in &links {
+        match l {
+            Link::Point(a, s, b, t) => {
+                nodes.union(node(*a, s, &params), node(*b, t, &params), false);
+            }
+            Link::Arc(a, s, b, t) => {
+                nodes.union(node(*a, &s[0], &params), node(*b, &t[0], &params), false);
+                nodes.union(node(*a, &s[1], &params), node(*b, &t[1], &params), false);
+            }
+        }
+    }
+    // raw edges, numbered by segment then parameter
+    let mut edge_base = vec![0usize; n + 1];
+    for k in 0..n {
+        edge_base[k + 1] = edge_base[k] + if segs[k].degenerate { 0 } else { params[k].len() - 1 };
+    }
+    let mut merge = Union::new(edge_base[n]);
+    let bad = |m: &str| Error::InvalidArgument { message: format!("internal: {m}") };
+    for l in &links {
+        let Link::Arc(a, s, b, t) = l else { continue };
+        if s[0] == s[1] {
+            continue;
+        }
+        let idx = |k: usize, x: &RealAlgebraic| params[k].binary_search(x).expect("a cut");
+        let (a0, a1) = (idx(*a, &s[0]), idx(*a, &s[1]));
+        let (ta, tb) = (idx(*b, &t[0]), idx(*b, &t[1]));
+        let (b0, b1, reversed) = if ta < tb { (ta, tb, false) } else { (tb, ta, true) };
+        if a1 - a0 != b1 - b0 {
+            return Err(bad("the pieces of an overlap do not match"));
+        }
+        for i in 0..a1 - a0 {
+            let ea = edge_base[*a] + a0 + i;
+            let eb = if reversed { edge_base[*b] + b1 - 1 - i } else { edge_base[*b] + b0 + i };
+            if !merge.union(ea, eb, reversed) {
+                return Err(bad("an overlap runs both ways"));
+            }
+        }
+    }
+    // vertices in order of first appearance
+    let mut vertex_of_root: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
+    let mut vertex_at = vec![];
+    let mut vertex = |nodes: &mut Union, k: usize, i: usize, params: &Vec<Vec<RealAlgebraic>>| -> usize {
+        let (r, _) = nodes.find(base[k] + i);
+        *vertex_of_root.entry(r).or_insert_with(|| {
+            vertex_at.push((k, params[k][i].clone()));
+            vertex_at.len() - 1
+        })
+    };
+    let mut edges: Vec<EdgeData> = vec![];
+    let mut edge_of_root: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
+    for k in 0..n {
+        if segs[k].degenerate {
+            continue;
+        }
+        for i in 0..params[k].len() - 1 {
+            let raw = edge_base[k] + i;
+            let (root, flip) = merge.find(raw);
+            let (lo, hi) = (params[k][i].clone(), params[k][i + 1].clone());
+            let (from, to) = (vertex(&mut nodes, k, i, &params), vertex(&mut nodes, k, i + 1, &params));
+            match edge_of_root.get(&root) {
+                None => {
+                    edge_of_root.insert(root, edges.len());
+                    // the first raw edge of a class is its root (unions keep the smaller index)
+                    debug_assert!(!flip);
+                    edges.push(EdgeData {
+                        seg: k,
+                        lo: lo.clone(),
+                        hi: hi.clone(),
+                        from,
+                        to,
+                        carriers: vec![(k, lo, hi, true)],
+                        left: vec![],
+                        right: vec![],
+                    });
+                }
+                Some(&e) => {
+                    let ed = &mut edges[e];
+                    let ok = if flip { ed.from == to && ed.to == from } else { ed.from == from && ed.to == to };
+                    if !ok {
+                        return Err(bad("an overlap joins pieces with different ends"));
+                    }
+                    ed.carriers.push((k, lo, hi, !flip));
+                }
+            }
+        }
+    }
+    let mut degree = vec![0usize; vertex_at.len()];
+    for e in &edges {
+        degree[e.from] += 1;
+        degree[e.to] += 1;
+    }
+    let mut arr = Arrangement { segs, inputs, contours, edges, vertex_at, degree };
+    sides(&mut arr)?;
+    Ok(arr)
+}
+
+/// Step 4: the winding numbers on both sides of every edge, one ray per chain of edges joined
+/// at vertices of degree 2.
+fn sides(arr: &mut Arrangement) -> Result<()> {
+    let m = arr.edges.len();
+    let mut at: Vec<Vec<usize>> = vec![vec![]; arr.vertex_at.len()];
+    for (i, e) in arr.edges.iter().enumerate() {
+        at[e.from].push(i);
+        at[e.to].push(i);
+    }
+    let input_cycles: Vec<Vec<Vec<Piece<'_>>>> = arr
+        .contours
+        .iter()
+        .map(|cs| {
+            cs.iter()
+                .map(|c| {
+                    c.iter().filter(|&&k| !arr.segs[k].degenerate).map(|&k| whole(&arr.segs[k])).collect::<Vec<_>>()
+                })
+                .filter(|c: &Vec<Piece<'_>>| !c.is_empty())
+                .collect()
+        })
+        .collect();
+    let mut done: Vec<Option<(Vec<i64>, Vec<i64>)>> = vec![None; m];
+    for start in 0..m {
+        if done[start].is_some() {
+            continue;
+        }
+        let e = &arr.edges[start];
+        let (p, axis) = arr.beside_point(HalfEdge { edge: start, forward: true });
+        let mut left = vec![0i64; arr.inputs];
+        for (i, cycles) in input_cycles.iter().enumerate() {
+            left[i] = match winding(cycles, &p, axis, Origin::Excluded)? {
+                RayWinding::Off(w) => w,
+                RayWinding::On { .. } => unreachable!("an excluded origin is never reported"),
+            };
+        }
+        let mut right = left.clone();
+        for (k, _, _, fwd) in &e.carriers {
+            right[arr.segs[*k].input] -= if *fwd { 1 } else { -1 };
+        }
+        // propagate along the chain through vertices of degree 2
+        let mut stack = vec![(start, left, right)];
+        while let Some((i, l, r)) = stack.pop() {
+            if done[i].is_some() {
+                continue;
+            }
+            let (from, to) = (arr.edges[i].from, arr.edges[i].to);
+            for (v, leaving) in [(to, true), (from, false)] {
+                if at[v].len() != 2 {
+                    continue;
+                }
+                let j = if at[v][0] == i { at[v][1] } else { at[v][0] };
+                if j == i || done[j].is_some() {
+                    continue;
+                }
+                // the chain continues through v: j keeps the sides when it runs on from v
+                let ej = &arr.edges[j];
+                let same = if leaving { ej.from == v } else { ej.to == v };
+                if same { stack.push((j, l.clone(), r.clone())) } else { stack.push((j, r.clone(), l.clone())) }
+            }
+            done[i] = Some((l, r));
+        }
+    }
+    for (e, d) in arr.edges.iter_mut().zip(done) {
+        let (l, r) = d.expect("every edge is sided");
+        e.left = l;
+        e.right = r;
+    }
+    Ok(())
+}

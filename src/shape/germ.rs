@@ -1,0 +1,218 @@
+//! The cyclic order of the edges leaving a vertex, exactly.
+//!
+//! An edge leaves its vertex along the segment `C` from parameter `t0` in direction `σ = ±1`.
+//! With `D = (X'W − XW', Y'W − YW')` (the tangent times `W² > 0`) and `j` the first order with
+//! `D⁽ʲ⁾(t0) ≠ 0`, the edge leaves in direction `σ^(j+1)·D⁽ʲ⁾(t0)` (`j > 0` at a cusp). Directions
+//! are ordered counter-clockwise from `+x` by a pseudo-angle: the quadrant and, within it, a
+//! rational function of `t0` (`b/(a+b)` in the first quadrant, and so on) that increases with the
+//! angle — a real algebraic number when `t0` is, compared exactly.
+//!
+//! Two edges leaving in the same direction are tangent there; which one lies counter-clockwise
+//! of the other is decided by their local expansions: with `u = d·(C − v)` the distance along the
+//! common direction `d` and `w = n·(C − v)` the distance along its left normal `n`, each edge is
+//! locally a graph `w(u) = Σ_k c_k u^k`, and the series are compared coefficient by coefficient
+//! (exact power series, reversion of `u(τ)`). Two distinct curves of degrees `m, n` meet with
+//! multiplicity at most `m·n`, so the series differ by order `m·n + 1`. This needs the vertex
+//! and both parameters rational and both edges regular there; otherwise the order of two tangent
+//! edges is refused with [`Error::InvalidArgument`] naming the vertex (never guessed).
+
+use super::segment::{Poly, Seg, add_scaled, eval, mul, shift};
+use crate::error::{Error, Result};
+use crate::num::scalar::rat;
+use crate::poly::algebraic::RealAlgebraic;
+use crate::poly::polynomial::derivative;
+use num_rational::BigRational;
+use num_traits::Zero;
+use std::cmp::Ordering;
+
+/// An edge end leaving a vertex.
+#[derive(Clone, Debug)]
+pub(crate) struct Germ<'a> {
+    pub seg: &'a Seg,
+    pub t0: RealAlgebraic,
+    /// `+1` when the edge runs towards larger parameters.
+    pub sigma: i64,
+}
+
+/// The pseudo-angle of a germ's direction: quadrant, then position within it.
+#[derive(Clone, Debug)]
+pub(crate) struct Angle {
+    quadrant: u8,
+    within: RealAlgebraic,
+    /// The derivative order of the direction (0 when regular).
+    order: usize,
+}
+
+fn sign_at(p: &[BigRational], t: &RealAlgebraic) -> Ordering {
+    match t.to_rational() {
+        Some(r) => eval(p, r).cmp(&rat(0)),
+        None => t.sign_of(p),
+    }
+}
+
+fn negate(p: &[BigRational]) -> Poly {
+    p.iter().map(|c| -c.clone()).collect()
+}
+
+impl Angle {
+    /// The order of the directions counter-clockwise from `+x` (equal for tangent germs).
+    pub(crate) fn cmp_direction(&self, other: &Angle) -> Ordering {
+        (self.quadrant, &self.within).cmp(&(other.quadrant, &other.within))
+    }
+}
+
+impl Germ<'_> {
+    /// The pseudo-angle of the direction in which the edge leaves.
+    pub(crate) fn angle(&self) -> Result<Angle> {
+        let (mut a, mut b) = (self.seg.dx.clone(), self.seg.dy.clone());
+        for j in 0..=2 * self.seg.degree() + 2 {
+            let (sa, sb) = (sign_at(&a, &self.t0), sign_at(&b, &self.t0));
+            if sa != Ordering::Equal || sb != Ordering::Equal {
+                let flip = self.sigma < 0 && j % 2 == 0;
+                let (a, b, sa, sb) =
+                    if flip { (negate(&a), negate(&b), sa.reverse(), sb.reverse()) } else { (a, b, sa, sb) };
+                use Ordering::*;
+                let (quadrant, num, den) = match (sa, sb) {
+                    (Greater, Greater | Equal) => (0u8, b.clone(), add_scaled(&a, &rat(1), &b)),
+                    (Less | Equal, Greater) => (1, negate(&a), add_scaled(&b, &rat(-1), &a)),
+                    (Less, Less | Equal) => (2, b.clone(), add_scaled(&a, &rat(1), &b)),
+                    _ => (3, a.clone(), add_scaled(&a, &rat(-1), &b)),
+                };
+                let within = match self.t0.to_rational() {
+                    Some(r) => RealAlgebraic::from(eval(&num, r) / eval(&den, r)),
+                    None => self.t0.map_rational(&num, &den),
+                };
+                return Ok(Angle { quadrant, within, order: j });
+            }
+            a = derivative(&a);
+            b = derivative(&b);
+        }
+        Err(Error::InvalidArgument { message: "an edge of zero length".into() })
+    }
+}
+
+const SERIES_MARGIN: usize = 2;
+
+/// Compares two germs leaving a rational vertex `v` in the same direction: `Less` when `g`
+/// lies clockwise of `h` (to the right of the common direction).
+pub(crate) fn compare_tangent(
+    g: &Germ<'_>,
+    h: &Germ<'_>,
+    ga: &Angle,
+    ha: &Angle,
+    v: &[BigRational; 2],
+) -> Result<Ordering> {
+    let refuse = || Error::InvalidArgument {
+        message: format!(
+            "two curves leave the vertex ({}, {}) tangentially where their order around it cannot be decided \
+             exactly (an irrational parameter or a cusp there)",
+            crate::num::scalar::ratio_to_f64(&v[0]),
+            crate::num::scalar::ratio_to_f64(&v[1])
+        ),
+    };
+    let (Some(s), Some(t)) = (g.t0.to_rational(), h.t0.to_rational()) else { return Err(refuse()) };
+    if ga.order != 0 || ha.order != 0 {
+        return Err(refuse());
+    }
+    let d = g.seg.direction_at(s);
+    let d = if g.sigma < 0 { [-d[0].clone(), -d[1].clone()] } else { d };
+    let n = [-d[1].clone(), d[0].clone()];
+    let order = g.seg.degree() * h.seg.degree() + SERIES_MARGIN;
+    let a = graph_series(g, s, v, &d, &n, order);
+    let b = graph_series(h, t, v, &d, &n, order);
+    for k in 2..=order {
+        match a[k].cmp(&b[k]) {
+            Ordering::Equal => continue,
+            o => return Ok(o),
+        }
+    }
+    Err(Error::InvalidArgument {
+        message: "two edges agree to every order at a vertex (an overlap that was not merged)".into(),
+    })
+}
+
+/// The coefficients `c_0..=c_order` of `w(u)` for one germ.
+fn graph_series(
+    g: &Germ<'_>,
+    t0: &BigRational,
+    v: &[BigRational; 2],
+    d: &[BigRational; 2],
+    n: &[BigRational; 2],
+    order: usize,
+) -> Vec<BigRational> {
+    let s = g.seg;
+    let px = add_scaled(&s.x, &-v[0].clone(), &s.w);
+    let py = add_scaled(&s.y, &-v[1].clone(), &s.w);
+    let along = |k: &[BigRational; 2]| add_scaled(&mul(&px, &[k[0].clone()]), &k[1], &py);
+    let (u, w, den) = (shift(&along(d), t0, g.sigma), shift(&along(n), t0, g.sigma), shift(&s.w, t0, g.sigma));
+    let u = series_div(&u, &den, order);
+    let w = series_div(&w, &den, order);
+    let tau = reversion(&u, order);
+    compose(&w, &tau, order)
+}
+
+fn coef(p: &[BigRational], k: usize) -> BigRational {
+    p.get(k).cloned().unwrap_or_else(|| rat(0))
+}
+
+/// `a/b` as a power series to `order` (`b(0) ≠ 0`).
+fn series_div(a: &[BigRational], b: &[BigRational], order: usize) -> Vec<BigRational> {
+    let b0 = coef(b, 0);
+    let mut q = vec![rat(0); order + 1];
+    for k in 0..=order {
+        let mut acc = coef(a, k);
+        for j in 1..=k {
+            let bj = coef(b, j);
+            if !bj.is_zero() {
+                acc -= bj * &q[k - j];
+            }
+        }
+        q[k] = acc / &b0;
+    }
+    q
+}
+
+fn series_mul(a: &[BigRational], b: &[BigRational], order: usize) -> Vec<BigRational> {
+    let mut out = vec![rat(0); order + 1];
+    for (i, x) in a.iter().enumerate().take(order + 1) {
+        if x.is_zero() {
+            continue;
+        }
+        for (j, y) in b.iter().enumerate().take(order + 1 - i) {
+            out[i + j] += x * y;
+        }
+    }
+    out
+}
+
+/// `f(g(u))` to `order` (`g(0) = 0`), by Horner.
+fn compose(f: &[BigRational], g: &[BigRational], order: usize) -> Vec<BigRational> {
+    let mut out = vec![rat(0); order + 1];
+    for c in f.iter().take(order + 1).rev() {
+        out = series_mul(&out, g, order);
+        out[0] += c;
+    }
+    out
+}
+
+/// The series `τ(u)` with `u(τ(u)) = u` (`u(0) = 0`, `u'(0) ≠ 0`), to `order`.
+fn reversion(u: &[BigRational], order: usize) -> Vec<BigRational> {
+    let u1 = coef(u, 1);
+    // τ ← (u − (U(τ) − u1·τ)) / u1, one more correct coefficient per step
+    let mut rest = u.to_vec();
+    rest.resize(order + 1, rat(0));
+    rest[0] = rat(0);
+    rest[1] = rat(0);
+    let mut tau = vec![rat(0); order + 1];
+    tau[1] = rat(1) / &u1;
+    for _ in 1..order {
+        let r = compose(&rest, &tau, order);
+        let mut next = vec![rat(0); order + 1];
+        next[1] = rat(1) / &u1;
+        for k in 2..=order {
+            next[k] = -r[k].clone() / &u1;
+        }
+        tau = next;
+    }
+    tau
+}

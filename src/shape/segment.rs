@@ -1,0 +1,198 @@
+//! One input segment prepared for the arrangement: its homogeneous power form, the direction of
+//! its tangent as a polynomial vector, an outward-rounded box, and exact evaluation.
+
+use crate::num::point::Point;
+use crate::num::scalar::rat;
+use crate::poly::algebraic::RealAlgebraic;
+use crate::poly::polynomial::{derivative, trim};
+use crate::rational::RationalBezier;
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
+
+/// A polynomial in power form, lowest degree first.
+pub(crate) type Poly = Vec<BigRational>;
+
+/// `a·b`.
+pub(crate) fn mul(a: &[BigRational], b: &[BigRational]) -> Poly {
+    if a.is_empty() || b.is_empty() {
+        return vec![];
+    }
+    let mut out = vec![rat(0); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    trim(out)
+}
+
+/// `a + k·b`.
+pub(crate) fn add_scaled(a: &[BigRational], k: &BigRational, b: &[BigRational]) -> Poly {
+    let n = a.len().max(b.len());
+    trim(
+        (0..n)
+            .map(|i| {
+                let x = a.get(i).cloned().unwrap_or_else(|| rat(0));
+                match b.get(i) {
+                    Some(y) => x + k * y,
+                    None => x,
+                }
+            })
+            .collect(),
+    )
+}
+
+/// `p(t)` at a rational `t` (Horner).
+pub(crate) fn eval(p: &[BigRational], t: &BigRational) -> BigRational {
+    p.iter().rev().fold(rat(0), |acc, c| acc * t + c)
+}
+
+/// `p(t0 + σ·τ)` as a polynomial in `τ` (`σ = ±1`): the Taylor shift.
+pub(crate) fn shift(p: &[BigRational], t0: &BigRational, sigma: i64) -> Poly {
+    // repeated synthetic division gives the coefficients of p(t0 + u)
+    let mut c = p.to_vec();
+    let n = c.len();
+    for i in 0..n {
+        for j in (i..n.saturating_sub(1)).rev() {
+            let next = c[j + 1].clone();
+            c[j] += next * t0;
+        }
+    }
+    if sigma < 0 {
+        for (k, x) in c.iter_mut().enumerate() {
+            if k % 2 == 1 {
+                *x = -x.clone();
+            }
+        }
+    }
+    trim(c)
+}
+
+/// The nearest `f64` below and above a rational (one ulp of slack on each side).
+pub(crate) fn outward(x: &BigRational) -> (f64, f64) {
+    let f = x.to_f64().unwrap_or(f64::NAN);
+    if !f.is_finite() {
+        return (f64::NEG_INFINITY, f64::INFINITY);
+    }
+    (f.next_down(), f.next_up())
+}
+
+/// A segment of an input contour.
+#[derive(Clone, Debug)]
+pub(crate) struct Seg {
+    /// The input (0 for `A`, 1 for `B`, …).
+    pub input: usize,
+    /// The contour within the input.
+    pub contour: usize,
+    /// The segment within the contour.
+    pub index: usize,
+    /// The curve.
+    pub curve: RationalBezier<BigRational>,
+    /// Homogeneous power form `X, Y, W`.
+    pub x: Poly,
+    pub y: Poly,
+    pub w: Poly,
+    /// `X'W − XW'` and `Y'W − YW'`: the tangent direction (the derivative times `W² > 0`).
+    pub dx: Poly,
+    pub dy: Poly,
+    /// The outward-rounded box `[x_min, y_min, x_max, y_max]` of the control points, when the
+    /// weights have one sign (then the curve lies in their convex hull).
+    pub bbox: Option<[f64; 4]>,
+    /// The control points when the hull property holds.
+    pub hull: Option<Vec<Point<BigRational>>>,
+    /// A single point (every control point the same): no region, ignored.
+    pub degenerate: bool,
+    /// The first control point (its start) and the last (its end), exactly.
+    pub start: Point<BigRational>,
+    pub end: Point<BigRational>,
+}
+
+impl Seg {
+    pub(crate) fn new(
+        input: usize,
+        contour: usize,
+        index: usize,
+        curve: RationalBezier<BigRational>,
+    ) -> crate::error::Result<Seg> {
+        let h = curve.homogeneous().power_coefficients();
+        let coord = |k: usize| -> Poly { trim(h.iter().map(|p| p.coords[k].clone()).collect()) };
+        let (x, y, w) = (coord(0), coord(1), coord(2));
+        let cross = |a: &Poly| {
+            let (da, dw) = (derivative(a), derivative(&w));
+            let left = mul(&da, &w);
+            add_scaled(&left, &rat(-1), &mul(a, &dw))
+        };
+        let (dx, dy) = (cross(&x), cross(&y));
+        let weights = curve.weights();
+        let positive = weights.iter().all(|w| w.is_positive()) || weights.iter().all(|w| w.is_negative());
+        let hull: Option<Vec<Point<BigRational>>> =
+            if positive { curve.points().into_iter().collect::<Option<Vec<_>>>() } else { None };
+        let bbox = hull.as_ref().map(|ps| {
+            let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+            for p in ps {
+                for k in 0..2 {
+                    let (lo, hi) = outward(&p.coords[k]);
+                    b[k] = b[k].min(lo);
+                    b[k + 2] = b[k + 2].max(hi);
+                }
+            }
+            b
+        });
+        let start = curve.eval(&rat(0))?;
+        let end = curve.eval(&rat(1))?;
+        let degenerate = dx.is_empty() && dy.is_empty();
+        Ok(Seg { input, contour, index, curve, x, y, w, dx, dy, bbox, hull, degenerate, start, end })
+    }
+
+    /// The point at a rational parameter.
+    pub(crate) fn point_at(&self, t: &BigRational) -> Point<BigRational> {
+        let w = eval(&self.w, t);
+        Point::new(vec![eval(&self.x, t) / &w, eval(&self.y, t) / &w])
+    }
+
+    /// The tangent direction at a rational parameter (zero at a cusp).
+    pub(crate) fn direction_at(&self, t: &BigRational) -> [BigRational; 2] {
+        [eval(&self.dx, t), eval(&self.dy, t)]
+    }
+
+    /// The point at an algebraic parameter, each coordinate an exact real algebraic number.
+    pub(crate) fn point_at_algebraic(&self, t: &RealAlgebraic) -> [RealAlgebraic; 2] {
+        match t.to_rational() {
+            Some(r) => {
+                let p = self.point_at(r);
+                [p.coords[0].clone().into(), p.coords[1].clone().into()]
+            }
+            None => [t.map_rational(&self.x, &self.w), t.map_rational(&self.y, &self.w)],
+        }
+    }
+
+    /// The point at an algebraic parameter, each coordinate correctly rounded.
+    pub(crate) fn point_float(&self, t: &RealAlgebraic) -> [f64; 2] {
+        match t.to_rational() {
+            Some(r) => {
+                let p = self.point_at(r);
+                [crate::num::scalar::ratio_to_f64(&p.coords[0]), crate::num::scalar::ratio_to_f64(&p.coords[1])]
+            }
+            None => {
+                let [x, y] = self.point_at_algebraic(t);
+                [x.to_f64(), y.to_f64()]
+            }
+        }
+    }
+
+    /// Whether the point at `t` is `q`, exactly.
+    pub(crate) fn passes_through(&self, t: &RealAlgebraic, q: &Point<BigRational>) -> bool {
+        let fx = add_scaled(&self.x, &-q.coords[0].clone(), &self.w);
+        let fy = add_scaled(&self.y, &-q.coords[1].clone(), &self.w);
+        t.sign_of(&fx) == Ordering::Equal && t.sign_of(&fy) == Ordering::Equal
+    }
+
+    /// The polynomial degree of the curve.
+    pub(crate) fn degree(&self) -> usize {
+        self.curve.degree()
+    }
+}
