@@ -9,7 +9,7 @@
 mod peers;
 
 use casteljau::format::Font;
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use peers::{Fill, Input, Op, PEERS, catch, glyph_path, run};
 use std::hint::black_box;
 use std::time::Duration;
@@ -27,9 +27,11 @@ fn simplify_font(c: &mut Criterion) {
     peers::quiet_panics();
     let mut g = c.benchmark_group("simplify_dejavu_sans");
     g.throughput(Throughput::Elements(glyphs.len() as u64));
+    // One iteration is the whole font (about a second): flat sampling, 10 samples.
+    g.sampling_mode(SamplingMode::Flat);
     g.sample_size(10);
     g.warm_up_time(Duration::from_secs(1));
-    g.measurement_time(Duration::from_secs(20));
+    g.measurement_time(Duration::from_secs(30));
     for peer in PEERS {
         g.bench_function(peer, |b| {
             b.iter(|| {
