@@ -217,6 +217,12 @@ impl BooleanResult {
         })
     }
 
+    /// The exact boundary pieces: each segment with its parameter interval.
+    pub(crate) fn exact_boundary(&self) -> Vec<(Seg, RealAlgebraic, RealAlgebraic)> {
+        let (segs, cycles) = &self.exact;
+        cycles.iter().flatten().map(|(k, lo, hi, _)| (segs[*k].clone(), lo.clone(), hi.clone())).collect()
+    }
+
     /// Whether a rational point is inside the result (`None` on its boundary).
     ///
     /// # Errors

@@ -26,11 +26,13 @@
 mod arrangement;
 mod boolean;
 mod germ;
+mod oracle;
 mod ray;
 mod segment;
 
 pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, MAX_ARRANGEMENT_SEGMENTS, Vertex};
 pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Direction, boolean, boolean_within};
+pub use oracle::{Verdict, Witness, check_against};
 
 use crate::error::Result;
 use crate::intersect::ClosedPath;

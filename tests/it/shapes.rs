@@ -267,3 +267,34 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn the_oracle_accepts_a_right_float_answer_and_catches_wrong_ones() {
+    use casteljau::shape::check_against;
+    use casteljau::work::Budget;
+    let (a, b) = (shape("M0 0 H2 V2 H0 Z"), shape("M1 1 H3 V3 H1 Z"));
+    let o = BooleanOptions::default();
+    let exact = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o).unwrap();
+    let tol = ratio(1, 1000);
+    let check = |d: &str| {
+        check_against(BooleanOp::Union, &[a.clone(), b.clone()], o, &exact, &shape(d), &tol, &Budget::unlimited())
+            .unwrap()
+    };
+    assert!(check("M0 0 H2 V1 H3 V3 H1 V2 H0 Z").agree);
+    // off by 1e-4 at one corner: within the tolerance
+    assert!(check("M0 0 H2 V1 H3 V3.0001 H1 V2 H0 Z").agree);
+    // off by 0.01: a witness farther than tol from the exact boundary, and the distance bound
+    let v = check("M0 0 H2 V1 H3 V3.01 H1 V2 H0 Z");
+    assert!(!v.agree);
+    let w = v.witness.expect("a witness");
+    assert!(!w.inside_exact && w.inside_found);
+    assert!(v.distance_bound >= 0.01 - 1e-12, "{}", v.distance_bound);
+    // a dropped contour: the count and a witness
+    let v = check("M0 0 H2 V2 H0 Z");
+    assert_eq!((v.contours, v.contours_found), (1, 1));
+    assert!(!v.agree && v.witness.is_some());
+    // an extra contour far away
+    let v = check("M0 0 H2 V1 H3 V3 H1 V2 H0 Z M10 10 H11 V11 H10 Z");
+    assert_eq!(v.contours_found, 2);
+    assert!(!v.agree);
+}

@@ -1,0 +1,419 @@
+//! Deciding a float library's answer to a boolean operation against the exact one.
+//!
+//! The float result `R` (closed contours with its numbers read exactly, filled by the same rule
+//! as the inputs) is compared with the exact result `E` of `op(A, B)`:
+//!
+//! - **contours and nesting**: the number of contours, and the sorted list of their nesting
+//!   depths (how many other contours enclose each one);
+//! - **a witness**: a rational point inside one region and outside the other, farther than `tol`
+//!   from `E`'s exact boundary. Candidates are taken beside every edge of the arrangement of
+//!   `A`, `B` and `R` where the two regions differ on one side, stepping away from the edge by
+//!   `1.5·tol·2^k`; a candidate is accepted only when both memberships are computed exactly (the
+//!   winding numbers of `A`, `B` and `R` at it) and `(x(t) − q_x)² + (y(t) − q_y)² − tol²` is
+//!   proved positive on every piece of `E` (no root in its parameter interval, exact root
+//!   isolation; for a rational piece the same with `W`);
+//! - **distance**: an upper bound on the Hausdorff distance between the two boundaries, by
+//!   adaptive sampling in binary64: each piece of one boundary is cut until, on every part, the
+//!   distance from its midpoint to a point of the other boundary (found by a few Newton steps)
+//!   plus the piece's speed bound times half the part's parameter length is at most `tol` (or
+//!   the depth limit is reached); the largest such value is the bound. It is an upper bound up
+//!   to binary64 rounding of the sampled points (relative error about `1e-15` of the
+//!   coordinates), which the reported figure does not include.
+//!
+//! The answers agree when the counts and depths are equal, no witness exists, and the distance
+//! bound is at most `tol`.
+
+use super::boolean::{BooleanOp, BooleanOptions, BooleanResult};
+use super::segment::{Poly, Seg, add_scaled, mul};
+use super::{Arrangement, HalfEdge, Shape};
+use crate::error::{Error, Result};
+use crate::intersect::PathWinding;
+use crate::num::point::Point;
+use crate::num::scalar::{rat, ratio_to_f64};
+use crate::poly::algebraic::RealAlgebraic;
+use crate::work::Budget;
+use num_rational::BigRational;
+use num_traits::Signed;
+use serde::Serialize;
+
+/// A point inside one region and outside the other. JSON: `point` (exact strings),
+/// `point_float`, `inside_exact`, `inside_found`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Witness {
+    /// The point, exactly.
+    #[serde(serialize_with = "crate::num::serial::strings")]
+    pub point: Vec<BigRational>,
+    /// The point, rounded.
+    pub point_float: [f64; 2],
+    /// Whether it is inside the exact result.
+    pub inside_exact: bool,
+    /// Whether it is inside the float result.
+    pub inside_found: bool,
+}
+
+/// The verdict on a float result. JSON: `agree`, `contours`, `contours_found`, `depths`,
+/// `depths_found`, `witness` (or null), `distance_bound` (binary64 upper bound on the distance
+/// between the boundaries), `problems` (one sentence each).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Verdict {
+    /// No disagreement found.
+    pub agree: bool,
+    /// Contours of the exact result.
+    pub contours: usize,
+    /// Contours of the float result.
+    pub contours_found: usize,
+    /// Nesting depths of the exact result's contours, sorted.
+    pub depths: Vec<usize>,
+    /// Nesting depths of the float result's contours, sorted.
+    pub depths_found: Vec<usize>,
+    /// A point where the regions differ, farther than `tol` from the exact boundary.
+    pub witness: Option<Witness>,
+    /// An upper bound on the distance between the two boundaries.
+    pub distance_bound: f64,
+    /// What disagrees, in words.
+    pub problems: Vec<String>,
+}
+
+/// Decides `found` (a float library's result of `op` on `inputs`) against the exact `result`
+/// (see the module documentation).
+///
+/// # Errors
+/// The errors of [`Arrangement::new_within`] on the inputs with `found`; [`Error::InvalidArgument`]
+/// for a negative `tol`.
+///
+/// # Example
+/// ```
+/// use casteljau::shape::{boolean, check_against, BooleanOp, BooleanOptions, Shape};
+/// use casteljau::{ratio, work::Budget};
+/// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
+/// let b: Shape = "M1 1 H3 V3 H1 Z".parse().unwrap();
+/// let o = BooleanOptions::default();
+/// let exact = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o).unwrap();
+/// let good: Shape = "M0 0 H2 V1 H3 V3 H1 V2 H0 Z".parse().unwrap();
+/// let v = check_against(BooleanOp::Union, &[a.clone(), b.clone()], o, &exact, &good, &ratio(1, 1000), &Budget::unlimited()).unwrap();
+/// assert!(v.agree);
+/// // a float answer that forgot the corner (1, 2)–(2, 1) overlap: the intersection for the union
+/// let bad: Shape = "M1 1 H2 V2 H1 Z".parse().unwrap();
+/// let v = check_against(BooleanOp::Union, &[a, b], o, &exact, &bad, &ratio(1, 1000), &Budget::unlimited()).unwrap();
+/// assert!(!v.agree);
+/// let w = v.witness.unwrap();
+/// assert!(w.inside_exact && !w.inside_found);
+/// ```
+pub fn check_against(
+    op: BooleanOp,
+    inputs: &[Shape],
+    options: BooleanOptions,
+    result: &BooleanResult,
+    found: &Shape,
+    tol: &BigRational,
+    budget: &Budget,
+) -> Result<Verdict> {
+    if tol.is_negative() {
+        return Err(Error::InvalidArgument { message: format!("the tolerance is not negative, not {tol}") });
+    }
+    let fill = options.fill;
+    let depths = sorted_depths(&result.parents);
+    let found_parents = contour_parents(found)?;
+    let depths_found = sorted_depths(&found_parents);
+    let contours_found = found.path().contours().len();
+    let mut problems = vec![];
+    if contours_found != result.contours {
+        problems.push(format!("{} contours, not {}", contours_found, result.contours));
+    } else if depths != depths_found {
+        problems.push(format!("nesting depths {depths_found:?}, not {depths:?}"));
+    }
+    // the arrangement of the inputs and the float result: edges where the regions differ
+    let mut all: Vec<Shape> = inputs.to_vec();
+    all.push(found.clone());
+    let arr = Arrangement::new_within(&all, budget)?;
+    let k = inputs.len();
+    let in_exact = |w: &[i64]| op.apply(fill.contains(w[0]), k > 1 && fill.contains(w[1]));
+    let in_found = |w: &[i64]| fill.contains(w[k]);
+    let exact_pieces = result.exact_boundary();
+    let witness = find_witness(&arr, inputs, found, &exact_pieces, tol, &|w| in_exact(w) != in_found(w), op, options)?;
+    if let Some(w) = &witness {
+        problems.push(format!(
+            "the point ({}, {}) is {} the exact result and {} the float result",
+            w.point_float[0],
+            w.point_float[1],
+            if w.inside_exact { "inside" } else { "outside" },
+            if w.inside_found { "inside" } else { "outside" }
+        ));
+    }
+    let distance_bound = hausdorff_bound(&exact_pieces, found, ratio_to_f64(tol));
+    if distance_bound > ratio_to_f64(tol) {
+        problems.push(format!("the boundaries are up to {distance_bound} apart (bound), more than the tolerance"));
+    }
+    Ok(Verdict {
+        agree: problems.is_empty(),
+        contours: result.contours,
+        contours_found,
+        depths,
+        depths_found,
+        witness,
+        distance_bound,
+        problems,
+    })
+}
+
+fn sorted_depths(parents: &[Option<usize>]) -> Vec<usize> {
+    let depth = |mut i: usize| {
+        let mut d = 0;
+        while let Some(p) = parents[i] {
+            d += 1;
+            i = p;
+            if d > parents.len() {
+                break;
+            }
+        }
+        d
+    };
+    let mut ds: Vec<usize> = (0..parents.len()).map(depth).collect();
+    ds.sort_unstable();
+    ds
+}
+
+/// The parents of a path's contours: the deepest contour whose winding number around a point
+/// of the contour (its start, or another control point when the start lies on it) is non-zero.
+fn contour_parents(s: &Shape) -> Result<Vec<Option<usize>>> {
+    let cs = s.path().contours();
+    let n = cs.len();
+    let mut encloses = vec![vec![false; n]; n];
+    for (j, cj) in cs.iter().enumerate() {
+        let probes: Vec<Point<BigRational>> =
+            cj.iter().filter_map(|seg| seg.eval(&BigRational::new(1.into(), 3.into())).ok()).collect();
+        for (i, ci) in cs.iter().enumerate() {
+            if i == j {
+                continue;
+            }
+            for q in &probes {
+                match crate::intersect::winding_number_rational(ci, q)? {
+                    crate::intersect::Winding::Inside(w) => {
+                        encloses[i][j] = w != 0;
+                        break;
+                    }
+                    crate::intersect::Winding::OnBoundary { .. } => continue,
+                }
+            }
+        }
+    }
+    let depth: Vec<usize> = (0..n).map(|j| (0..n).filter(|&i| encloses[i][j]).count()).collect();
+    Ok((0..n).map(|j| (0..n).filter(|&i| encloses[i][j]).max_by_key(|&i| depth[i])).collect())
+}
+
+/// Inside `op(A, B)` by the inputs' own winding numbers, and inside `R`; `None` on a boundary.
+fn memberships(
+    inputs: &[Shape],
+    found: &Shape,
+    q: &Point<BigRational>,
+    op: BooleanOp,
+    options: BooleanOptions,
+) -> Result<Option<(bool, bool)>> {
+    let fill = options.fill;
+    let inside = |s: &Shape| -> Result<Option<bool>> {
+        Ok(match s.path().winding(q)? {
+            PathWinding::Off(w) => Some(fill.contains(w.winding())),
+            PathWinding::OnBoundary { .. } => None,
+        })
+    };
+    let a = inside(&inputs[0])?;
+    let b = if inputs.len() > 1 { inside(&inputs[1])? } else { Some(false) };
+    let r = inside(found)?;
+    Ok(match (a, b, r) {
+        (Some(a), Some(b), Some(r)) => Some((op.apply(a, b), r)),
+        _ => None,
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn find_witness(
+    arr: &Arrangement,
+    inputs: &[Shape],
+    found: &Shape,
+    exact: &[(Seg, RealAlgebraic, RealAlgebraic)],
+    tol: &BigRational,
+    differs: &dyn Fn(&[i64]) -> bool,
+    op: BooleanOp,
+    options: BooleanOptions,
+) -> Result<Option<Witness>> {
+    let step0 = if tol.is_positive() {
+        tol * BigRational::new(3.into(), 2.into())
+    } else {
+        BigRational::new(1.into(), 1024.into())
+    };
+    let scale = {
+        let mut m = rat(1);
+        for s in &arr.segs {
+            for p in s.hull.iter().flatten() {
+                for c in &p.coords {
+                    if c.abs() > m {
+                        m = c.abs();
+                    }
+                }
+            }
+        }
+        m * rat(4)
+    };
+    for e in 0..arr.edges.len() {
+        for forward in [true, false] {
+            let h = HalfEdge { edge: e, forward };
+            if !differs(arr.side(h)) {
+                continue;
+            }
+            let (p, axis) = arr.beside_point(h);
+            let d = axis.unit();
+            let mut s = step0.clone();
+            while s < scale {
+                let q = Point::new(vec![&p.coords[0] + &s * &d[0], &p.coords[1] + &s * &d[1]]);
+                if let Some((ie, ir)) = memberships(inputs, found, &q, op, options)? {
+                    if ie != ir && far_from(exact, &q, tol) {
+                        let point_float = [ratio_to_f64(&q.coords[0]), ratio_to_f64(&q.coords[1])];
+                        return Ok(Some(Witness { point: q.coords, point_float, inside_exact: ie, inside_found: ir }));
+                    }
+                    if ie == ir {
+                        break; // stepped out of the difference
+                    }
+                }
+                s *= rat(2);
+            }
+        }
+    }
+    Ok(None)
+}
+
+/// `|C(t) − q| > tol` for every `t` of every piece, proved exactly.
+fn far_from(pieces: &[(Seg, RealAlgebraic, RealAlgebraic)], q: &Point<BigRational>, tol: &BigRational) -> bool {
+    let (qf, tf) = ([ratio_to_f64(&q.coords[0]), ratio_to_f64(&q.coords[1])], ratio_to_f64(tol));
+    for (s, lo, hi) in pieces {
+        if let Some([x0, y0, x1, y1]) = s.bbox {
+            if qf[0] < x0 - 2.0 * tf || qf[0] > x1 + 2.0 * tf || qf[1] < y0 - 2.0 * tf || qf[1] > y1 + 2.0 * tf {
+                continue; // the box is farther than tol (with room for rounding)
+            }
+        }
+        let fx = add_scaled(&s.x, &-q.coords[0].clone(), &s.w);
+        let fy = add_scaled(&s.y, &-q.coords[1].clone(), &s.w);
+        let w2 = mul(&s.w, &s.w);
+        let g: Poly = add_scaled(&add_scaled(&mul(&fx, &fx), &rat(1), &mul(&fy, &fy)), &-(tol * tol), &w2);
+        let (a, _) = lo.interval();
+        let (_, b) = hi.interval();
+        if g.is_empty() || !RealAlgebraic::roots_in(&g, &a, &b).is_empty() {
+            return false;
+        }
+        if super::segment::eval(&g, &a).is_negative() {
+            return false;
+        }
+    }
+    true
+}
+
+/// Binary64 evaluation of a piece.
+struct FloatPiece {
+    x: Vec<f64>,
+    y: Vec<f64>,
+    w: Vec<f64>,
+    lo: f64,
+    hi: f64,
+    /// A bound on the speed `|C'(t)|` over `[lo, hi]` (polynomial pieces: degree × the longest
+    /// control leg; rational ones: the sampled maximum, doubled).
+    speed: f64,
+}
+
+impl FloatPiece {
+    fn new(s: &Seg, lo: f64, hi: f64) -> Self {
+        let f = |p: &[BigRational]| p.iter().map(ratio_to_f64).collect::<Vec<f64>>();
+        let mut fp = FloatPiece { x: f(&s.x), y: f(&s.y), w: f(&s.w), lo, hi, speed: 0.0 };
+        fp.speed = match (&s.hull, s.w.len() == 1) {
+            (Some(ps), true) => {
+                let legs = ps.windows(2).map(|w| {
+                    let dx = ratio_to_f64(&(&w[1].coords[0] - &w[0].coords[0]));
+                    let dy = ratio_to_f64(&(&w[1].coords[1] - &w[0].coords[1]));
+                    dx.hypot(dy)
+                });
+                s.degree() as f64 * legs.fold(0.0, f64::max) * (1.0 + 1e-12)
+            }
+            _ => (0..=64).map(|k| fp.speed_at(lo + (hi - lo) * k as f64 / 64.0)).fold(0.0, f64::max) * 2.0,
+        };
+        fp
+    }
+    fn ev(p: &[f64], t: f64) -> f64 {
+        p.iter().rev().fold(0.0, |acc, c| acc * t + c)
+    }
+    fn at(&self, t: f64) -> [f64; 2] {
+        let w = Self::ev(&self.w, t);
+        [Self::ev(&self.x, t) / w, Self::ev(&self.y, t) / w]
+    }
+    fn speed_at(&self, t: f64) -> f64 {
+        let h = 1e-6;
+        let (a, b) = (self.at(t - h), self.at(t + h));
+        (b[0] - a[0]).hypot(b[1] - a[1]) / (2.0 * h)
+    }
+    /// The nearest point found from `q` by sampling and Newton steps (an upper bound on the
+    /// distance: it is a point of the piece).
+    fn distance_from(&self, q: [f64; 2]) -> f64 {
+        let n = 16;
+        let mut best = (f64::INFINITY, self.lo);
+        for k in 0..=n {
+            let t = self.lo + (self.hi - self.lo) * k as f64 / n as f64;
+            let p = self.at(t);
+            let d = (p[0] - q[0]).hypot(p[1] - q[1]);
+            if d < best.0 {
+                best = (d, t);
+            }
+        }
+        let mut t = best.1;
+        for _ in 0..8 {
+            let h = 1e-7 * (self.hi - self.lo).max(1e-9);
+            let f = |t: f64| {
+                let p = self.at(t);
+                (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
+            };
+            let (f0, fp, fm) = (f(t), f(t + h), f(t - h));
+            let (d1, d2) = ((fp - fm) / (2.0 * h), (fp - 2.0 * f0 + fm) / (h * h));
+            if d2 <= 0.0 {
+                break;
+            }
+            t = (t - d1 / d2).clamp(self.lo, self.hi);
+        }
+        let p = self.at(t);
+        best.0.min((p[0] - q[0]).hypot(p[1] - q[1]))
+    }
+}
+
+/// The directed bound from every piece of `from` to the set `to`.
+fn directed(from: &[FloatPiece], to: &[FloatPiece], tol: f64) -> f64 {
+    let dist = |q: [f64; 2]| to.iter().map(|p| p.distance_from(q)).fold(f64::INFINITY, f64::min);
+    let mut worst: f64 = 0.0;
+    for p in from {
+        let mut stack = vec![(p.lo, p.hi, 0u32)];
+        while let Some((a, b, depth)) = stack.pop() {
+            let m = (a + b) / 2.0;
+            let bound = dist(p.at(m)) + p.speed * (b - a) / 2.0;
+            if bound > tol && depth < 18 {
+                stack.push((a, m, depth + 1));
+                stack.push((m, b, depth + 1));
+            } else {
+                worst = worst.max(bound);
+            }
+        }
+    }
+    worst
+}
+
+fn hausdorff_bound(exact: &[(Seg, RealAlgebraic, RealAlgebraic)], found: &Shape, tol: f64) -> f64 {
+    let e: Vec<FloatPiece> = exact.iter().map(|(s, lo, hi)| FloatPiece::new(s, lo.to_f64(), hi.to_f64())).collect();
+    let mut r = vec![];
+    for (c, contour) in found.path().contours().iter().enumerate() {
+        for (k, seg) in contour.iter().enumerate() {
+            if let Ok(s) = Seg::new(0, c, k, seg.clone()) {
+                if !s.degenerate {
+                    r.push(FloatPiece::new(&s, 0.0, 1.0));
+                }
+            }
+        }
+    }
+    match (e.is_empty(), r.is_empty()) {
+        (true, true) => 0.0,
+        (true, false) | (false, true) => f64::INFINITY,
+        _ => directed(&e, &r, tol).max(directed(&r, &e, tol)),
+    }
+}
