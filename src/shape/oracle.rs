@@ -285,10 +285,10 @@ fn find_witness(
 fn far_from(pieces: &[(Seg, RealAlgebraic, RealAlgebraic)], q: &Point<BigRational>, tol: &BigRational) -> bool {
     let (qf, tf) = ([ratio_to_f64(&q.coords[0]), ratio_to_f64(&q.coords[1])], ratio_to_f64(tol));
     for (s, lo, hi) in pieces {
-        if let Some([x0, y0, x1, y1]) = s.bbox {
-            if qf[0] < x0 - 2.0 * tf || qf[0] > x1 + 2.0 * tf || qf[1] < y0 - 2.0 * tf || qf[1] > y1 + 2.0 * tf {
-                continue; // the box is farther than tol (with room for rounding)
-            }
+        if let Some([x0, y0, x1, y1]) = s.bbox
+            && (qf[0] < x0 - 2.0 * tf || qf[0] > x1 + 2.0 * tf || qf[1] < y0 - 2.0 * tf || qf[1] > y1 + 2.0 * tf)
+        {
+            continue; // the box is farther than tol (with room for rounding)
         }
         let fx = add_scaled(&s.x, &-q.coords[0].clone(), &s.w);
         let fy = add_scaled(&s.y, &-q.coords[1].clone(), &s.w);
@@ -404,10 +404,10 @@ fn hausdorff_bound(exact: &[(Seg, RealAlgebraic, RealAlgebraic)], found: &Shape,
     let mut r = vec![];
     for (c, contour) in found.path().contours().iter().enumerate() {
         for (k, seg) in contour.iter().enumerate() {
-            if let Ok(s) = Seg::new(0, c, k, seg.clone()) {
-                if !s.degenerate {
-                    r.push(FloatPiece::new(&s, 0.0, 1.0));
-                }
+            if let Ok(s) = Seg::new(0, c, k, seg.clone())
+                && !s.degenerate
+            {
+                r.push(FloatPiece::new(&s, 0.0, 1.0));
             }
         }
     }
