@@ -119,9 +119,20 @@ pub fn winding_number(path: &[BezierCurve<BigRational>], q: &Point<BigRational>)
 /// first starts.
 fn check_closed(path: &[RationalBezier<BigRational>]) -> Result<()> {
     let end = |s: &RationalBezier<BigRational>, t: i64| s.eval(&rat(t));
+    // the ends are the first and last homogeneous control points: equal points have
+    // proportional coordinates (compared without a division when both weights are 1)
+    let same = |a: &Point<BigRational>, b: &Point<BigRational>| -> Option<bool> {
+        let one = rat(1);
+        (a.coords[2] == one && b.coords[2] == one).then(|| a.coords[0] == b.coords[0] && a.coords[1] == b.coords[1])
+    };
     for i in 0..path.len() {
         let j = (i + 1) % path.len();
-        if end(&path[i], 1)? != end(&path[j], 0)? {
+        let (a, b) = (path[i].homogeneous().points(), path[j].homogeneous().points());
+        let equal = match same(&a[a.len() - 1], &b[0]) {
+            Some(e) => e,
+            None => end(&path[i], 1)? == end(&path[j], 0)?,
+        };
+        if !equal {
             return Err(Error::InvalidArgument {
                 message: format!("the path is not closed: segment {i} ends where segment {j} does not start"),
             });

@@ -188,7 +188,7 @@ pub(crate) struct EdgeData {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Arrangement {
-    pub(crate) segs: Vec<Seg>,
+    pub(crate) segs: Vec<std::sync::Arc<Seg>>,
     pub(crate) inputs: usize,
     /// Per input, per contour, the segment indices.
     pub(crate) contours: Vec<Vec<Vec<usize>>>,
@@ -269,12 +269,54 @@ fn split_at_common_point(p: &Point<BigRational>, a: &[Point<BigRational>], b: &[
     let (Some(da), Some(db)) = (away(a), away(b)) else { return false };
     let l1 = |v: &[BigRational; 2]| v[0].abs() + v[1].abs();
     let (na, nb) = (l1(&da), l1(&db));
+    // db/|db|₁ − da/|da|₁, scaled by |da|₁|db|₁ > 0
     let candidates = [
-        [&db[0] / &nb - &da[0] / &na, &db[1] / &nb - &da[1] / &na],
+        [&db[0] * &na - &da[0] * &nb, &db[1] * &na - &da[1] * &nb],
         [db[0].clone(), db[1].clone()],
         [-da[0].clone(), -da[1].clone()],
     ];
     candidates.iter().any(|n| !(n[0].is_zero() && n[1].is_zero()) && separated_at(p, n, a, b))
+}
+
+/// [`split_at_common_point`] on small integers (exact in `i128`).
+fn split_at_common_point_small(p: [i64; 2], a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
+    let away = |ps: &[[i64; 2]]| -> Option<[i128; 2]> {
+        let first = if ps[0] == p { ps.iter().find(|q| **q != p) } else { ps.iter().rev().find(|q| **q != p) };
+        first.map(|q| [(q[0] - p[0]) as i128, (q[1] - p[1]) as i128])
+    };
+    let (Some(da), Some(db)) = (away(a), away(b)) else { return false };
+    let (na, nb) = (da[0].abs() + da[1].abs(), db[0].abs() + db[1].abs());
+    let candidates = [[db[0] * na - da[0] * nb, db[1] * na - da[1] * nb], db, [-da[0], -da[1]]];
+    let dot = |q: &[i64; 2], n: &[i128; 2]| (q[0] - p[0]) as i128 * n[0] + (q[1] - p[1]) as i128 * n[1];
+    candidates.iter().any(|n| {
+        *n != [0, 0]
+            && a.iter().filter(|q| **q != p).all(|q| dot(q, n) < 0)
+            && b.iter().filter(|q| **q != p).all(|q| dot(q, n) > 0)
+    })
+}
+
+/// [`hulls_separated`] on small integers (exact in `i128`).
+fn hulls_separated_small(a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
+    let proj = |n: [i128; 2], ps: &[[i64; 2]]| {
+        ps.iter()
+            .map(|q| q[0] as i128 * n[0] + q[1] as i128 * n[1])
+            .fold((i128::MAX, i128::MIN), |(lo, hi), v| (lo.min(v), hi.max(v)))
+    };
+    for set in [a, b] {
+        for i in 0..set.len() {
+            for j in i + 1..set.len() {
+                let n = [(set[i][1] - set[j][1]) as i128, (set[j][0] - set[i][0]) as i128];
+                if n == [0, 0] {
+                    continue;
+                }
+                let ((alo, ahi), (blo, bhi)) = (proj(n, a), proj(n, b));
+                if ahi < blo || bhi < alo {
+                    return true;
+                }
+            }
+        }
+    }
+    false
 }
 
 /// Whether a line strictly separates the convex hulls of `a` and `b` (tested on the normals of
@@ -388,19 +430,36 @@ impl Arrangement {
                 let mut ids = vec![];
                 for (k, curve) in contour.iter().enumerate() {
                     ids.push(segs.len());
-                    segs.push(Seg::new(i, c, k, curve.clone())?);
+                    segs.push(std::sync::Arc::new(Seg::new(i, c, k, curve.clone())?));
                 }
                 cs.push(ids);
             }
             contours.push(cs);
         }
         let pairs = candidate_pairs(&segs);
+        // the next live segment of each segment in its contour: their joint needs no link
+        let mut next_live = vec![usize::MAX; segs.len()];
+        for cs in &contours {
+            for c in cs {
+                let live: Vec<usize> = c.iter().copied().filter(|&k| !segs[k].degenerate).collect();
+                for (i, &k) in live.iter().enumerate() {
+                    next_live[k] = live[(i + 1) % live.len()];
+                }
+            }
+        }
         // decide the easy pairs, estimate the rest
         let mut links = vec![];
         let mut general = vec![];
         for (a, b) in pairs {
             match easy_pair(&segs[a], &segs[b]) {
-                Some(found) => links.extend(found.into_iter().map(|(s, t)| Link::Point(a, s, b, t))),
+                Some(found) => {
+                    let joint = |s: &RealAlgebraic, t: &RealAlgebraic| {
+                        let (zero, one) = (rat(0), rat(1));
+                        (next_live[a] == b && s.to_rational() == Some(&one) && t.to_rational() == Some(&zero))
+                            || (next_live[b] == a && s.to_rational() == Some(&zero) && t.to_rational() == Some(&one))
+                    };
+                    links.extend(found.into_iter().filter(|(s, t)| !joint(s, t)).map(|(s, t)| Link::Point(a, s, b, t)))
+                }
                 None => general.push((a, b)),
             }
         }
@@ -786,7 +845,7 @@ fn located(e: Error, a: &Seg, b: Option<&Seg>) -> Error {
 }
 
 /// The pairs of non-degenerate segments whose boxes meet (a sweep over `x`), or that have no box.
-fn candidate_pairs(segs: &[Seg]) -> Vec<(usize, usize)> {
+fn candidate_pairs(segs: &[std::sync::Arc<Seg>]) -> Vec<(usize, usize)> {
     let mut boxed: Vec<usize> = vec![];
     let mut unboxed: Vec<usize> = vec![];
     for (k, s) in segs.iter().enumerate() {
@@ -825,6 +884,19 @@ fn candidate_pairs(segs: &[Seg]) -> Vec<(usize, usize)> {
 /// Pairs decided without a resultant: the common points found (possibly none), or `None`.
 fn easy_pair(a: &Seg, b: &Seg) -> Option<Vec<(RealAlgebraic, RealAlgebraic)>> {
     let (ha, hb) = (a.hull.as_ref()?, b.hull.as_ref()?);
+    if let (Some(sa), Some(sb)) = (&a.small, &b.small) {
+        let (a0, a1, b0, b1) = (sa[0], sa[sa.len() - 1], sb[0], sb[sb.len() - 1]);
+        let ends = [(a1, b0, 1, 0), (a0, b1, 0, 1), (a0, b0, 0, 0), (a1, b1, 1, 1)];
+        let shared: Vec<_> = ends.iter().filter(|(p, q, _, _)| p == q).collect();
+        return match shared.len() {
+            0 => hulls_separated_small(sa, sb).then(Vec::new),
+            1 => {
+                let (p, _, s, t) = *shared[0];
+                split_at_common_point_small(p, sa, sb).then(|| vec![(rat(s).into(), rat(t).into())])
+            }
+            _ => None,
+        };
+    }
     let ends = [(&a.end, &b.start, 1, 0), (&a.start, &b.end, 0, 1), (&a.start, &b.start, 0, 0), (&a.end, &b.end, 1, 1)];
     let shared: Vec<_> = ends.iter().filter(|(p, q, _, _)| p == q).collect();
     match shared.len() {
@@ -838,7 +910,12 @@ fn easy_pair(a: &Seg, b: &Seg) -> Option<Vec<(RealAlgebraic, RealAlgebraic)>> {
 }
 
 /// Splits, identifies, merges and sides (steps 2–4 of the module documentation).
-fn build(segs: Vec<Seg>, inputs: usize, contours: Vec<Vec<Vec<usize>>>, links: Vec<Link>) -> Result<Arrangement> {
+fn build(
+    segs: Vec<std::sync::Arc<Seg>>,
+    inputs: usize,
+    contours: Vec<Vec<Vec<usize>>>,
+    links: Vec<Link>,
+) -> Result<Arrangement> {
     let n = segs.len();
     let mut params: Vec<Vec<RealAlgebraic>> = vec![vec![rat(0).into(), rat(1).into()]; n];
     for l in &links {

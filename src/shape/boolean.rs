@@ -218,7 +218,7 @@ impl BooleanResult {
     }
 
     /// The exact boundary pieces: each segment with its parameter interval.
-    pub(crate) fn exact_boundary(&self) -> Vec<(Seg, RealAlgebraic, RealAlgebraic)> {
+    pub(crate) fn exact_boundary(&self) -> Vec<(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)> {
         let (segs, cycles) = &self.exact;
         cycles.iter().flatten().map(|(k, lo, hi, _)| (segs[*k].clone(), lo.clone(), hi.clone())).collect()
     }
@@ -307,17 +307,32 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     order.sort_by(|&i, &j| contours[i][0].key().cmp(&contours[j][0].key()));
     let contours: Vec<Vec<Run>> = order.iter().map(|&i| contours[i].clone()).collect();
     let cycles: Vec<Vec<HalfEdge>> = order.iter().map(|&i| cycles[i].clone()).collect();
-    // orientation: the winding number of a contour just left of itself is 1 (ccw) or 0 (cw)
+    // orientation: the sign of the contour's exact area, or else its winding number just left
+    // of itself: 1 (ccw) or 0 (cw)
+    let areas: Vec<(Option<BigRational>, f64)> = contours.iter().map(|c| contour_area(arr, c)).collect();
     let mut orientation = vec![];
-    for c in &cycles {
-        orientation.push(if arr.beside(std::slice::from_ref(c), c[0])? == 1 { Direction::Ccw } else { Direction::Cw });
+    for (c, (a, _)) in cycles.iter().zip(&areas) {
+        let ccw = match a.as_ref().map(|a| a.cmp(&rat(0))) {
+            Some(std::cmp::Ordering::Greater) => true,
+            Some(std::cmp::Ordering::Less) => false,
+            _ => arr.beside(std::slice::from_ref(c), c[0])? == 1,
+        };
+        orientation.push(if ccw { Direction::Ccw } else { Direction::Cw });
     }
-    // nesting: contours around a point just beside each contour
+    // nesting: contours around a point just beside each contour (none when the point is outside
+    // the contour's box)
     let n = cycles.len();
+    let boxes: Vec<[f64; 4]> = cycles.iter().map(|c| cycle_box(arr, c)).collect();
     let mut encloses = vec![vec![false; n]; n];
-    for (i, ci) in cycles.iter().enumerate() {
-        for (j, cj) in cycles.iter().enumerate() {
-            if i != j && arr.beside(std::slice::from_ref(ci), cj[0])? != 0 {
+    for (j, cj) in cycles.iter().enumerate() {
+        let (probe, _) = arr.beside_point(cj[0]);
+        let q = [ratio_to_f64(&probe.coords[0]), ratio_to_f64(&probe.coords[1])];
+        for (i, ci) in cycles.iter().enumerate() {
+            let b = boxes[i];
+            if i == j || q[0] < b[0] || q[0] > b[2] || q[1] < b[1] || q[1] > b[3] {
+                continue;
+            }
+            if arr.beside(std::slice::from_ref(ci), cj[0])? != 0 {
                 encloses[i][j] = true;
             }
         }
@@ -325,7 +340,7 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     let depth: Vec<usize> = (0..n).map(|j| (0..n).filter(|&i| encloses[i][j]).count()).collect();
     let parents: Vec<Option<usize>> =
         (0..n).map(|j| (0..n).filter(|&i| encloses[i][j]).max_by_key(|&i| depth[i])).collect();
-    let (area, area_float) = area(arr, &contours);
+    let (area, area_float) = total_area(&areas);
     let flip = options.direction == Direction::Cw;
     let orientation = orientation.into_iter().map(|o| if flip { o.reversed() } else { o }).collect();
     let (area, area_float) = if flip { (area.map(|a| -a), -area_float) } else { (area, area_float) };
@@ -349,10 +364,10 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
 }
 
 /// The segments a result uses, and per contour its runs as `(segment, lo, hi, forward)`.
-type ExactBoundary = (Vec<Seg>, Vec<Vec<(usize, RealAlgebraic, RealAlgebraic, bool)>>);
+type ExactBoundary = (Vec<std::sync::Arc<Seg>>, Vec<Vec<(usize, RealAlgebraic, RealAlgebraic, bool)>>);
 
 fn exact_boundary(arr: &Arrangement, contours: &[Vec<Run>], flip: bool) -> ExactBoundary {
-    let mut segs: Vec<Seg> = vec![];
+    let mut segs: Vec<std::sync::Arc<Seg>> = vec![];
     let mut index: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
     let mut cycles = vec![];
     for c in contours {
@@ -424,26 +439,30 @@ fn runs(arr: &Arrangement, cycle: &[HalfEdge]) -> Vec<Run> {
     out
 }
 
-/// `∮ (x dy − y dx)/2` over the contours: exact when every piece is polynomial with rational
-/// ends, and correctly rounded then; otherwise the sum of the pieces' values (each exact real
-/// algebraic, or by 32-point Gauss–Legendre quadrature for rational segments), rounded.
-fn area(arr: &Arrangement, contours: &[Vec<Run>]) -> (Option<BigRational>, f64) {
+/// The union of the boxes of a cycle's segments.
+fn cycle_box(arr: &Arrangement, c: &[HalfEdge]) -> [f64; 4] {
+    let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    for h in c {
+        match arr.segs[arr.edges[h.edge].seg].bbox {
+            Some(s) => {
+                b = [b[0].min(s[0]), b[1].min(s[1]), b[2].max(s[2]), b[3].max(s[3])];
+            }
+            None => return [f64::NEG_INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY],
+        }
+    }
+    b
+}
+
+/// The sum of the contours' areas: exact when every one is, with its correctly rounded value.
+fn total_area(areas: &[(Option<BigRational>, f64)]) -> (Option<BigRational>, f64) {
     let mut exact = Some(rat(0));
     let mut float = 0.0;
-    for r in contours.iter().flatten() {
-        let s = &arr.segs[r.seg];
-        match piece_area(s, &r.from, &r.to) {
-            (Some(a), f) => {
-                if let Some(e) = &mut exact {
-                    *e += a;
-                }
-                float += f;
-            }
-            (None, f) => {
-                exact = None;
-                float += f;
-            }
+    for (a, f) in areas {
+        match (a, &mut exact) {
+            (Some(a), Some(e)) => *e += a,
+            _ => exact = None,
         }
+        float += f;
     }
     match exact {
         Some(a) => {
@@ -454,14 +473,161 @@ fn area(arr: &Arrangement, contours: &[Vec<Run>]) -> (Option<BigRational>, f64) 
     }
 }
 
-/// The antiderivative of `(X Y' − Y X')/(2W²)` for a polynomial segment (`W` constant).
-fn area_antiderivative(s: &Seg) -> Option<Vec<BigRational>> {
-    if s.w.len() != 1 {
+/// `∮ (x dy − y dx)/2` over one contour: exact when every piece is polynomial with rational
+/// ends (or ends where the antiderivative is rational), else the sum of the pieces' values
+/// (each exact real algebraic, rounded; or by Gauss–Legendre quadrature for rational segments).
+fn contour_area(arr: &Arrangement, runs: &[Run]) -> (Option<BigRational>, f64) {
+    let mut exact = Some(rat(0));
+    let mut float = 0.0;
+    // whole small-integer pieces: numerators over 240 in i128 (60·K, and 4 for the doubled points)
+    let mut sixtieths: i128 = 0;
+    let (zero, one) = (RealAlgebraic::from(rat(0)), RealAlgebraic::from(rat(1)));
+    for r in runs {
+        let s = &arr.segs[r.seg];
+        let sign = if r.from == zero && r.to == one {
+            Some(1)
+        } else if r.from == one && r.to == zero {
+            Some(-1)
+        } else {
+            None
+        };
+        if let (Some(sign), Some(v)) = (sign, whole_area_sixtieths(s))
+            && let Some(next) = sixtieths.checked_add(sign * v)
+        {
+            sixtieths = next;
+            continue;
+        }
+        let (a, f) = piece_area(s, &r.from, &r.to);
+        match (a, &mut exact) {
+            (Some(a), Some(e)) => *e += a,
+            _ => exact = None,
+        }
+        float += f;
+    }
+    let small = BigRational::new(sixtieths.into(), 240.into());
+    match exact {
+        Some(a) => {
+            let a = a + small;
+            let f = ratio_to_f64(&a);
+            (Some(a), f)
+        }
+        None => (None, float + ratio_to_f64(&small)),
+    }
+}
+
+/// [`whole_area`] times 240 for a polynomial segment of degree ≤ 3 with small control points:
+/// `Σ 60·K[i][j]·(XᵢYⱼ − XⱼYᵢ)` in `i128` with `X = 2x`, `Y = 2y` (`60·K` is integral for these
+/// degrees).
+fn whole_area_sixtieths(s: &Seg) -> Option<i128> {
+    use std::sync::OnceLock;
+    static TABLES: OnceLock<Vec<Vec<Vec<i128>>>> = OnceLock::new();
+    let tables = TABLES.get_or_init(|| {
+        (0..=3)
+            .map(|n| {
+                if n == 0 {
+                    return vec![];
+                }
+                area_matrix(n)
+                    .iter()
+                    .map(|row| {
+                        row.iter()
+                            .map(|k| {
+                                let v = k * rat(60);
+                                assert!(v.is_integer(), "60·K is integral for degree ≤ 3");
+                                num_traits::ToPrimitive::to_i128(&v.to_integer()).expect("small")
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect()
+    });
+    let (p, n) = (s.small.as_ref()?, s.degree());
+    if !s.polynomial || n == 0 || n > 3 {
         return None;
     }
-    let w2 = &s.w[0] * &s.w[0] * rat(2);
-    let a = mul(&s.x, &derivative(&s.y));
-    let b = mul(&s.y, &derivative(&s.x));
+    let k = &tables[n];
+    let mut total: i128 = 0;
+    for i in 0..=n {
+        for j in i + 1..=n {
+            let cross = p[i][0] as i128 * p[j][1] as i128 - p[j][0] as i128 * p[i][1] as i128;
+            total += k[i][j] * cross;
+        }
+    }
+    Some(total)
+}
+
+/// `K[i][j] = (M[i][j] − M[j][i])/2` with `M[i][j] = ∫₀¹ Bᵢⁿ (Bⱼⁿ)′ dt`, so that a whole
+/// polynomial segment's `∫ (x dy − y dx)/2 = Σ_{i<j} K[i][j] (xᵢyⱼ − xⱼyᵢ)`; from
+/// `(Bⱼⁿ)′ = n(Bⱼ₋₁ⁿ⁻¹ − Bⱼⁿ⁻¹)` and `∫₀¹ Bᵢⁿ Bₖᵐ = C(n,i)C(m,k) / ((n+m+1) C(n+m, i+k))`.
+fn area_matrix(n: usize) -> Vec<Vec<BigRational>> {
+    let c = |n: usize, k: usize| -> BigRational {
+        BigRational::from_integer((0..k).fold(num_bigint::BigInt::from(1), |acc, i| acc * (n - i) / (i + 1)))
+    };
+    let prod = |i: usize, k: usize| -> BigRational {
+        // ∫ B_i^n B_k^{n−1}
+        c(n, i) * c(n - 1, k) / (BigRational::from_integer((2 * n).into()) * c(2 * n - 1, i + k))
+    };
+    let m = |i: usize, j: usize| -> BigRational {
+        let mut v = rat(0);
+        if j >= 1 {
+            v += prod(i, j - 1);
+        }
+        if j < n {
+            v -= prod(i, j);
+        }
+        v * rat(n as i64)
+    };
+    (0..=n).map(|i| (0..=n).map(|j| (m(i, j) - m(j, i)) / rat(2)).collect()).collect()
+}
+
+/// The area contribution of a whole polynomial segment traversed forwards, from its control
+/// points (small integers: the cross products in `i128`).
+fn whole_area(s: &Seg) -> Option<BigRational> {
+    use std::sync::OnceLock;
+    static TABLES: OnceLock<Vec<Vec<Vec<BigRational>>>> = OnceLock::new();
+    let tables = TABLES.get_or_init(|| {
+        (0..=crate::intersect::MAX_INTERSECT_DEGREE).map(|n| if n == 0 { vec![] } else { area_matrix(n) }).collect()
+    });
+    let n = s.degree();
+    if !s.polynomial || n == 0 || n >= tables.len() {
+        return None;
+    }
+    let k = &tables[n];
+    let mut total = rat(0);
+    match (&s.small, &s.hull) {
+        (Some(p), _) => {
+            for i in 0..=n {
+                for j in i + 1..=n {
+                    // the doubled points: cross products four times too large
+                    let cross = p[i][0] as i128 * p[j][1] as i128 - p[j][0] as i128 * p[i][1] as i128;
+                    if cross != 0 {
+                        total += &k[i][j] * BigRational::new(cross.into(), 4.into());
+                    }
+                }
+            }
+        }
+        (None, Some(p)) => {
+            for i in 0..=n {
+                for j in i + 1..=n {
+                    let (a, b) = (&p[i].coords, &p[j].coords);
+                    total += &k[i][j] * (&a[0] * &b[1] - &b[0] * &a[1]);
+                }
+            }
+        }
+        _ => return None,
+    }
+    Some(total)
+}
+
+/// The antiderivative of `(X Y' − Y X')/(2W²)` for a polynomial segment (`W` constant).
+fn area_antiderivative(s: &Seg) -> Option<Vec<BigRational>> {
+    if !s.polynomial {
+        return None;
+    }
+    let w2 = &s.w()[0] * &s.w()[0] * rat(2);
+    let a = mul(s.x(), &derivative(s.y()));
+    let b = mul(s.y(), &derivative(s.x()));
     let n = a.len().max(b.len());
     let integrand: Vec<BigRational> = (0..n)
         .map(|i| (a.get(i).cloned().unwrap_or_else(|| rat(0)) - b.get(i).cloned().unwrap_or_else(|| rat(0))) / &w2)
@@ -474,6 +640,21 @@ fn area_antiderivative(s: &Seg) -> Option<Vec<BigRational>> {
 }
 
 fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigRational>, f64) {
+    let (zero, one) = (RealAlgebraic::from(rat(0)), RealAlgebraic::from(rat(1)));
+    let whole = if *from == zero && *to == one {
+        Some(false)
+    } else if *from == one && *to == zero {
+        Some(true)
+    } else {
+        None
+    };
+    if let Some(reversed) = whole
+        && let Some(a) = whole_area(s)
+    {
+        let a = if reversed { -a } else { a };
+        let f = ratio_to_f64(&a);
+        return (Some(a), f);
+    }
     if let Some(f) = area_antiderivative(s) {
         if let (Some(a), Some(b)) = (from.to_rational(), to.to_rational()) {
             let v = eval(&f, b) - eval(&f, a);
@@ -497,9 +678,9 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigR
     // rational segment: Gauss–Legendre on the homogeneous form
     let (a, b) = (from.to_f64(), to.to_f64());
     let ev = |p: &[BigRational], t: f64| p.iter().rev().fold(0.0, |acc, c| acc * t + ratio_to_f64(c));
-    let (dx, dy, dw) = (derivative(&s.x), derivative(&s.y), derivative(&s.w));
+    let (dx, dy, dw) = (derivative(s.x()), derivative(s.y()), derivative(s.w()));
     let integrand = |t: f64| {
-        let (x, y, w) = (ev(&s.x, t), ev(&s.y, t), ev(&s.w, t));
+        let (x, y, w) = (ev(s.x(), t), ev(s.y(), t), ev(s.w(), t));
         let (xp, yp, wp) = (ev(&dx, t), ev(&dy, t), ev(&dw, t));
         // d(x/w) = (x'w − xw')/w², so x dy − y dx = (x(y'w − yw') − y(x'w − xw'))/w³
         (x * (yp * w - y * wp) - y * (xp * w - x * wp)) / (w * w * w) / 2.0
@@ -583,8 +764,18 @@ fn xy(p: [f64; 2]) -> String {
 
 /// Control points (rounded) of the sub-curve `from → to`, as one or more curves.
 fn sub_curve(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> Vec<Vec<[f64; 2]>> {
+    let polynomial = s.polynomial;
+    if polynomial && let (Some(a), Some(b), Some(ps)) = (from.to_rational(), to.to_rational(), &s.hull) {
+        let (zero, one) = (rat(0), rat(1));
+        let f = |p: &crate::num::point::Point<BigRational>| [ratio_to_f64(&p.coords[0]), ratio_to_f64(&p.coords[1])];
+        if *a == zero && *b == one {
+            return vec![ps.iter().map(f).collect()];
+        }
+        if *a == one && *b == zero {
+            return vec![ps.iter().rev().map(f).collect()];
+        }
+    }
     let (p0, p1) = (s.point_float(from), s.point_float(to));
-    let polynomial = s.curve.weights().windows(2).all(|w| w[0] == w[1]);
     if !polynomial {
         return hermite(s, from.to_f64(), to.to_f64(), p0, p1);
     }
@@ -644,13 +835,13 @@ fn sub_control_points(
 /// Four cubics through the points and tangents of a rational piece (rounded).
 fn hermite(s: &Seg, a: f64, b: f64, p0: [f64; 2], p1: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
     let ev = |p: &[BigRational], t: f64| p.iter().rev().fold(0.0, |acc, c| acc * t + ratio_to_f64(c));
-    let (dx, dy, dw) = (derivative(&s.x), derivative(&s.y), derivative(&s.w));
+    let (dx, dy, dw) = (derivative(s.x()), derivative(s.y()), derivative(s.w()));
     let point = |t: f64| {
-        let w = ev(&s.w, t);
-        [ev(&s.x, t) / w, ev(&s.y, t) / w]
+        let w = ev(s.w(), t);
+        [ev(s.x(), t) / w, ev(s.y(), t) / w]
     };
     let tangent = |t: f64| {
-        let (x, y, w) = (ev(&s.x, t), ev(&s.y, t), ev(&s.w, t));
+        let (x, y, w) = (ev(s.x(), t), ev(s.y(), t), ev(s.w(), t));
         let (xp, yp, wp) = (ev(&dx, t), ev(&dy, t), ev(&dw, t));
         [(xp * w - x * wp) / (w * w), (yp * w - y * wp) / (w * w)]
     };

@@ -64,7 +64,7 @@ impl Angle {
 impl Germ<'_> {
     /// The pseudo-angle of the direction in which the edge leaves.
     pub(crate) fn angle(&self) -> Result<Angle> {
-        let (mut a, mut b) = (self.seg.dx.clone(), self.seg.dy.clone());
+        let (mut a, mut b) = (self.seg.dx().clone(), self.seg.dy().clone());
         for j in 0..=2 * self.seg.degree() + 2 {
             let (sa, sb) = (sign_at(&a, &self.t0), sign_at(&b, &self.t0));
             if sa != Ordering::Equal || sb != Ordering::Equal {
@@ -141,10 +141,10 @@ fn graph_series(
     order: usize,
 ) -> Vec<BigRational> {
     let s = g.seg;
-    let px = add_scaled(&s.x, &-v[0].clone(), &s.w);
-    let py = add_scaled(&s.y, &-v[1].clone(), &s.w);
+    let px = add_scaled(s.x(), &-v[0].clone(), s.w());
+    let py = add_scaled(s.y(), &-v[1].clone(), s.w());
     let along = |k: &[BigRational; 2]| add_scaled(&mul(&px, &[k[0].clone()]), &k[1], &py);
-    let (u, w, den) = (shift(&along(d), t0, g.sigma), shift(&along(n), t0, g.sigma), shift(&s.w, t0, g.sigma));
+    let (u, w, den) = (shift(&along(d), t0, g.sigma), shift(&along(n), t0, g.sigma), shift(s.w(), t0, g.sigma));
     let u = series_div(&u, &den, order);
     let w = series_div(&w, &den, order);
     let tau = reversion(&u, order);

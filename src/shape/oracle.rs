@@ -230,7 +230,7 @@ fn find_witness(
     arr: &Arrangement,
     inputs: &[Shape],
     found: &Shape,
-    exact: &[(Seg, RealAlgebraic, RealAlgebraic)],
+    exact: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)],
     tol: &BigRational,
     differs: &dyn Fn(&[i64]) -> bool,
     op: BooleanOp,
@@ -282,7 +282,11 @@ fn find_witness(
 }
 
 /// `|C(t) − q| > tol` for every `t` of every piece, proved exactly.
-fn far_from(pieces: &[(Seg, RealAlgebraic, RealAlgebraic)], q: &Point<BigRational>, tol: &BigRational) -> bool {
+fn far_from(
+    pieces: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)],
+    q: &Point<BigRational>,
+    tol: &BigRational,
+) -> bool {
     let (qf, tf) = ([ratio_to_f64(&q.coords[0]), ratio_to_f64(&q.coords[1])], ratio_to_f64(tol));
     for (s, lo, hi) in pieces {
         if let Some([x0, y0, x1, y1]) = s.bbox
@@ -290,9 +294,9 @@ fn far_from(pieces: &[(Seg, RealAlgebraic, RealAlgebraic)], q: &Point<BigRationa
         {
             continue; // the box is farther than tol (with room for rounding)
         }
-        let fx = add_scaled(&s.x, &-q.coords[0].clone(), &s.w);
-        let fy = add_scaled(&s.y, &-q.coords[1].clone(), &s.w);
-        let w2 = mul(&s.w, &s.w);
+        let fx = add_scaled(s.x(), &-q.coords[0].clone(), s.w());
+        let fy = add_scaled(s.y(), &-q.coords[1].clone(), s.w());
+        let w2 = mul(s.w(), s.w());
         let g: Poly = add_scaled(&add_scaled(&mul(&fx, &fx), &rat(1), &mul(&fy, &fy)), &-(tol * tol), &w2);
         let (a, _) = lo.interval();
         let (_, b) = hi.interval();
@@ -321,8 +325,8 @@ struct FloatPiece {
 impl FloatPiece {
     fn new(s: &Seg, lo: f64, hi: f64) -> Self {
         let f = |p: &[BigRational]| p.iter().map(ratio_to_f64).collect::<Vec<f64>>();
-        let mut fp = FloatPiece { x: f(&s.x), y: f(&s.y), w: f(&s.w), lo, hi, speed: 0.0 };
-        fp.speed = match (&s.hull, s.w.len() == 1) {
+        let mut fp = FloatPiece { x: f(s.x()), y: f(s.y()), w: f(s.w()), lo, hi, speed: 0.0 };
+        fp.speed = match (&s.hull, s.polynomial) {
             (Some(ps), true) => {
                 let legs = ps.windows(2).map(|w| {
                     let dx = ratio_to_f64(&(&w[1].coords[0] - &w[0].coords[0]));
@@ -399,7 +403,7 @@ fn directed(from: &[FloatPiece], to: &[FloatPiece], tol: f64) -> f64 {
     worst
 }
 
-fn hausdorff_bound(exact: &[(Seg, RealAlgebraic, RealAlgebraic)], found: &Shape, tol: f64) -> f64 {
+fn hausdorff_bound(exact: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)], found: &Shape, tol: f64) -> f64 {
     let e: Vec<FloatPiece> = exact.iter().map(|(s, lo, hi)| FloatPiece::new(s, lo.to_f64(), hi.to_f64())).collect();
     let mut r = vec![];
     for (c, contour) in found.path().contours().iter().enumerate() {

@@ -120,14 +120,14 @@ pub(crate) fn winding(
     origin: Origin,
 ) -> Result<RayWinding> {
     let (qu, qv) = axis.rotate(&q.coords[0], &q.coords[1]);
-    let (qu_lo, _) = super::segment::outward(&qu);
+    let (qu_lo, qu_hi) = super::segment::outward(&qu);
     let (qv_lo, qv_hi) = super::segment::outward(&qv);
     let mut total = 0i64;
     for (ci, cycle) in cycles.iter().enumerate() {
         let mut events: Vec<Event> = vec![];
         for (pi, piece) in cycle.iter().enumerate() {
             if let Some(b) = &piece.seg.bbox {
-                let [_, v0, u1, v1] = axis.rotate_box(b);
+                let [u0, v0, u1, v1] = axis.rotate_box(b);
                 if v0 > qv_hi {
                     events.push(Event::Sign(Ordering::Greater));
                     continue;
@@ -139,6 +139,15 @@ pub(crate) fn winding(
                 if u1 < qu_lo {
                     events.push(Event::Zero(false)); // any crossing is behind the origin
                     continue;
+                }
+                if u0 > qu_hi {
+                    // wholly beyond the origin: only the sides of its ends matter, when they are
+                    // off the line (crossings in between net out to their difference)
+                    if let Some((a, b)) = end_sides(piece, &qv, axis) {
+                        let (a, b) = if piece.forward { (a, b) } else { (b, a) };
+                        events.extend([Event::Sign(a), Event::Zero(true), Event::Sign(b)]);
+                        continue;
+                    }
                 }
             }
             let mut own = vec![];
@@ -155,6 +164,20 @@ pub(crate) fn winding(
     Ok(RayWinding::Off(total))
 }
 
+/// The sides (`v − q_v` signs) of a whole segment's two ends, when neither is on the line.
+fn end_sides(piece: &Piece<'_>, qv: &BigRational, axis: Axis) -> Option<(Ordering, Ordering)> {
+    let (zero, one) = (rat(0), rat(1));
+    if piece.lo.to_rational() != Some(&zero) || piece.hi.to_rational() != Some(&one) {
+        return None;
+    }
+    let side = |p: &Point<BigRational>| {
+        let (_, v) = axis.rotate(&p.coords[0], &p.coords[1]);
+        v.cmp(qv)
+    };
+    let (a, b) = (side(&piece.seg.start), side(&piece.seg.end));
+    (a != Ordering::Equal && b != Ordering::Equal).then_some((a, b))
+}
+
 /// The events of one piece, in increasing parameter; `Some(t)` when the free origin is on it.
 fn piece_events(
     piece: &Piece<'_>,
@@ -167,13 +190,13 @@ fn piece_events(
     let s = piece.seg;
     let neg = |p: &Poly| -> Poly { p.iter().map(|c| -c.clone()).collect() };
     let (u, v): (Poly, Poly) = match axis {
-        Axis::PosX => (s.x.clone(), s.y.clone()),
-        Axis::NegX => (neg(&s.x), neg(&s.y)),
-        Axis::PosY => (s.y.clone(), neg(&s.x)),
-        Axis::NegY => (neg(&s.y), s.x.clone()),
+        Axis::PosX => (s.x().clone(), s.y().clone()),
+        Axis::NegX => (neg(s.x()), neg(s.y())),
+        Axis::PosY => (s.y().clone(), neg(s.x())),
+        Axis::NegY => (neg(s.y()), s.x().clone()),
     };
-    let fu = add_scaled(&u, &-qu.clone(), &s.w);
-    let fv = add_scaled(&v, &-qv.clone(), &s.w);
+    let fu = add_scaled(&u, &-qu.clone(), s.w());
+    let fv = add_scaled(&v, &-qv.clone(), s.w());
     let (lo, hi) = (&piece.lo, &piece.hi);
     if fv.is_empty() {
         // the piece lies on the ray's line

@@ -81,6 +81,58 @@ pub(crate) fn outward(x: &BigRational) -> (f64, f64) {
     (f.next_down(), f.next_up())
 }
 
+/// Homogeneous power form `X, Y, W`, and `X'W − XW'`, `Y'W − YW'`: the tangent direction (the
+/// derivative times `W² > 0`).
+#[derive(Clone, Debug)]
+struct Forms {
+    x: Poly,
+    y: Poly,
+    w: Poly,
+    dx: Poly,
+    dy: Poly,
+}
+
+impl Forms {
+    fn of(curve: &RationalBezier<BigRational>, polynomial: bool) -> Forms {
+        if polynomial {
+            let h = curve.homogeneous().points();
+            let w0 = &h[0].coords[2];
+            let ps: Vec<[BigRational; 2]> = h.iter().map(|p| [&p.coords[0] / w0, &p.coords[1] / w0]).collect();
+            let n = ps.len() - 1;
+            // c_k = C(n, k) Σ_i (−1)^(k−i) C(k, i) P_i
+            let binom =
+                |n: usize, k: usize| -> i64 { (0..k).fold(1i64, |acc, i| acc * (n - i) as i64 / (i + 1) as i64) };
+            let power = |axis: usize| -> Poly {
+                trim(
+                    (0..=n)
+                        .map(|k| {
+                            let mut acc = rat(0);
+                            for (i, p) in ps.iter().enumerate().take(k + 1) {
+                                let c = binom(k, i) * if (k - i) % 2 == 0 { 1 } else { -1 };
+                                acc += &p[axis] * BigRational::from_integer(c.into());
+                            }
+                            acc * BigRational::from_integer(binom(n, k).into())
+                        })
+                        .collect(),
+                )
+            };
+            let (x, y) = (power(0), power(1));
+            let (dx, dy) = (derivative(&x), derivative(&y));
+            return Forms { x, y, w: vec![rat(1)], dx, dy };
+        }
+        let hp = curve.homogeneous().power_coefficients();
+        let coord = |k: usize| -> Poly { trim(hp.iter().map(|p| p.coords[k].clone()).collect()) };
+        let (x, y, w) = (coord(0), coord(1), coord(2));
+        let cross = |a: &Poly| {
+            let (da, dw) = (derivative(a), derivative(&w));
+            let left = mul(&da, &w);
+            add_scaled(&left, &rat(-1), &mul(a, &dw))
+        };
+        let (dx, dy) = (cross(&x), cross(&y));
+        Forms { x, y, w, dx, dy }
+    }
+}
+
 /// A segment of an input contour.
 #[derive(Clone, Debug)]
 pub(crate) struct Seg {
@@ -92,13 +144,10 @@ pub(crate) struct Seg {
     pub index: usize,
     /// The curve.
     pub curve: RationalBezier<BigRational>,
-    /// Homogeneous power form `X, Y, W`.
-    pub x: Poly,
-    pub y: Poly,
-    pub w: Poly,
-    /// `X'W − XW'` and `Y'W − YW'`: the tangent direction (the derivative times `W² > 0`).
-    pub dx: Poly,
-    pub dy: Poly,
+    /// The power forms, computed when first needed (most segments of a glyph never are).
+    forms: std::sync::OnceLock<Forms>,
+    /// Every weight equal: `W = 1` after scaling.
+    pub polynomial: bool,
     /// The outward-rounded box `[x_min, y_min, x_max, y_max]` of the control points, when the
     /// weights have one sign (then the curve lies in their convex hull).
     pub bbox: Option<[f64; 4]>,
@@ -109,6 +158,40 @@ pub(crate) struct Seg {
     /// The first control point (its start) and the last (its end), exactly.
     pub start: Point<BigRational>,
     pub end: Point<BigRational>,
+    /// Twice the control points, when those are integers of at most 24 bits (font coordinates,
+    /// with TrueType's implied on-curve points at half-integers): then the hull tests and the
+    /// areas run in `i64`/`i128`, exactly.
+    pub small: Option<Vec<[i64; 2]>>,
+}
+
+/// The outward-rounded box of points.
+fn boxed(ps: &[Point<BigRational>]) -> [f64; 4] {
+    let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    for p in ps {
+        for k in 0..2 {
+            let (lo, hi) = outward(&p.coords[k]);
+            b[k] = b[k].min(lo);
+            b[k + 2] = b[k + 2].max(hi);
+        }
+    }
+    b
+}
+
+/// Twice the points as small integers (`|2c| < 2²⁴`), when they are.
+fn small_points(ps: &[Point<BigRational>]) -> Option<Vec<[i64; 2]>> {
+    const LIMIT: i64 = 1 << 24;
+    ps.iter()
+        .map(|p| {
+            let c = |v: &BigRational| -> Option<i64> {
+                let two = v * rat(2);
+                if !two.is_integer() {
+                    return None;
+                }
+                two.to_integer().to_i64().filter(|x| x.abs() < LIMIT)
+            };
+            Some([c(&p.coords[0])?, c(&p.coords[1])?])
+        })
+        .collect()
 }
 
 impl Seg {
@@ -118,45 +201,86 @@ impl Seg {
         index: usize,
         curve: RationalBezier<BigRational>,
     ) -> crate::error::Result<Seg> {
-        let h = curve.homogeneous().power_coefficients();
-        let coord = |k: usize| -> Poly { trim(h.iter().map(|p| p.coords[k].clone()).collect()) };
-        let (x, y, w) = (coord(0), coord(1), coord(2));
-        let cross = |a: &Poly| {
-            let (da, dw) = (derivative(a), derivative(&w));
-            let left = mul(&da, &w);
-            add_scaled(&left, &rat(-1), &mul(a, &dw))
-        };
-        let (dx, dy) = (cross(&x), cross(&y));
+        let h = curve.homogeneous().points();
+        let polynomial = h.iter().all(|p| p.coords[2] == h[0].coords[2]) && !h[0].coords[2].is_zero();
         let weights = curve.weights();
         let positive = weights.iter().all(|w| w.is_positive()) || weights.iter().all(|w| w.is_negative());
-        let hull: Option<Vec<Point<BigRational>>> =
-            if positive { curve.points().into_iter().collect::<Option<Vec<_>>>() } else { None };
-        let bbox = hull.as_ref().map(|ps| {
-            let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-            for p in ps {
-                for k in 0..2 {
-                    let (lo, hi) = outward(&p.coords[k]);
-                    b[k] = b[k].min(lo);
-                    b[k + 2] = b[k + 2].max(hi);
-                }
+        let hull: Option<Vec<Point<BigRational>>> = if polynomial {
+            let w0 = &h[0].coords[2];
+            let one = w0 == &rat(1);
+            Some(
+                h.iter()
+                    .map(|p| {
+                        if one {
+                            Point::new(vec![p.coords[0].clone(), p.coords[1].clone()])
+                        } else {
+                            Point::new(vec![&p.coords[0] / w0, &p.coords[1] / w0])
+                        }
+                    })
+                    .collect(),
+            )
+        } else if positive {
+            curve.points().into_iter().collect::<Option<Vec<_>>>()
+        } else {
+            None
+        };
+        let bbox = hull.as_ref().map(|ps| boxed(ps));
+        let small = hull.as_ref().and_then(|ps| small_points(ps));
+        let (start, end) = match &hull {
+            Some(ps) => (ps[0].clone(), ps[ps.len() - 1].clone()),
+            None => (curve.eval(&rat(0))?, curve.eval(&rat(1))?),
+        };
+        let forms = std::sync::OnceLock::new();
+        let degenerate = match &hull {
+            Some(ps) => ps.iter().all(|p| *p == ps[0]),
+            None => {
+                let f = Forms::of(&curve, polynomial);
+                let d = f.dx.is_empty() && f.dy.is_empty();
+                let _ = forms.set(f);
+                d
             }
-            b
-        });
-        let start = curve.eval(&rat(0))?;
-        let end = curve.eval(&rat(1))?;
-        let degenerate = dx.is_empty() && dy.is_empty();
-        Ok(Seg { input, contour, index, curve, x, y, w, dx, dy, bbox, hull, degenerate, start, end })
+        };
+        Ok(Seg { input, contour, index, curve, forms, polynomial, bbox, hull, degenerate, start, end, small })
+    }
+
+    fn forms(&self) -> &Forms {
+        self.forms.get_or_init(|| Forms::of(&self.curve, self.polynomial))
+    }
+
+    /// `X`.
+    pub(crate) fn x(&self) -> &Poly {
+        &self.forms().x
+    }
+
+    /// `Y`.
+    pub(crate) fn y(&self) -> &Poly {
+        &self.forms().y
+    }
+
+    /// `W`.
+    pub(crate) fn w(&self) -> &Poly {
+        &self.forms().w
+    }
+
+    /// `X'W − XW'`.
+    pub(crate) fn dx(&self) -> &Poly {
+        &self.forms().dx
+    }
+
+    /// `Y'W − YW'`.
+    pub(crate) fn dy(&self) -> &Poly {
+        &self.forms().dy
     }
 
     /// The point at a rational parameter.
     pub(crate) fn point_at(&self, t: &BigRational) -> Point<BigRational> {
-        let w = eval(&self.w, t);
-        Point::new(vec![eval(&self.x, t) / &w, eval(&self.y, t) / &w])
+        let w = eval(self.w(), t);
+        Point::new(vec![eval(self.x(), t) / &w, eval(self.y(), t) / &w])
     }
 
     /// The tangent direction at a rational parameter (zero at a cusp).
     pub(crate) fn direction_at(&self, t: &BigRational) -> [BigRational; 2] {
-        [eval(&self.dx, t), eval(&self.dy, t)]
+        [eval(self.dx(), t), eval(self.dy(), t)]
     }
 
     /// The point at an algebraic parameter, each coordinate an exact real algebraic number.
@@ -166,7 +290,7 @@ impl Seg {
                 let p = self.point_at(r);
                 [p.coords[0].clone().into(), p.coords[1].clone().into()]
             }
-            None => [t.map_rational(&self.x, &self.w), t.map_rational(&self.y, &self.w)],
+            None => [t.map_rational(self.x(), self.w()), t.map_rational(self.y(), self.w())],
         }
     }
 
@@ -186,8 +310,8 @@ impl Seg {
 
     /// Whether the point at `t` is `q`, exactly.
     pub(crate) fn passes_through(&self, t: &RealAlgebraic, q: &Point<BigRational>) -> bool {
-        let fx = add_scaled(&self.x, &-q.coords[0].clone(), &self.w);
-        let fy = add_scaled(&self.y, &-q.coords[1].clone(), &self.w);
+        let fx = add_scaled(self.x(), &-q.coords[0].clone(), self.w());
+        let fy = add_scaled(self.y(), &-q.coords[1].clone(), self.w());
         t.sign_of(&fx) == Ordering::Equal && t.sign_of(&fy) == Ordering::Equal
     }
 
