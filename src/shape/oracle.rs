@@ -16,7 +16,8 @@
 //!   adaptive sampling in binary64: each piece of one boundary is cut until, on every part, the
 //!   distance from its midpoint to a point of the other boundary (found by a few Newton steps)
 //!   plus the piece's speed bound times half the part's parameter length is at most `tol` (or
-//!   the depth limit is reached); the largest such value is the bound. It is an upper bound up
+//!   the midpoint itself is farther than `tol`, or 24 halvings are reached); the largest such
+//!   value is the bound. It is an upper bound up
 //!   to binary64 rounding of the sampled points (relative error about `1e-15` of the
 //!   coordinates), which the reported figure does not include.
 //!
@@ -391,8 +392,10 @@ fn directed(from: &[FloatPiece], to: &[FloatPiece], tol: f64) -> f64 {
         let mut stack = vec![(p.lo, p.hi, 0u32)];
         while let Some((a, b, depth)) = stack.pop() {
             let m = (a + b) / 2.0;
-            let bound = dist(p.at(m)) + p.speed * (b - a) / 2.0;
-            if bound > tol && depth < 18 {
+            let d = dist(p.at(m));
+            let bound = d + p.speed * (b - a) / 2.0;
+            // refine only where the part might still be within tol
+            if bound > tol && d <= tol && depth < 24 {
                 stack.push((a, m, depth + 1));
                 stack.push((m, b, depth + 1));
             } else {
