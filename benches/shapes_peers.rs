@@ -1,7 +1,10 @@
 //! Overlap removal ("simplify", non-zero) of every glyph of DejaVu Sans, single-threaded, by the
 //! float peers of `casteljau boolean`: linesweeper and flo_curves (the calls of
 //! `examples/peers/mod.rs`, as in `examples/path_ops_peers.rs`; a glyph on which a peer panics
-//! counts its time up to the panic). The exact `boolean simplify` joins this group when it lands.
+//! counts its time up to the panic), and the exact `casteljau::shape::boolean` simplify in the
+//! same run: in process on one thread and on two (the glyphs dealt to two scoped threads), and
+//! end to end through the command line (`casteljau boolean simplify FONT --json` on all cores,
+//! output discarded).
 //! `cargo bench --bench shapes_peers` (skipped with a message when the font is absent; another
 //! font: `CASTELJAU_BENCH_FONT=PATH`).
 
@@ -32,6 +35,36 @@ fn simplify_font(c: &mut Criterion) {
     g.sample_size(10);
     g.warm_up_time(Duration::from_secs(1));
     g.measurement_time(Duration::from_secs(30));
+    let shapes: Vec<casteljau::shape::Shape> = (0..font.num_glyphs()).filter_map(|g| font.shape(g).ok()).collect();
+    let exact = |shapes: &[casteljau::shape::Shape]| {
+        use casteljau::shape::{BooleanOp, BooleanOptions, boolean};
+        for s in shapes {
+            let _ = black_box(boolean(BooleanOp::Simplify, std::slice::from_ref(black_box(s)), BooleanOptions::default()));
+        }
+    };
+    g.bench_function("casteljau_exact_1_thread", |b| b.iter(|| exact(&shapes)));
+    g.bench_function("casteljau_exact_2_threads", |b| {
+        b.iter(|| {
+            let (even, odd): (Vec<_>, Vec<_>) = shapes.iter().cloned().enumerate().partition(|(i, _)| i % 2 == 0);
+            let (even, odd): (Vec<_>, Vec<_>) =
+                (even.into_iter().map(|(_, s)| s).collect(), odd.into_iter().map(|(_, s)| s).collect());
+            std::thread::scope(|sc| {
+                sc.spawn(|| exact(&even));
+                sc.spawn(|| exact(&odd));
+            });
+        })
+    });
+    g.bench_function("casteljau_cli_all_cores", |b| {
+        b.iter(|| {
+            let st = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau"))
+                .args(["boolean", "simplify", &path, "--json", "--quiet"])
+                .stdout(std::process::Stdio::null())
+                .stderr(std::process::Stdio::null())
+                .status()
+                .expect("the binary runs");
+            assert!(st.success(), "casteljau boolean simplify failed");
+        })
+    });
     for peer in PEERS {
         g.bench_function(peer, |b| {
             b.iter(|| {

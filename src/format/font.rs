@@ -225,6 +225,22 @@ impl<'a> Font<'a> {
         }
     }
 
+    /// The glyph as a filled [`crate::shape::Shape`]: its contours ([`Self::outline`]), each
+    /// closed by a line where it does not end where it starts (as [`super::close_for_fill`]).
+    ///
+    /// # Errors
+    /// As [`Self::outline`]; [`Error::InvalidArgument`] for a piece that is not a Bézier curve.
+    pub fn shape(&self, gid: u32) -> Result<crate::shape::Shape> {
+        let mut contours = vec![];
+        for c in self.outline(gid)? {
+            let segs = super::close_for_fill(&c)?;
+            if !segs.is_empty() {
+                contours.push(segs);
+            }
+        }
+        Ok(crate::shape::Shape::new(crate::intersect::ClosedPath::from_polynomial(contours)?))
+    }
+
     /// The underlying `read-fonts` font.
     pub fn font_ref(&self) -> &FontRef<'a> {
         &self.font
