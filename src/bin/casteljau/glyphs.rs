@@ -127,7 +127,7 @@ impl Judged {
 
 /// What the run needs for every glyph.
 struct Context<'a> {
-    options_fill: FillRule,
+    fill: FillRule,
     direction: Option<Direction>,
     budget: Budget,
     tol: BigRational,
@@ -210,7 +210,7 @@ pub fn run(args: &BooleanArgs, out: &mut dyn Write) -> i32 {
         selections.push(per_face);
     }
     let ctx = Context {
-        options_fill: args.fill.into(),
+        fill: args.fill.into(),
         direction: args.direction.map(Into::into),
         budget: Budget::new(args.max_work, "--max-work"),
         tol,
@@ -369,7 +369,7 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
         name.as_deref().map_or_else(|| "null".to_string(), js)
     );
     let direction = ctx.direction.unwrap_or(if font.is_cff() { Direction::Ccw } else { Direction::Cw });
-    let options = BooleanOptions { fill: ctx.options_fill, direction };
+    let options = BooleanOptions { fill: ctx.fill, direction };
     let op = BooleanOp::Simplify;
     let answer = || -> Result<(usize, BooleanResult, bool, Option<Judged>)> {
         let shape = glyph_shape(font, gid)?;
@@ -399,7 +399,7 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
             if ctx.json {
                 let head = format!("{head}\"contours_before\":{before},\"changed\":{changed},");
                 let tail = judged.as_ref().map(Judged::json).unwrap_or_default();
-                d.out.extend_from_slice(result_json(&head, op, ctx.options_fill, &r, &tail).as_bytes());
+                d.out.extend_from_slice(result_json(&head, op, ctx.fill, &r, &tail).as_bytes());
             } else {
                 let text = judged.as_ref().map_or_else(|| r.path.clone(), Judged::text);
                 d.out.extend_from_slice(format!("{label}: {text}").as_bytes());
