@@ -30,6 +30,7 @@ enum Item {
     Dot { at: (f64, f64), radius: f64, color: String },
     Label { at: (f64, f64), text: String, color: String },
     Arrow { from: (f64, f64), to: (f64, f64), color: String },
+    Region { contours: Vec<Vec<(f64, f64)>>, color: String, opacity: f64 },
 }
 
 /// A figure: items in curve coordinates (y up), fitted into a view box with a margin.
@@ -105,6 +106,26 @@ impl Figure {
             self.items.push(Item::Label { at, text: text.into(), color: color.into() });
         }
     }
+    /// A filled region: closed polylines filled together under the non-zero rule (a hole runs
+    /// against its outer contour), with `opacity` between 0 and 1, no stroke.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::plot::Figure;
+    /// let mut f = Figure::new();
+    /// f.region(vec![vec![(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]], "#1f5fbf", 0.3);
+    /// assert!(f.to_svg(100).contains(r#"fill-opacity="0.30""#));
+    /// ```
+    pub fn region(&mut self, contours: Vec<Vec<(f64, f64)>>, color: &str, opacity: f64) {
+        let contours: Vec<Vec<(f64, f64)>> = contours
+            .into_iter()
+            .map(|c| c.into_iter().filter(|p| p.0.is_finite() && p.1.is_finite()).collect::<Vec<_>>())
+            .filter(|c| c.len() >= 3)
+            .collect();
+        if !contours.is_empty() {
+            self.items.push(Item::Region { contours, color: color.into(), opacity: opacity.clamp(0.0, 1.0) });
+        }
+    }
     /// An arrow (a point at infinity drawn as a direction).
     pub fn arrow(&mut self, from: (f64, f64), to: (f64, f64), color: &str) {
         self.items.push(Item::Arrow { from, to, color: color.into() });
@@ -129,6 +150,7 @@ impl Figure {
             Item::Polyline { pts, .. } => pts.iter().all(finite),
             Item::Dot { at, .. } | Item::Label { at, .. } => finite(at),
             Item::Arrow { from, to, .. } => finite(from) && finite(to),
+            Item::Region { contours, .. } => contours.iter().flatten().all(finite),
         });
         let v = self.view();
         items && [v.min_x, v.min_y, v.w, v.h].iter().all(|x| x.is_finite())
@@ -143,6 +165,7 @@ impl Figure {
                 Item::Polyline { pts, .. } => pts.clone(),
                 Item::Dot { at, .. } | Item::Label { at, .. } => vec![*at],
                 Item::Arrow { from, to, .. } => vec![*from, *to],
+                Item::Region { contours, .. } => contours.concat(),
             })
             .collect();
         let ((mut x0, mut y0), (mut x1, mut y1)) = bounds(&points);
@@ -231,6 +254,20 @@ impl Figure {
                         r#"<polyline points="{}" fill="none" stroke="{color}" stroke-width="{}" stroke-linejoin="miter" stroke-miterlimit="20"{dash}/>"#,
                         p.join(" "),
                         num(w * unit)
+                    );
+                }
+                Item::Region { contours, color, opacity } => {
+                    let d: Vec<String> = contours
+                        .iter()
+                        .map(|c| {
+                            let p: Vec<String> = c.iter().map(|&(x, y)| format!("{},{}", num(x), num(-y))).collect();
+                            format!("M{}Z", p.join(" "))
+                        })
+                        .collect();
+                    let _ = writeln!(
+                        s,
+                        r#"<path d="{}" fill="{color}" fill-opacity="{opacity:.2}" fill-rule="nonzero" stroke="none"/>"#,
+                        d.join(" ")
                     );
                 }
                 Item::Dot { at, radius, color } => {

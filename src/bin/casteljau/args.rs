@@ -163,6 +163,15 @@ pub enum Command {
     /// The exact winding number of a closed path around a point (or where the point lies on
     /// the path): segments separated by ';', or SVG path data with --svg.
     Winding(WindingArgs),
+    /// Boolean operations on filled shapes, exactly: union, intersection, difference, xor, or
+    /// simplify (one shape's filled region, overlaps removed). Operands are SVG path data or
+    /// .svg files; `simplify` also takes fonts (every glyph, one JSON line each). Prints the
+    /// result's SVG path data, or with --json the exact result (contours, pieces, area, ...).
+    #[command(after_help = BOOLEAN_HELP)]
+    Boolean(BooleanArgs),
+    /// The exact arrangement of shapes (SVG path data or .svg files): its vertices, edges (with
+    /// each input's winding number on both sides) and faces; --locate finds where points lie.
+    Arrange(ArrangeArgs),
     /// The exact bounding box on [0,1] and the stationary points of each coordinate (roots of
     /// x'(t), y'(t); rational curves too), as exact algebraic numbers.
     Bbox {
@@ -748,4 +757,154 @@ pub struct WindingArgs {
     /// Batch input (one path per line), output form, threads, numbers.
     #[command(flatten)]
     pub batch: BatchOptions,
+}
+
+/// `boolean --help`: operands, output, conventions and exit codes.
+pub const BOOLEAN_HELP: &str = "\
+OPERANDS: SVG path data (\"M0 0 H2 V2 H0 Z\"; an open subpath is closed by a line, as SVG fills it)
+or an .svg file (every shape of the document, transforms applied, all contours as one shape;
+elliptical arcs, circles and ellipses are refused naming the element). An empty operand is the
+empty shape. union, intersection, difference and xor take A B; simplify takes A, or font files
+(.ttf .otf .ttc .otc): every glyph (or --glyphs), one answer per glyph in glyph order.
+BATCH: --input FILE holds one question per line, \"A ; B\" (A alone for simplify).
+OUTPUT: the result's SVG path data, one line per answer (an empty result is an empty line);
+--json: op, fill, then the exact result's fields: contours, path, area (exact, or null when
+irrational), area_float, parents, orientation, pieces (per contour, the input pieces: input,
+contour, segment, exact parameters from/to). Fonts add file, glyph, glyph_id, contours_before,
+changed. Outer contours run counter-clockwise (holes clockwise) unless --direction cw; fonts
+default to their own convention (cw for TrueType glyf outlines, ccw for CFF).
+--against RESULT: a float library's result, decided against the exact one (contour count and
+nesting, a witness point farther than --tol from the exact boundary, a boundary distance bound):
+\"agree\" or \"disagree: ...\" per question, with --json a \"verdict\" object; exit 1 on any
+disagreement.
+EXIT CODES: 0 ok; 1 a result disagrees (--against); 2 bad input, an unknown glyph, a glyph that
+could not be answered, or a question over --max-work.";
+
+/// A boolean operation (a closed set: clap refuses anything else).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Operation {
+    /// A ∪ B.
+    Union,
+    /// A ∩ B.
+    Intersection,
+    /// A − B.
+    Difference,
+    /// A △ B (in exactly one of them).
+    Xor,
+    /// The filled region of A alone, overlaps removed.
+    Simplify,
+}
+
+impl From<Operation> for casteljau::shape::BooleanOp {
+    fn from(o: Operation) -> Self {
+        use casteljau::shape::BooleanOp;
+        match o {
+            Operation::Union => BooleanOp::Union,
+            Operation::Intersection => BooleanOp::Intersection,
+            Operation::Difference => BooleanOp::Difference,
+            Operation::Xor => BooleanOp::Xor,
+            Operation::Simplify => BooleanOp::Simplify,
+        }
+    }
+}
+
+/// `--fill`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fill {
+    /// Inside where the winding number is not 0 (SVG's and the fonts' default).
+    Nonzero,
+    /// Inside where the winding number is odd.
+    Evenodd,
+}
+
+impl From<Fill> for casteljau::intersect::FillRule {
+    fn from(f: Fill) -> Self {
+        match f {
+            Fill::Nonzero => casteljau::intersect::FillRule::NonZero,
+            Fill::Evenodd => casteljau::intersect::FillRule::EvenOdd,
+        }
+    }
+}
+
+/// `--direction`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Orientation {
+    /// Outer contours counter-clockwise, holes clockwise (SVG, CFF).
+    Ccw,
+    /// Outer contours clockwise, holes counter-clockwise (TrueType).
+    Cw,
+}
+
+impl From<Orientation> for casteljau::shape::Direction {
+    fn from(o: Orientation) -> Self {
+        match o {
+            Orientation::Ccw => casteljau::shape::Direction::Ccw,
+            Orientation::Cw => casteljau::shape::Direction::Cw,
+        }
+    }
+}
+
+/// `casteljau boolean`.
+#[derive(Args, Debug)]
+pub struct BooleanArgs {
+    /// The operation.
+    #[arg(value_enum)]
+    pub op: Operation,
+    /// The operands: SVG path data or .svg files (A B; A alone for simplify), or with simplify
+    /// font files (.ttf .otf .ttc .otc). Omit to read --input.
+    pub operands: Vec<String>,
+    /// The fill rule of every input (and of an --against result).
+    #[arg(long, value_enum, default_value_t = Fill::Nonzero)]
+    pub fill: Fill,
+    /// The orientation of the result's outer contours (holes run the other way). Default: ccw,
+    /// and for fonts the font's convention (cw for TrueType glyf outlines, ccw for CFF).
+    #[arg(long, value_enum)]
+    pub direction: Option<Orientation>,
+    /// Fonts: only these glyphs (names, comma-separated); an unknown name is an error.
+    #[arg(long, value_delimiter = ',')]
+    pub glyphs: Vec<String>,
+    /// A float library's result to decide against the exact one: SVG path data, or a file (one
+    /// question: its first line that is not a '#' comment; --input: one path per question line,
+    /// '#' lines skipped, an empty line is the empty result; fonts: JSON Lines with "glyph" (the
+    /// name) or "glyph_id", and "path" or "error", optionally "file").
+    #[arg(long)]
+    pub against: Option<String>,
+    /// The tolerance of --against, an exact number in the inputs' coordinate units (font units
+    /// for fonts): a witness point must be farther than it from the exact boundary, and the
+    /// boundaries at most this far apart.
+    #[arg(long, default_value = "1/1000")]
+    pub tol: String,
+    /// Also draw the inputs, the result and the arrangement's vertices into this SVG file (one
+    /// question only).
+    #[arg(long)]
+    pub plot: Option<std::path::PathBuf>,
+    /// Work budget per question (per glyph for fonts), in work units (about 1 ns each): a
+    /// question whose arrangement is estimated to cost more is refused (exit 2) before it starts.
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
+    /// Batch input ("A ; B" per line, A alone for simplify), output form, threads, numbers.
+    #[command(flatten)]
+    pub batch: BatchOptions,
+}
+
+/// `casteljau arrange`.
+#[derive(Args, Debug)]
+pub struct ArrangeArgs {
+    /// The shapes: SVG path data or .svg files (input 0, 1, ... in this order).
+    #[arg(required = true)]
+    pub shapes: Vec<String>,
+    /// Where a point "x y" lies: a vertex, an edge (with the parameter) or a face (with each
+    /// input's winding number there). Repeatable.
+    #[arg(long, allow_hyphen_values = true)]
+    pub locate: Vec<String>,
+    /// The whole arrangement as JSON (vertices, edges, faces, locations); without it, a summary.
+    #[arg(long)]
+    pub json: bool,
+    /// Work budget, in work units (about 1 ns each): an arrangement estimated to cost more is
+    /// refused (exit 2) before it starts.
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
+    /// How numbers are read: `exact` (0.1 is 1/10) or `binary64` (the f64 nearest to it).
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
 }

@@ -11,7 +11,8 @@
 //! * [`commands`]: the commands with their own input and output (`prove`, `plot`, `surface`,
 //!   `gallery`); [`splines`]: the `spline` command (knot vectors, JSON Lines splines); [`scan`]:
 //!   fonts, SVG and batches, segment by segment; [`intersect`]: `intersect` and `winding`;
-//!   [`check`]: a float library's answers against the exact ones.
+//!   [`check`]: a float library's answers against the exact ones; [`shapes`]: `boolean` and
+//!   `arrange` on path data and SVG files, [`glyphs`]: `boolean simplify` on every glyph of fonts.
 
 mod answers;
 mod args;
@@ -19,12 +20,14 @@ mod batch;
 mod check;
 mod commands;
 mod curves;
+mod glyphs;
 mod input;
 mod intersect;
 mod options;
 mod pipeline;
 mod render;
 mod scan;
+mod shapes;
 mod splines;
 
 use args::{Cli, Command};
@@ -64,5 +67,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Scan(args) => scan::run(&args, out),
         Command::Intersect(args) => intersect::run(&args, out),
         Command::Winding(args) => intersect::run_winding(&args, out),
+        Command::Boolean(args) => shapes::boolean(&args, out),
+        Command::Arrange(args) => shapes::arrange(&args, out),
     }
 }

@@ -1,0 +1,419 @@
+//! `casteljau boolean simplify FONT... [--glyphs a,b]`: every glyph (or the named ones) of
+//! fonts simplified exactly (overlaps removed, the filled region's boundary), on all cores, in
+//! glyph order; a summary per file on stderr.
+//!
+//! JSON (one object per glyph): `file`, `face` (collections only), `glyph` (the name or null),
+//! `glyph_id`, `contours_before` (the outline's non-empty contours), `changed`, then `op`,
+//! `fill` and the fields of `casteljau::shape::BooleanResult`; `verdict` with `--against`. A
+//! glyph that cannot be answered has `error` instead (exit 2 at the end). Text: `name: path`
+//! per glyph (`#id` for a glyph without a name).
+//!
+//! `changed` is false exactly when the result is the outline itself: as many contours, each
+//! made of one outline contour's segments as whole `[0, 1]` pieces, forwards, in the same cyclic
+//! order (zero-length segments, which bound nothing, left out of the comparison).
+//!
+//! Contour indices in `pieces` count the outline's non-empty contours; the default
+//! `--direction` is the font's own (clockwise outer contours for TrueType `glyf` outlines,
+//! counter-clockwise for CFF), so an outline already in that form comes back unchanged.
+
+use crate::args::BooleanArgs;
+use crate::shapes::{result_json, tolerance, verdict_json, verdict_text};
+use casteljau::error::{Error, Result};
+use casteljau::format::{Font, Segment, close_for_fill, fill_path, font_count};
+use casteljau::intersect::{ClosedPath, FillRule};
+use casteljau::num::NumberMode;
+use casteljau::shape::check_against;
+use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Direction, Shape, Verdict, boolean_within};
+use casteljau::work::Budget;
+use num_rational::BigRational;
+use rayon::prelude::*;
+use std::collections::{BTreeSet, HashMap};
+use std::io::{IsTerminal, Write};
+use std::time::Instant;
+
+/// Glyphs answered per parallel chunk.
+const GLYPHS_PER_CHUNK: usize = 64;
+
+/// A glyph of a float result file: by id or by name.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum Key {
+    Id(u32),
+    Name(String),
+}
+
+/// A float library's answer for one glyph.
+#[derive(Clone, Debug)]
+enum FloatAnswer {
+    Path(String),
+    Error(String),
+}
+
+/// `--against` for fonts: answers by (file or any file, glyph).
+#[derive(Default)]
+struct FloatAnswers {
+    by: HashMap<(Option<String>, Key), FloatAnswer>,
+}
+
+impl FloatAnswers {
+    /// Reads JSON Lines with `glyph` or `glyph_id`, and `path` or `error` (optional `file`).
+    fn read(file: &str) -> Result<Self> {
+        let text = std::fs::read_to_string(file)
+            .map_err(|e| Error::InvalidArgument { message: format!("--against {file}: cannot read: {e}") })?;
+        let mut out = FloatAnswers::default();
+        for (i, line) in text.lines().enumerate() {
+            let t = line.trim();
+            if t.is_empty() || t.starts_with('#') {
+                continue;
+            }
+            let bad = |m: &str| Error::InvalidArgument { message: format!("--against {file}: line {}: {m}", i + 1) };
+            let v: serde_json::Value = serde_json::from_str(t).map_err(|e| bad(&format!("not JSON: {e}")))?;
+            let answer = match (v.get("path").and_then(|p| p.as_str()), v.get("error")) {
+                (Some(p), _) => FloatAnswer::Path(p.to_string()),
+                (None, Some(e)) => FloatAnswer::Error(e.as_str().map_or_else(|| e.to_string(), str::to_string)),
+                (None, None) => return Err(bad("a line needs \"path\" (a string) or \"error\"")),
+            };
+            let scope = v.get("file").and_then(|f| f.as_str()).map(str::to_string);
+            let id = v.get("glyph_id").and_then(|g| g.as_u64()).and_then(|g| u32::try_from(g).ok());
+            let name = v.get("glyph").and_then(|g| g.as_str());
+            if id.is_none() && name.is_none() {
+                return Err(bad("a line needs \"glyph\" (the name) or \"glyph_id\""));
+            }
+            if let Some(id) = id {
+                out.by.insert((scope.clone(), Key::Id(id)), answer.clone());
+            }
+            if let Some(name) = name {
+                out.by.insert((scope, Key::Name(name.to_string())), answer);
+            }
+        }
+        Ok(out)
+    }
+
+    /// The answer for a glyph: by id before name, this file's before any file's.
+    fn get(&self, file: &str, gid: u32, name: Option<&str>) -> Option<&FloatAnswer> {
+        let mut keys = vec![Key::Id(gid)];
+        keys.extend(name.map(|n| Key::Name(n.to_string())));
+        keys.into_iter()
+            .find_map(|k| self.by.get(&(Some(file.to_string()), k.clone())).or_else(|| self.by.get(&(None, k))))
+    }
+}
+
+/// How a glyph's exact result compares with a float library's.
+enum Judged {
+    Verdict(Verdict),
+    /// The float library gave no result (its `error`, or no line for the glyph).
+    NoResult(String),
+}
+
+impl Judged {
+    fn agree(&self) -> bool {
+        matches!(self, Judged::Verdict(v) if v.agree)
+    }
+    fn text(&self) -> String {
+        match self {
+            Judged::Verdict(v) => verdict_text(v),
+            Judged::NoResult(reason) => format!("disagree: {reason}"),
+        }
+    }
+    fn json(&self) -> String {
+        match self {
+            Judged::Verdict(v) => verdict_json(Some(v)),
+            Judged::NoResult(reason) => format!(
+                ",\"verdict\":{{\"agree\":false,\"problems\":[{}]}}",
+                serde_json::to_string(reason).expect("a string serializes")
+            ),
+        }
+    }
+}
+
+/// What the run needs for every glyph.
+struct Context<'a> {
+    fill: FillRule,
+    direction: Option<Direction>,
+    budget: Budget,
+    tol: BigRational,
+    mode: NumberMode,
+    against: Option<&'a FloatAnswers>,
+    json: bool,
+}
+
+/// One glyph's output.
+#[derive(Default)]
+struct Done {
+    out: Vec<u8>,
+    err: Vec<u8>,
+    changed: bool,
+    error: bool,
+    disagree: bool,
+}
+
+/// Counts for the summary.
+#[derive(Default)]
+struct Tally {
+    glyphs: usize,
+    changed: usize,
+    errors: usize,
+    disagree: usize,
+}
+
+/// Runs `boolean simplify FONT...`; returns the exit code (2 when a file, a glyph name or a
+/// glyph failed; else 1 when a float result disagreed; else 0).
+pub fn run(args: &BooleanArgs, out: &mut dyn Write) -> i32 {
+    if args.batch.input.is_some() {
+        eprintln!("casteljau: fonts are given as FONT arguments, not with --input");
+        return 2;
+    }
+    if args.plot.is_some() {
+        eprintln!("casteljau: --plot draws one question (path data or an .svg file), not a font");
+        return 2;
+    }
+    let tol = match tolerance(&args.tol) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+    };
+    let against = match args.against.as_deref().map(FloatAnswers::read).transpose() {
+        Ok(a) => a,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            return 2;
+        }
+    };
+    let Some(pool) = crate::batch::thread_pool(args.batch.threads) else { return 2 };
+    // every file is read and every --glyphs name checked before any work
+    let mut fonts: Vec<(String, Vec<u8>, u32)> = vec![];
+    for file in &args.operands {
+        let read = std::fs::read(file)
+            .map_err(|e| format!("cannot read: {e}"))
+            .and_then(|d| font_count(&d).map(|n| (d, n)).map_err(|e| e.to_string()));
+        match read {
+            Ok((data, faces)) => fonts.push((file.clone(), data, faces)),
+            Err(e) => {
+                eprintln!("casteljau: {file}: {e}");
+                return 2;
+            }
+        }
+    }
+    let mut selections: Vec<Vec<Vec<u32>>> = vec![];
+    for (file, data, faces) in &fonts {
+        let mut per_face = vec![];
+        for face in 0..*faces {
+            match Font::open(data, face).map_err(|e| e.to_string()).and_then(|f| select(&f, &args.glyphs)) {
+                Ok(gids) => per_face.push(gids),
+                Err(e) => {
+                    eprintln!("casteljau: {file}: {e}");
+                    return 2;
+                }
+            }
+        }
+        selections.push(per_face);
+    }
+    let ctx = Context {
+        fill: args.fill.into(),
+        direction: args.direction.map(Into::into),
+        budget: Budget::new(args.max_work, "--max-work"),
+        tol,
+        mode: args.batch.numbers.into(),
+        against: against.as_ref(),
+        json: args.batch.json,
+    };
+    let progress = !args.batch.quiet && std::io::stderr().is_terminal();
+    let (mut errors, mut disagree) = (false, false);
+    for ((file, data, faces), per_face) in fonts.iter().zip(selections) {
+        let start = Instant::now();
+        let mut tally = Tally::default();
+        let total: usize = per_face.iter().map(Vec::len).sum();
+        for (face, gids) in per_face.into_iter().enumerate() {
+            let face = face as u32;
+            let font = match Font::open(data, face) {
+                Ok(f) => f,
+                Err(e) => {
+                    eprintln!("casteljau: {file}: {e}");
+                    return 2;
+                }
+            };
+            let face_field = (*faces > 1).then_some(face);
+            for chunk in gids.chunks(GLYPHS_PER_CHUNK) {
+                let done: Vec<Done> =
+                    pool.install(|| chunk.par_iter().map(|&gid| glyph(&ctx, &font, file, face_field, gid)).collect());
+                for d in done {
+                    tally.glyphs += 1;
+                    tally.changed += usize::from(d.changed);
+                    tally.errors += usize::from(d.error);
+                    tally.disagree += usize::from(d.disagree);
+                    if !d.err.is_empty() {
+                        let _ = out.flush();
+                        let _ = std::io::stderr().write_all(&d.err);
+                    }
+                    if out.write_all(&d.out).is_err() {
+                        return 2; // stdout closed
+                    }
+                }
+                if progress {
+                    eprint!("\r\x1b[K{file}: {}/{total}", tally.glyphs);
+                }
+            }
+        }
+        if progress {
+            eprint!("\r\x1b[K");
+        }
+        errors |= tally.errors > 0;
+        disagree |= tally.disagree > 0;
+        if !args.batch.quiet {
+            eprintln!(
+                "{file}: {} glyphs, {} changed, {} errors{}, {:.2} s",
+                tally.glyphs,
+                tally.changed,
+                tally.errors,
+                if ctx.against.is_some() { format!(", {} disagree", tally.disagree) } else { String::new() },
+                start.elapsed().as_secs_f64()
+            );
+        }
+    }
+    if errors {
+        2
+    } else if disagree {
+        1
+    } else {
+        0
+    }
+}
+
+/// The glyph ids to answer, in glyph order: all, or those named (every name must exist).
+fn select(font: &Font<'_>, names: &[String]) -> std::result::Result<Vec<u32>, String> {
+    if names.is_empty() {
+        return Ok((0..font.num_glyphs()).collect());
+    }
+    let mut ids: HashMap<String, u32> = HashMap::new();
+    for gid in 0..font.num_glyphs() {
+        if let Some(n) = font.glyph_name(gid) {
+            ids.entry(n).or_insert(gid);
+        }
+    }
+    let unknown: Vec<&str> = names.iter().map(String::as_str).filter(|n| !ids.contains_key(*n)).collect();
+    if !unknown.is_empty() {
+        return Err(format!("no glyph named {}", unknown.join(", ")));
+    }
+    let set: BTreeSet<u32> = names.iter().map(|n| ids[n.as_str()]).collect();
+    Ok(set.into_iter().collect())
+}
+
+/// The exact outline of a glyph as a shape (every contour closed, empty ones left out).
+fn glyph_shape(font: &Font<'_>, gid: u32) -> Result<Shape> {
+    let contours = font.outline(gid)?;
+    let mut closed = vec![];
+    for c in &contours {
+        if let Some(Segment::Skipped { reason, .. }) = c.segments.iter().find(|s| matches!(s, Segment::Skipped { .. }))
+        {
+            return Err(Error::InvalidArgument { message: format!("the outline has a skipped piece: {reason}") });
+        }
+        let segs = close_for_fill(c)?;
+        if !segs.is_empty() {
+            closed.push(segs);
+        }
+    }
+    Ok(Shape::new(ClosedPath::from_polynomial(closed)?))
+}
+
+/// Whether the result differs from the outline (see the module documentation).
+fn changed(shape: &Shape, r: &BooleanResult) -> bool {
+    use casteljau::poly::RealAlgebraic;
+    let cs = shape.path().contours();
+    if r.contours != cs.len() {
+        return true;
+    }
+    let (zero, one) = (RealAlgebraic::from(casteljau::rat(0)), RealAlgebraic::from(casteljau::rat(1)));
+    let mut used = vec![false; cs.len()];
+    for pieces in &r.pieces {
+        let Some(k) = pieces.first().map(|p| p.contour) else { return true };
+        if k >= cs.len() || used[k] {
+            return true;
+        }
+        used[k] = true;
+        if pieces.iter().any(|p| p.input != 0 || p.contour != k || p.from != zero || p.to != one) {
+            return true;
+        }
+        // the contour's segments that bound something, in order
+        let own: Vec<usize> = (0..cs[k].len())
+            .filter(|&i| {
+                let ps = cs[k][i].points();
+                ps.iter().any(|p| p != &ps[0])
+            })
+            .collect();
+        let got: Vec<usize> = pieces.iter().map(|p| p.segment).collect();
+        if own.len() != got.len() {
+            return true;
+        }
+        let Some(shift) = own.iter().position(|&s| s == got[0]) else { return true };
+        if (0..own.len()).any(|i| own[(i + shift) % own.len()] != got[i]) {
+            return true;
+        }
+    }
+    false
+}
+
+/// A JSON string.
+fn js(s: &str) -> String {
+    serde_json::to_string(s).expect("a string serializes")
+}
+
+/// Simplifies one glyph and renders its line.
+fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid: u32) -> Done {
+    let name = font.glyph_name(gid);
+    let label = name.clone().unwrap_or_else(|| format!("#{gid}"));
+    let head = format!(
+        "\"file\":{},{}\"glyph\":{},\"glyph_id\":{gid},",
+        js(file),
+        face.map(|f| format!("\"face\":{f},")).unwrap_or_default(),
+        name.as_deref().map_or_else(|| "null".to_string(), js)
+    );
+    let direction = ctx.direction.unwrap_or(if font.is_cff() { Direction::Ccw } else { Direction::Cw });
+    let options = BooleanOptions { fill: ctx.fill, direction };
+    let op = BooleanOp::Simplify;
+    let answer = || -> Result<(usize, BooleanResult, bool, Option<Judged>)> {
+        let shape = glyph_shape(font, gid)?;
+        let before = shape.path().contours().len();
+        let r = boolean_within(op, std::slice::from_ref(&shape), options, &ctx.budget)?;
+        let changed = changed(&shape, &r);
+        let judged = match ctx.against.map(|a| a.get(file, gid, name.as_deref())) {
+            None => None,
+            Some(None) => Some(Judged::NoResult("no result for this glyph in --against".into())),
+            Some(Some(FloatAnswer::Error(e))) => Some(Judged::NoResult(format!("the float library failed: {e}"))),
+            Some(Some(FloatAnswer::Path(p))) => {
+                let found = Shape::new(
+                    fill_path(p, ctx.mode)
+                        .map_err(|e| Error::InvalidArgument { message: format!("--against: {e}") })?,
+                );
+                let v = check_against(op, std::slice::from_ref(&shape), options, &r, &found, &ctx.tol, &ctx.budget)?;
+                Some(Judged::Verdict(v))
+            }
+        };
+        Ok((before, r, changed, judged))
+    };
+    let mut d = Done::default();
+    match answer() {
+        Ok((before, r, changed, judged)) => {
+            d.changed = changed;
+            d.disagree = judged.as_ref().is_some_and(|j| !j.agree());
+            if ctx.json {
+                let head = format!("{head}\"contours_before\":{before},\"changed\":{changed},");
+                let tail = judged.as_ref().map(Judged::json).unwrap_or_default();
+                d.out.extend_from_slice(result_json(&head, op, ctx.fill, &r, &tail).as_bytes());
+            } else {
+                let text = judged.as_ref().map_or_else(|| r.path.clone(), Judged::text);
+                d.out.extend_from_slice(format!("{label}: {text}").as_bytes());
+            }
+            d.out.push(b'\n');
+        }
+        Err(e) => {
+            d.error = true;
+            if ctx.json {
+                d.out.extend_from_slice(format!("{{{head}\"error\":{}}}\n", js(&e.to_string())).as_bytes());
+            } else {
+                let _ = writeln!(d.err, "casteljau: {file}: glyph {label} (id {gid}): {e}");
+            }
+        }
+    }
+    d
+}
