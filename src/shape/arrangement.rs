@@ -177,7 +177,7 @@ pub(crate) struct EdgeData {
 /// let arr = Arrangement::new(&[a, b]).unwrap();
 /// assert_eq!(arr.vertices().len(), 6);
 /// assert_eq!(arr.edges().len(), 7); // the shared edge is one edge carrying two pieces
-/// let shared = arr.edges().iter().find(|e| e.pieces.len() == 2).unwrap();
+/// let shared = arr.edges().into_iter().find(|e| e.pieces.len() == 2).unwrap();
 /// assert_eq!((shared.winding_left.clone(), shared.winding_right.clone()), (vec![1, 0], vec![0, 1]));
 /// let p = |x, y| Point::new(vec![x, y]);
 /// let faces = arr.faces().unwrap();

@@ -12,13 +12,17 @@
 //!   winding numbers of `A`, `B` and `R` at it) and `(x(t) − q_x)² + (y(t) − q_y)² − tol²` is
 //!   proved positive on every piece of `E` (no root in its parameter interval, exact root
 //!   isolation; for a rational piece the same with `W`);
-//! - **distance**: an upper bound on the Hausdorff distance between the two boundaries, by
-//!   adaptive sampling in binary64: each piece of one boundary is cut until, on every part, the
-//!   distance from its midpoint to a point of the other boundary (found by a few Newton steps)
-//!   plus the piece's speed bound times half the part's parameter length is at most `tol` (or
-//!   the midpoint itself is farther than `tol`, or 24 halvings are reached); the largest such
-//!   value is the bound. It is an upper bound up
-//!   to binary64 rounding of the sampled points (relative error about `1e-15` of the
+//! - **distance**: an upper bound on the Hausdorff distance between the two boundaries, in
+//!   binary64. Each float segment is matched to the exact piece it follows (the piece of an
+//!   exact segment between the parameters nearest to its ends): the bound for the pair is the
+//!   largest distance between corresponding control points at a common degree (a pairing of
+//!   their points, so an upper bound both ways), or for a line the largest distance of the
+//!   segment's control points to it and of the ends; the exact pieces must be covered by the
+//!   matched parameter intervals. What is left — float segments matching no piece, exact parts
+//!   no segment covers — is bounded by adaptive sampling: a part is cut until the distance from
+//!   its midpoint to the other boundary plus its speed bound times half its parameter length is
+//!   at most `tol` (or the midpoint itself is farther than `tol`, or 14 halvings are reached).
+//!   It is an upper bound up to binary64 rounding (relative error about `1e-15` of the
 //!   coordinates), which the reported figure does not include.
 //!
 //! The answers agree when the counts and depths are equal, no witness exists, and the distance
@@ -395,7 +399,7 @@ fn directed(from: &[FloatPiece], to: &[FloatPiece], tol: f64) -> f64 {
             let d = dist(p.at(m));
             let bound = d + p.speed * (b - a) / 2.0;
             // refine only where the part might still be within tol
-            if bound > tol && d <= tol && depth < 24 {
+            if bound > tol && d <= tol && depth < 14 {
                 stack.push((a, m, depth + 1));
                 stack.push((m, b, depth + 1));
             } else {
@@ -406,21 +410,221 @@ fn directed(from: &[FloatPiece], to: &[FloatPiece], tol: f64) -> f64 {
     worst
 }
 
+/// Control points of a segment in binary64 (affine; `None` for a rational segment).
+fn float_points(s: &Seg) -> Option<Vec<[f64; 2]>> {
+    if !s.polynomial {
+        return None;
+    }
+    s.hull.as_ref().map(|ps| ps.iter().map(|p| [ratio_to_f64(&p.coords[0]), ratio_to_f64(&p.coords[1])]).collect())
+}
+
+/// De Casteljau in binary64.
+fn point_of(ps: &[[f64; 2]], t: f64) -> [f64; 2] {
+    let mut l = ps.to_vec();
+    while l.len() > 1 {
+        l = l.windows(2).map(|w| [w[0][0] + (w[1][0] - w[0][0]) * t, w[0][1] + (w[1][1] - w[0][1]) * t]).collect();
+    }
+    l[0]
+}
+
+/// The control points of `ps` restricted to `[a, b]` (blossoming, binary64).
+fn sub_points(ps: &[[f64; 2]], a: f64, b: f64) -> Vec<[f64; 2]> {
+    let n = ps.len() - 1;
+    (0..=n)
+        .map(|i| {
+            let mut l = ps.to_vec();
+            for j in 0..n {
+                let t = if j < n - i { a } else { b };
+                l = l
+                    .windows(2)
+                    .map(|w| [w[0][0] + (w[1][0] - w[0][0]) * t, w[0][1] + (w[1][1] - w[0][1]) * t])
+                    .collect();
+            }
+            l[0]
+        })
+        .collect()
+}
+
+/// Degree elevation by one, binary64.
+fn elevate(ps: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    let n = ps.len();
+    (0..=n)
+        .map(|i| {
+            let a = i as f64 / n as f64;
+            let p = if i == 0 { ps[0] } else { ps[i - 1] };
+            let q = if i == n { ps[n - 1] } else { ps[i] };
+            [a * p[0] + (1.0 - a) * q[0], a * p[1] + (1.0 - a) * q[1]]
+        })
+        .collect()
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// The distance from `p` to the segment `[a, b]`.
+fn to_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    if len2 == 0.0 {
+        return dist(p, a);
+    }
+    let t = (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0);
+    dist(p, [a[0] + t * dx, a[1] + t * dy])
+}
+
+/// The parameter of the point of `ps` nearest to `q` (sampling, then Newton), within `[lo, hi]`.
+fn nearest(ps: &[[f64; 2]], q: [f64; 2], lo: f64, hi: f64) -> f64 {
+    let mut best = (f64::INFINITY, lo);
+    for k in 0..=32 {
+        let t = lo + (hi - lo) * k as f64 / 32.0;
+        let d = dist(point_of(ps, t), q);
+        if d < best.0 {
+            best = (d, t);
+        }
+    }
+    let mut t = best.1;
+    let f = |t: f64| {
+        let p = point_of(ps, t);
+        (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
+    };
+    for _ in 0..20 {
+        let h = 1e-6 * (hi - lo).max(1e-12);
+        let (f0, fp, fm) = (f(t), f(t + h), f(t - h));
+        let (d1, d2) = ((fp - fm) / (2.0 * h), (fp - 2.0 * f0 + fm) / (h * h));
+        if d2 <= 0.0 || !d1.is_finite() {
+            break;
+        }
+        let next = (t - d1 / d2).clamp(lo, hi);
+        if (next - t).abs() < 1e-16 {
+            t = next;
+            break;
+        }
+        t = next;
+    }
+    t
+}
+
+/// An upper bound on the distance between a float segment `r` and the piece of `e` between the
+/// parameters nearest to `r`'s ends, both ways: for a line, the largest distance of `r`'s
+/// control points to it and of the ends (`r` lies in their hull, and its projection covers the
+/// line's); otherwise the largest distance between corresponding control points of `r` and of
+/// the piece, at a common degree (a pairing of their points, so an upper bound both ways).
+fn matched_bound(r: &[[f64; 2]], e: &[[f64; 2]], a: f64, b: f64) -> f64 {
+    let (ea, eb) = (point_of(e, a), point_of(e, b));
+    let (ra, rb) = (r[0], r[r.len() - 1]);
+    if e.len() == 2 {
+        let far = r.iter().map(|p| to_segment(*p, ea, eb)).fold(0.0, f64::max);
+        return far.max(dist(ra, ea)).max(dist(rb, eb));
+    }
+    let mut sub = sub_points(e, a, b);
+    let mut rr = r.to_vec();
+    while sub.len() < rr.len() {
+        sub = elevate(&sub);
+    }
+    while rr.len() < sub.len() {
+        rr = elevate(&rr);
+    }
+    rr.iter().zip(&sub).map(|(p, q)| dist(*p, *q)).fold(0.0, f64::max)
+}
+
+/// An upper bound on the Hausdorff distance between the exact boundary and the float result's:
+/// each float segment matched to the exact piece it follows ([`matched_bound`]), every exact
+/// piece checked to be covered by matched segments, and what is left (unmatched segments,
+/// uncovered parts) bounded by sampling (`directed`).
 fn hausdorff_bound(exact: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)], found: &Shape, tol: f64) -> f64 {
-    let e: Vec<FloatPiece> = exact.iter().map(|(s, lo, hi)| FloatPiece::new(s, lo.to_f64(), hi.to_f64())).collect();
-    let mut r = vec![];
+    struct ExactPiece {
+        points: Option<Vec<[f64; 2]>>,
+        lo: f64,
+        hi: f64,
+        bbox: [f64; 4],
+        covered: Vec<(f64, f64)>,
+    }
+    let mut e: Vec<ExactPiece> = exact
+        .iter()
+        .map(|(s, lo, hi)| ExactPiece {
+            points: float_points(s),
+            lo: lo.to_f64(),
+            hi: hi.to_f64(),
+            bbox: s.bbox.unwrap_or([f64::NEG_INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY]),
+            covered: vec![],
+        })
+        .collect();
+    let mut r_segs = vec![];
     for (c, contour) in found.path().contours().iter().enumerate() {
         for (k, seg) in contour.iter().enumerate() {
             if let Ok(s) = Seg::new(0, c, k, seg.clone())
                 && !s.degenerate
             {
-                r.push(FloatPiece::new(&s, 0.0, 1.0));
+                r_segs.push(s);
             }
         }
     }
-    match (e.is_empty(), r.is_empty()) {
-        (true, true) => 0.0,
-        (true, false) | (false, true) => f64::INFINITY,
-        _ => directed(&e, &r, tol).max(directed(&r, &e, tol)),
+    if e.is_empty() || r_segs.is_empty() {
+        return if e.is_empty() && r_segs.is_empty() { 0.0 } else { f64::INFINITY };
     }
+    let mut worst: f64 = 0.0;
+    let mut unmatched: Vec<FloatPiece> = vec![];
+    for s in &r_segs {
+        let Some(r) = float_points(s) else {
+            unmatched.push(FloatPiece::new(s, 0.0, 1.0));
+            continue;
+        };
+        let (r0, r1) = (r[0], r[r.len() - 1]);
+        let mut best: Option<(f64, usize, f64, f64)> = None;
+        for (i, p) in e.iter().enumerate() {
+            let Some(ps) = &p.points else { continue };
+            let b = p.bbox;
+            let slack = tol.max(best.map_or(f64::INFINITY, |x| x.0)).min(1e300);
+            let near = |q: [f64; 2]| {
+                q[0] >= b[0] - slack && q[0] <= b[2] + slack && q[1] >= b[1] - slack && q[1] <= b[3] + slack
+            };
+            if !(near(r0) && near(r1)) {
+                continue;
+            }
+            let (lo, hi) = (p.lo.min(p.hi), p.lo.max(p.hi));
+            let span = (hi - lo).max(1e-12);
+            let (a, bb) = (
+                nearest(ps, r0, lo - 1e-9 * span, hi + 1e-9 * span),
+                nearest(ps, r1, lo - 1e-9 * span, hi + 1e-9 * span),
+            );
+            if (a - bb).abs() < 1e-15 {
+                continue;
+            }
+            let d = matched_bound(&r, ps, a, bb);
+            if best.is_none_or(|x| d < x.0) {
+                best = Some((d, i, a, bb));
+            }
+        }
+        match best {
+            Some((d, i, a, b)) if d <= tol.max(1e-300) * 1e6 => {
+                worst = worst.max(d);
+                e[i].covered.push((a.min(b), a.max(b)));
+            }
+            _ => unmatched.push(FloatPiece::new(s, 0.0, 1.0)),
+        }
+    }
+    // the parts of exact pieces no float segment covers
+    let mut uncovered: Vec<FloatPiece> = vec![];
+    for ((s, _, _), p) in exact.iter().zip(&mut e) {
+        let (lo, hi) = (p.lo.min(p.hi), p.lo.max(p.hi));
+        let gap = 1e-9 * (hi - lo).max(1e-12);
+        p.covered.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut at = lo;
+        for &(a, b) in &p.covered {
+            if a > at + gap {
+                uncovered.push(FloatPiece::new(s, at, a));
+            }
+            at = at.max(b);
+        }
+        if at < hi - gap {
+            uncovered.push(FloatPiece::new(s, at, hi));
+        }
+    }
+    if unmatched.is_empty() && uncovered.is_empty() {
+        return worst;
+    }
+    let all_e: Vec<FloatPiece> = exact.iter().map(|(s, lo, hi)| FloatPiece::new(s, lo.to_f64(), hi.to_f64())).collect();
+    let all_r: Vec<FloatPiece> = r_segs.iter().map(|s| FloatPiece::new(s, 0.0, 1.0)).collect();
+    worst.max(directed(&unmatched, &all_e, tol)).max(directed(&uncovered, &all_r, tol))
 }
