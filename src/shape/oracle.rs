@@ -508,8 +508,10 @@ fn nearest(ps: &[[f64; 2]], q: [f64; 2], lo: f64, hi: f64) -> f64 {
 /// An upper bound on the distance between a float segment `r` and the piece of `e` between the
 /// parameters nearest to `r`'s ends, both ways: for a line, the largest distance of `r`'s
 /// control points to it and of the ends (`r` lies in their hull, and its projection covers the
-/// line's); otherwise the largest distance between corresponding control points of `r` and of
-/// the piece, at a common degree (a pairing of their points, so an upper bound both ways).
+/// line's); otherwise the smaller of the largest distance between corresponding control points
+/// of `r` and of the piece at a common degree (a pairing of their points, so an upper bound both
+/// ways) and the chord bound (each curve's control points' distance to its chord, plus the
+/// chords' ends' distances).
 fn matched_bound(r: &[[f64; 2]], e: &[[f64; 2]], a: f64, b: f64) -> f64 {
     let (ea, eb) = (point_of(e, a), point_of(e, b));
     let (ra, rb) = (r[0], r[r.len() - 1]);
@@ -518,6 +520,10 @@ fn matched_bound(r: &[[f64; 2]], e: &[[f64; 2]], a: f64, b: f64) -> f64 {
         return far.max(dist(ra, ea)).max(dist(rb, eb));
     }
     let mut sub = sub_points(e, a, b);
+    // both nearly straight: each curve is within its control points' distance to its chord
+    // (and covers it), and the chords are within their ends' distance of each other
+    let flat = |ps: &[[f64; 2]]| ps.iter().map(|p| to_segment(*p, ps[0], ps[ps.len() - 1])).fold(0.0, f64::max);
+    let chords = flat(r) + flat(&sub) + dist(ra, ea).max(dist(rb, eb));
     let mut rr = r.to_vec();
     while sub.len() < rr.len() {
         sub = elevate(&sub);
@@ -525,7 +531,8 @@ fn matched_bound(r: &[[f64; 2]], e: &[[f64; 2]], a: f64, b: f64) -> f64 {
     while rr.len() < sub.len() {
         rr = elevate(&rr);
     }
-    rr.iter().zip(&sub).map(|(p, q)| dist(*p, *q)).fold(0.0, f64::max)
+    let paired = rr.iter().zip(&sub).map(|(p, q)| dist(*p, *q)).fold(0.0, f64::max);
+    paired.min(chords)
 }
 
 /// An upper bound on the Hausdorff distance between the exact boundary and the float result's:
@@ -565,11 +572,8 @@ fn hausdorff_bound(exact: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)]
     }
     let mut worst: f64 = 0.0;
     let mut unmatched: Vec<FloatPiece> = vec![];
-    for s in &r_segs {
-        let Some(r) = float_points(s) else {
-            unmatched.push(FloatPiece::new(s, 0.0, 1.0));
-            continue;
-        };
+    // the best exact piece for a float curve `r`: (bound, piece, a, b)
+    let best_match = |r: &[[f64; 2]], e: &[ExactPiece]| -> Option<(f64, usize, f64, f64)> {
         let (r0, r1) = (r[0], r[r.len() - 1]);
         let mut best: Option<(f64, usize, f64, f64)> = None;
         for (i, p) in e.iter().enumerate() {
@@ -591,17 +595,50 @@ fn hausdorff_bound(exact: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)]
             if (a - bb).abs() < 1e-15 {
                 continue;
             }
-            let d = matched_bound(&r, ps, a, bb);
+            let d = matched_bound(r, ps, a, bb);
             if best.is_none_or(|x| d < x.0) {
                 best = Some((d, i, a, bb));
             }
         }
-        match best {
-            Some((d, i, a, b)) if d <= tol.max(1e-300) * 1e6 => {
-                worst = worst.max(d);
-                e[i].covered.push((a.min(b), a.max(b)));
+        best
+    };
+    // the exact vertices (piece ends), where a float segment may span several exact pieces
+    let ends: Vec<[f64; 2]> = e
+        .iter()
+        .filter_map(|p| p.points.as_ref().map(|ps| [point_of(ps, p.lo), point_of(ps, p.hi)]))
+        .flatten()
+        .collect();
+    for s in &r_segs {
+        let Some(r) = float_points(s) else {
+            unmatched.push(FloatPiece::new(s, 0.0, 1.0));
+            continue;
+        };
+        let whole = best_match(&r, &e).filter(|m| m.0 <= tol);
+        // cut at the exact vertices lying on the segment when no one piece follows it
+        let parts: Vec<(f64, f64)> = if whole.is_some() {
+            vec![(0.0, 1.0)]
+        } else {
+            let mut cuts: Vec<f64> = ends
+                .iter()
+                .filter_map(|q| {
+                    let t = nearest(&r, *q, 0.0, 1.0);
+                    (dist(point_of(&r, t), *q) <= tol && t > 1e-12 && t < 1.0 - 1e-12).then_some(t)
+                })
+                .collect();
+            cuts.extend([0.0, 1.0]);
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+            cuts.windows(2).map(|w| (w[0], w[1])).collect()
+        };
+        for (u0, u1) in parts {
+            let sub = if (u0, u1) == (0.0, 1.0) { r.clone() } else { sub_points(&r, u0, u1) };
+            match best_match(&sub, &e) {
+                Some((d, i, a, b)) if d <= tol.max(1e-300) * 1e6 => {
+                    worst = worst.max(d);
+                    e[i].covered.push((a.min(b), a.max(b)));
+                }
+                _ => unmatched.push(FloatPiece::new(s, u0, u1)),
             }
-            _ => unmatched.push(FloatPiece::new(s, 0.0, 1.0)),
         }
     }
     // the parts of exact pieces no float segment covers
