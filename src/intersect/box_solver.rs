@@ -3,6 +3,7 @@
 //! isolating the resultants' roots.
 
 use super::filter;
+use super::fixed::FixedSystem;
 use super::roots::{Side, common_point, square_free_part};
 use super::{Contact, Intersection, Intersections};
 use crate::poly::algebraic::RealAlgebraic;
@@ -42,9 +43,26 @@ pub(super) fn solved_in_boxes(
     let (dpsc, dptc) = (filter::Coeffs::new(&dps), filter::Coeffs::new(&dpt));
     let (side_a, side_b) = (Side::new(fa), Side::new(fb));
     let mut out: Vec<Intersection> = vec![];
+    let fixed = FixedSystem::new(fa, fb);
     for z in zeros {
-        let (s, s_float) = root_in_cell(&ps, (&dps, &dpsc), z[0].ends(), s_irrational)?;
-        let (t, t_float) = root_in_cell(&pt, (&dpt, &dptc), z[1].ends(), t_irrational)?;
+        // refined in fixed point (no evaluation of the resultants), else each parameter's cell
+        // found and proved by exact signs
+        let refined = fixed.as_ref().and_then(|f| f.refine([z[0].ends(), z[1].ends()]));
+        let proved = refined.as_ref().and_then(|x| {
+            Some((
+                root_in_rounded_cell(&ps, &dpsc, x.rounded(0)?, s_irrational)?,
+                root_in_rounded_cell(&pt, &dptc, x.rounded(1)?, t_irrational)?,
+            ))
+        });
+        let ((s, s_float), (t, t_float)) = match proved {
+            Some(st) => st,
+            None => (
+                root_in_cell(&ps, (&dps, &dpsc), z[0].ends(), s_irrational)?,
+                root_in_cell(&pt, (&dpt, &dptc), z[1].ends(), t_irrational)?,
+            ),
+        };
+        let point_float =
+            refined.as_ref().and_then(|x| fixed.as_ref()?.point_float(x)).unwrap_or_else(|| side_a.point_float(&s));
         if out.iter().any(|x| x.s_float == s_float && x.t_float == t_float) {
             continue; // the same crossing, from a box sharing an edge
         }
@@ -53,7 +71,7 @@ pub(super) fn solved_in_boxes(
             s_float,
             t_float,
             point: common_point((&side_a, &s, &s), (&side_b, &t, &t), &mut cached),
-            point_float: side_a.point_float(&s),
+            point_float,
             kind: Contact::Transversal,
             contact_order: 1,
             s,
@@ -62,6 +80,18 @@ pub(super) fn solved_in_boxes(
     }
     out.sort_by(|a, b| a.s_float.total_cmp(&b.s_float).then(a.t_float.total_cmp(&b.t_float)));
     Some(Intersections { intersections: out, overlaps: vec![] })
+}
+
+/// The root of `p` (square-free, primitive, positive leading coefficient) that the caller has
+/// proved to lie in the rounding cell of the `f64` `u` (strictly inside: `u` is the root
+/// correctly rounded), with `u`: proved the only root in the cell by `p′` (enclosed, `dpc`)
+/// keeping one sign on it, so the cell is an isolating interval. `None` when that is not shown.
+fn root_in_rounded_cell(p: &[BigInt], dpc: &filter::Coeffs, u: f64, irrational: bool) -> Option<(RealAlgebraic, f64)> {
+    if !dpc.nonzero_on(u.next_down(), u.next_up()) {
+        return None;
+    }
+    let (lo, hi) = crate::poly::algebraic::f64_cell(u)?;
+    Some((RealAlgebraic::proved_root(p.to_vec(), lo, hi, irrational), u))
 }
 
 /// The root of `p` (square-free, primitive; `dp` its derivative, exact and enclosed) that lies

@@ -32,10 +32,14 @@ impl Enclosure {
         let f = num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN);
         Enclosure(f.next_down().next_down(), f.next_up().next_up())
     }
-    fn add(self, o: Self) -> Self {
+    /// `[lo, hi]` (the caller knows it holds the value).
+    pub(super) fn new(lo: f64, hi: f64) -> Self {
+        Enclosure(lo, hi)
+    }
+    pub(super) fn add(self, o: Self) -> Self {
         Enclosure((self.0 + o.0).next_down(), (self.1 + o.1).next_up())
     }
-    fn mul(self, o: Self) -> Self {
+    pub(super) fn mul(self, o: Self) -> Self {
         let p = [self.0 * o.0, self.0 * o.1, self.1 * o.0, self.1 * o.1];
         if p.iter().any(|x| x.is_nan()) {
             return Enclosure(f64::NAN, f64::NAN);
@@ -57,7 +61,7 @@ impl Enclosure {
         let hi = q.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Enclosure(lo.next_down(), hi.next_up())
     }
-    fn neg(self) -> Self {
+    pub(super) fn neg(self) -> Self {
         Enclosure(-self.1, -self.0)
     }
     /// Provably no common point (false whenever an end is `NaN`).

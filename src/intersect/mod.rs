@@ -31,6 +31,7 @@
 mod box_solver;
 mod elimination;
 mod filter;
+mod fixed;
 mod forms;
 mod oracle;
 mod overlap;
