@@ -46,7 +46,11 @@ pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
         let row = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
         Some([row(&f[0])?, row(&f[1])?, row(&f[2])?])
     };
-    let matrix: Vec<Vec<zv::P>> = match small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m)) {
+    let small_matrix = small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m));
+    if let Some(d) = small_matrix.as_deref().and_then(small_det) {
+        return d;
+    }
+    let matrix: Vec<Vec<zv::P>> = match small_matrix {
         Some(mm) => mm
             .into_iter()
             .map(|row| row.into_iter().map(|e| zv::trim(e.into_iter().map(BigInt::from).collect())).collect())
@@ -58,6 +62,84 @@ pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
             .collect(),
     };
     zv::det(matrix)
+}
+
+/// The determinant of a matrix of order ≤ 3 over `Z[s]` whose entries' coefficients fit an
+/// `i64`, without big integers until the end (as [`zv::det`] gives it: trimmed): the minors in
+/// checked `i128`, the last products summed in [`Wide`]. `None` on an overflow or a larger
+/// order ([`zv::det`] decides then).
+fn small_det(m: &[Vec<Vec<i128>>]) -> Option<zv::P> {
+    let fits = |p: &[i128]| p.iter().all(|c| i64::try_from(*c).is_ok());
+    if !m.iter().flatten().all(|e| fits(e)) {
+        return None;
+    }
+    // a·b for polynomials with i64-sized coefficients, in checked i128
+    let product = |a: &[i128], b: &[i128]| -> Option<Vec<i128>> {
+        let mut out = vec![0i128; (a.len() + b.len()).saturating_sub(1)];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] = out[i + j].checked_add(x * y)?;
+            }
+        }
+        Some(out)
+    };
+    let difference = |a: Vec<i128>, b: Vec<i128>| -> Option<Vec<i128>> {
+        (0..a.len().max(b.len()))
+            .map(|k| a.get(k).copied().unwrap_or(0).checked_sub(b.get(k).copied().unwrap_or(0)))
+            .collect()
+    };
+    // Σ sign·a_j·b_j with a_j's coefficients i64-sized, b_j's any i128, in wide sums
+    let wide_sum = |terms: &[(i128, &[i128], &[i128])]| -> Option<zv::P> {
+        let len = terms.iter().map(|(_, a, b)| (a.len() + b.len()).saturating_sub(1)).max().unwrap_or(0);
+        let mut out = vec![Wide::default(); len];
+        for &(sign, a, b) in terms {
+            for (i, x) in a.iter().enumerate() {
+                for (j, y) in b.iter().enumerate() {
+                    out[i + j].add_product(sign * x, *y)?;
+                }
+            }
+        }
+        Some(zv::trim(out.into_iter().map(Wide::to_bigint).collect()))
+    };
+    match m.len() {
+        1 => Some(zv::trim(m[0][0].iter().map(|&c| BigInt::from(c)).collect())),
+        2 => wide_sum(&[(1, &m[0][0], &m[1][1]), (-1, &m[0][1], &m[1][0])]),
+        3 => {
+            let minor = |(j, l): (usize, usize)| difference(product(&m[1][j], &m[2][l])?, product(&m[1][l], &m[2][j])?);
+            let (m0, m1, m2) = (minor((1, 2))?, minor((0, 2))?, minor((0, 1))?);
+            wide_sum(&[(1, &m[0][0], &m0), (-1, &m[0][1], &m1), (1, &m[0][2], &m2)])
+        }
+        _ => None,
+    }
+}
+
+/// A signed integer `h·2^64 + l` (`0 ≤ l < 2^64`), for sums of products of an `i64`-sized
+/// factor and an `i128` one (up to ~2^190) without allocating.
+#[derive(Clone, Copy, Default)]
+struct Wide {
+    h: i128,
+    l: i128,
+}
+
+impl Wide {
+    /// `self += a·b` for `|a| < 2^63` (checked: `None` on an overflow).
+    fn add_product(&mut self, a: i128, b: i128) -> Option<()> {
+        const LOW: i128 = (1 << 64) - 1;
+        // b = (b >> 64)·2^64 + (b & LOW), the high part signed, the low part in [0, 2^64)
+        let (bh, bl) = (b >> 64, b & LOW);
+        self.h = self.h.checked_add(a.checked_mul(bh)?)?;
+        let t = self.l.checked_add(a.checked_mul(bl)?)?;
+        self.h = self.h.checked_add(t >> 64)?;
+        self.l = t & LOW;
+        Some(())
+    }
+
+    fn to_bigint(self) -> BigInt {
+        match self.h.checked_mul(1 << 64).and_then(|h| h.checked_add(self.l)) {
+            Some(v) => BigInt::from(v),
+            None => (BigInt::from(self.h) << 64u32) + BigInt::from(self.l),
+        }
+    }
 }
 
 /// [`eliminate`]'s implicit matrix `M(A(s))` of order `m`, entries polynomials in `s`:
@@ -136,6 +218,30 @@ mod tests {
     use crate::rational::RationalBezier;
     use num_bigint::BigInt;
     use num_rational::BigRational;
+
+    /// The word-sized determinant against [`zv::det`], on random matrices of order 1 to 3 with
+    /// entries up to 2^62 (wide sums past 2^127) and small ones.
+    #[test]
+    fn small_determinant_matches_bareiss() {
+        let mut word = crate::num::xorshift(0x0B5E_55ED_D0D0_CAFE);
+        for round in 0..300 {
+            let n = 1 + round % 3;
+            let bits = [62, 40, 8][round % 3];
+            let mut entry = || -> Vec<i128> {
+                (0..1 + (word() % 4) as usize).map(|_| (word() as i64 >> (64 - bits)) as i128).collect()
+            };
+            let m: Vec<Vec<Vec<i128>>> = (0..n).map(|_| (0..n).map(|_| entry()).collect()).collect();
+            let big: Vec<Vec<zv::P>> = m
+                .iter()
+                .map(|row| row.iter().map(|e| zv::trim(e.iter().map(|&c| BigInt::from(c)).collect())).collect())
+                .collect();
+            let expected = zv::det(big);
+            match small_det(&m) {
+                Some(d) => assert_eq!(d, expected, "{m:?}"),
+                None => assert!(bits == 62 && n == 3, "declined {m:?}"),
+            }
+        }
+    }
 
     /// The implicit-matrix elimination against the Sylvester resultant: equal up to a constant
     /// and the factor `W_A^m`, on random polynomial and rational cubics, quadratics and lines.

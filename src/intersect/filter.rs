@@ -306,6 +306,12 @@ impl Polygon {
 /// At most this many pairs of pieces are compared by [`candidate_regions`].
 const PIECE_PAIRS: usize = 128;
 
+/// A pair of pieces both this deep (parameter intervals of `2^−8`) is left as a candidate box
+/// rather than halved further: near a crossing, halving goes on pair by pair until
+/// [`PIECE_PAIRS`] comparisons are spent, where the solver's Krawczyk steps ([`solve`]) converge
+/// quadratically on a box this small.
+const HANDOFF_DEPTH: u32 = 8;
+
 /// Pieces are halved at most this often, so that their ends `k/2^d` are exact `f64`s.
 const MAX_DEPTH: u32 = 52;
 
@@ -368,8 +374,9 @@ pub(super) enum Regions {
 /// positive): pairs of pieces are compared by bounding boxes (which hold the pieces, by the
 /// convex hull property), breadth first, the larger piece halved while they overlap (each piece
 /// halved once, its halves shared by every pair it is in). Pairs with disjoint boxes hold no
-/// common point; after [`PIECE_PAIRS`] comparisons the pairs left over hold every one. Boxes
-/// that touch do not count as disjoint, so hits at ends are never filtered out.
+/// common point; after [`PIECE_PAIRS`] comparisons the pairs left over (and those handed off at
+/// [`HANDOFF_DEPTH`]) hold every one. Boxes that touch do not count as disjoint, so hits at ends
+/// are never filtered out.
 pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) -> Regions {
     let enclosed = |rows: &[[BigRational; 3]]| -> Option<Polygon> {
         if rows.is_empty() || rows.len() > MAX_POINTS {
@@ -378,7 +385,12 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         let mut p = Polygon { len: rows.len(), points: [[0.0; 3]; MAX_POINTS], r: 0.0, rw: 0.0 };
         for (q, row) in p.points.iter_mut().zip(rows) {
             for k in 0..3 {
-                let f = crate::num::scalar::ratio_to_f64(&row[k]);
+                // an integer below 2^53 converts exactly (and without num-rational's general route)
+                let small = row[k].is_integer().then(|| num_traits::ToPrimitive::to_i64(row[k].numer())).flatten();
+                let f = match small {
+                    Some(v) if v.unsigned_abs() < 1 << 53 => v as f64,
+                    _ => crate::num::scalar::ratio_to_f64(&row[k]),
+                };
                 if !f.is_finite() {
                     return None;
                 }
@@ -412,7 +424,8 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         }
         let split_a = arena[i].size() >= arena[j].size();
         let depth = if split_a { arena[i].d } else { arena[j].d };
-        if compared >= PIECE_PAIRS || depth >= MAX_DEPTH {
+        let handed_off = arena[i].d.min(arena[j].d) >= HANDOFF_DEPTH;
+        if compared >= PIECE_PAIRS || depth >= MAX_DEPTH || handed_off {
             left.push((i, j));
             continue;
         }
