@@ -46,10 +46,11 @@ pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
         let row = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
         Some([row(&f[0])?, row(&f[1])?, row(&f[2])?])
     };
-    let small_matrix = small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m));
-    if let Some(d) = small_matrix.as_deref().and_then(small_det) {
+    // curves of degree ≤ 3 with word-sized coefficients: fixed arrays, no allocation
+    if let Some(d) = eliminate_in_words(fa, fb, m) {
         return d;
     }
+    let small_matrix = small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m));
     let matrix: Vec<Vec<zv::P>> = match small_matrix {
         Some(mm) => mm
             .into_iter()
@@ -64,53 +65,103 @@ pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
     zv::det(matrix)
 }
 
-/// The determinant of a matrix of order ≤ 3 over `Z[s]` whose entries' coefficients fit an
-/// `i64`, without big integers until the end (as [`zv::det`] gives it: trimmed): the minors in
-/// checked `i128`, the last products summed in [`Wide`]. `None` on an overflow or a larger
-/// order ([`zv::det`] decides then).
-fn small_det(m: &[Vec<Vec<i128>>]) -> Option<zv::P> {
-    let fits = |p: &[i128]| p.iter().all(|c| i64::try_from(*c).is_ok());
-    if !m.iter().flatten().all(|e| fits(e)) {
+/// A polynomial of degree ≤ 3 in fixed-size words (lowest degree first).
+type Words = [i128; WORDS];
+
+/// The coefficients of a polynomial of degree ≤ 3.
+const WORDS: usize = 4;
+
+/// [`eliminate`]'s implicit-matrix determinant for curves of degree ≤ 3 (order `m ≤ 3`) whose
+/// forms' coefficients fit an `i64`, in fixed arrays of words: the Bézoutians and entries in
+/// checked `i128`, the determinant by [`words_det`]; as [`zv::det`] gives it (trimmed). `None`
+/// on an overflow or a larger degree (the general route decides then).
+fn eliminate_in_words(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3], m: usize) -> Option<zv::P> {
+    use num_traits::ToPrimitive;
+    if m > 3 {
         return None;
     }
-    // a·b for polynomials with i64-sized coefficients, in checked i128
-    let product = |a: &[i128], b: &[i128]| -> Option<Vec<i128>> {
-        let mut out = vec![0i128; (a.len() + b.len()).saturating_sub(1)];
-        for (i, x) in a.iter().enumerate() {
-            for (j, y) in b.iter().enumerate() {
-                out[i + j] = out[i + j].checked_add(x * y)?;
+    let words = |p: &[BigInt]| -> Option<Words> {
+        let mut w = [0; WORDS];
+        for (k, c) in p.iter().enumerate() {
+            *w.get_mut(k)? = i128::from(c.to_i64()?);
+        }
+        Some(w)
+    };
+    let (a, b) = ([words(&fa[0])?, words(&fa[1])?, words(&fa[2])?], [words(&fb[0])?, words(&fb[1])?, words(&fb[2])?]);
+    // the Bézoutian of formal degree m, as [`bezoutian`]
+    let bz = |p: &Words, q: &Words| -> Option<[Words; WORDS]> {
+        let n = m + 1;
+        let mut out = [[0i128; WORDS]; WORDS];
+        for j in 0..n {
+            for i in (1..n).rev() {
+                let prev = if j > 0 { out[i][j - 1] } else { 0 };
+                let pij = p[i].checked_mul(q[j])?.checked_sub(p[j].checked_mul(q[i])?)?;
+                out[i - 1][j] = pij.checked_add(prev)?;
             }
         }
         Some(out)
     };
-    let difference = |a: Vec<i128>, b: Vec<i128>| -> Option<Vec<i128>> {
-        (0..a.len().max(b.len()))
-            .map(|k| a.get(k).copied().unwrap_or(0).checked_sub(b.get(k).copied().unwrap_or(0)))
-            .collect()
-    };
-    // Σ sign·a_j·b_j with a_j's coefficients i64-sized, b_j's any i128, in wide sums
-    let wide_sum = |terms: &[(i128, &[i128], &[i128])]| -> Option<zv::P> {
-        let len = terms.iter().map(|(_, a, b)| (a.len() + b.len()).saturating_sub(1)).max().unwrap_or(0);
-        let mut out = vec![Wide::default(); len];
-        for &(sign, a, b) in terms {
-            for (i, x) in a.iter().enumerate() {
-                for (j, y) in b.iter().enumerate() {
-                    out[i + j].add_product(sign * x, *y)?;
-                }
+    let (b1, b2, b3) = (bz(&b[2], &b[1])?, bz(&b[0], &b[2])?, bz(&b[0], &b[1])?);
+    let mut e = [[[0i128; WORDS]; 3]; 3];
+    for i in 0..m {
+        for j in 0..m {
+            for k in 0..WORDS {
+                let w = a[2][k].checked_mul(b3[i][j])?;
+                let x = a[0][k].checked_mul(b1[i][j])?;
+                let y = a[1][k].checked_mul(b2[i][j])?;
+                e[i][j][k] = w.checked_sub(x)?.checked_sub(y)?;
             }
         }
-        Some(zv::trim(out.into_iter().map(Wide::to_bigint).collect()))
-    };
-    match m.len() {
-        1 => Some(zv::trim(m[0][0].iter().map(|&c| BigInt::from(c)).collect())),
-        2 => wide_sum(&[(1, &m[0][0], &m[1][1]), (-1, &m[0][1], &m[1][0])]),
-        3 => {
-            let minor = |(j, l): (usize, usize)| difference(product(&m[1][j], &m[2][l])?, product(&m[1][l], &m[2][j])?);
-            let (m0, m1, m2) = (minor((1, 2))?, minor((0, 2))?, minor((0, 1))?);
-            wide_sum(&[(1, &m[0][0], &m0), (-1, &m[0][1], &m1), (1, &m[0][2], &m2)])
-        }
-        _ => None,
     }
+    words_det(&e, m)
+}
+
+/// The determinant of the leading `m × m` block (`m ≤ 3`) of a matrix over `Z[s]` with entries
+/// of degree ≤ 3 in words (as [`zv::det`] gives it: trimmed): the minors in checked `i128`, the
+/// last products summed in [`Wide`] (up to ~2^190). `None` on an overflow.
+fn words_det(e: &[[Words; 3]; 3], m: usize) -> Option<zv::P> {
+    // a·b, degree ≤ 6, in checked i128
+    let product = |a: &Words, b: &Words| -> Option<[i128; 2 * WORDS - 1]> {
+        let mut out = [0i128; 2 * WORDS - 1];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] = out[i + j].checked_add(x.checked_mul(*y)?)?;
+            }
+        }
+        Some(out)
+    };
+    let minor = |(j, l): (usize, usize)| -> Option<[i128; 2 * WORDS - 1]> {
+        let (p, q) = (product(&e[1][j], &e[2][l])?, product(&e[1][l], &e[2][j])?);
+        let mut out = [0i128; 2 * WORDS - 1];
+        for k in 0..out.len() {
+            out[k] = p[k].checked_sub(q[k])?;
+        }
+        Some(out)
+    };
+    // Σ sign·a_j·b_j in wide sums
+    let mut out = [Wide::default(); 3 * WORDS - 2];
+    let mut wide = |sign: i128, a: &Words, b: &[i128]| -> Option<()> {
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j].add_product(sign.checked_mul(*x)?, *y)?;
+            }
+        }
+        Some(())
+    };
+    match m {
+        1 => wide(1, &e[0][0], &[1])?,
+        2 => {
+            wide(1, &e[0][0], &e[1][1])?;
+            wide(-1, &e[0][1], &e[1][0])?;
+        }
+        3 => {
+            wide(1, &e[0][0], &minor((1, 2))?)?;
+            wide(-1, &e[0][1], &minor((0, 2))?)?;
+            wide(1, &e[0][2], &minor((0, 1))?)?;
+        }
+        _ => return None,
+    }
+    Some(zv::trim(out.into_iter().map(Wide::to_bigint).collect()))
 }
 
 /// A signed integer `h·2^64 + l` (`0 ≤ l < 2^64`), for sums of products of an `i64`-sized
@@ -122,7 +173,8 @@ struct Wide {
 }
 
 impl Wide {
-    /// `self += a·b` for `|a| < 2^63` (checked: `None` on an overflow).
+    /// `self += a·b` (checked: `None` on an overflow, which `|a| < 2^63` rules out for all but
+    /// long sums).
     fn add_product(&mut self, a: i128, b: i128) -> Option<()> {
         const LOW: i128 = (1 << 64) - 1;
         // b = (b >> 64)·2^64 + (b & LOW), the high part signed, the low part in [0, 2^64)
@@ -220,25 +272,27 @@ mod tests {
     use num_rational::BigRational;
 
     /// The word-sized determinant against [`zv::det`], on random matrices of order 1 to 3 with
-    /// entries up to 2^62 (wide sums past 2^127) and small ones.
+    /// entries of degree ≤ 3 up to 2^62 (wide sums past 2^127) and small ones.
     #[test]
-    fn small_determinant_matches_bareiss() {
+    fn words_determinant_matches_bareiss() {
         let mut word = crate::num::xorshift(0x0B5E_55ED_D0D0_CAFE);
         for round in 0..300 {
             let n = 1 + round % 3;
             let bits = [62, 40, 8][round % 3];
-            let mut entry = || -> Vec<i128> {
-                (0..1 + (word() % 4) as usize).map(|_| (word() as i64 >> (64 - bits)) as i128).collect()
-            };
-            let m: Vec<Vec<Vec<i128>>> = (0..n).map(|_| (0..n).map(|_| entry()).collect()).collect();
-            let big: Vec<Vec<zv::P>> = m
-                .iter()
-                .map(|row| row.iter().map(|e| zv::trim(e.iter().map(|&c| BigInt::from(c)).collect())).collect())
+            let mut e = [[[0i128; WORDS]; 3]; 3];
+            for entry in e.iter_mut().flatten().take(9) {
+                let len = 1 + (word() % 4) as usize;
+                for c in entry.iter_mut().take(len) {
+                    *c = (word() as i64 >> (64 - bits)) as i128;
+                }
+            }
+            let big: Vec<Vec<zv::P>> = (0..n)
+                .map(|i| (0..n).map(|j| zv::trim(e[i][j].iter().map(|&c| BigInt::from(c)).collect())).collect())
                 .collect();
             let expected = zv::det(big);
-            match small_det(&m) {
-                Some(d) => assert_eq!(d, expected, "{m:?}"),
-                None => assert!(bits == 62 && n == 3, "declined {m:?}"),
+            match words_det(&e, n) {
+                Some(d) => assert_eq!(d, expected, "{e:?}"),
+                None => assert!(bits == 62 && n == 3, "declined {e:?}"),
             }
         }
     }

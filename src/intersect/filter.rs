@@ -283,6 +283,19 @@ impl Polygon {
     /// included: it holds the curve when every weight is positive (convex hull property).
     /// `None` when an enclosure says nothing.
     fn bounding_box(&self) -> Option<[Enclosure; 2]> {
+        if self.rw == 0.0 && self.points().iter().all(|p| p[2] == 1.0) {
+            // the hull of the points' enclosures `around(p, r)`: rounding is monotone, so it is
+            // the extreme coordinates widened once
+            let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+            for p in self.points() {
+                for k in 0..2 {
+                    lo[k] = lo[k].min(p[k]);
+                    hi[k] = hi[k].max(p[k]);
+                }
+            }
+            let b = [0, 1].map(|k| Enclosure((lo[k] - self.r).next_down(), (hi[k] + self.r).next_up()));
+            return b.iter().all(|e| e.0.is_finite() && e.1.is_finite()).then_some(b);
+        }
         let mut out: Option<[Enclosure; 2]> = None;
         for p in self.points() {
             let q = if self.rw == 0.0 && p[2] == 1.0 {

@@ -125,8 +125,13 @@ impl FixedSystem {
             return None;
         }
         let (wa, wb) = (&fa[2][0], &fb[2][0]);
-        let scaled =
-            |p: &[BigInt], w: &BigInt| -> Option<Poly> { Poly::new(&p.iter().map(|c| c * w).collect::<Vec<_>>()) };
+        let scaled = |p: &[BigInt], w: &BigInt| -> Option<Poly> {
+            if num_traits::One::is_one(w) {
+                Poly::new(p)
+            } else {
+                Poly::new(&p.iter().map(|c| c * w).collect::<Vec<_>>())
+            }
+        };
         let p = [scaled(&fa[0], wb)?, scaled(&fa[1], wb)?, scaled(&fb[0], wa)?, scaled(&fb[1], wa)?];
         let d = std::array::from_fn(|k| p[k].derivative());
         let one = |w: &BigInt| w.to_i64() == Some(1);

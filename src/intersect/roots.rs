@@ -32,6 +32,10 @@ pub(super) fn roots(r: &[BigInt], domain: Domain) -> (Vec<RealAlgebraic>, bool) 
 /// The primitive square-free part of `r` (integer coefficients, non-zero), and whether `r`
 /// was square-free already.
 pub(super) fn square_free_part(r: &[BigInt]) -> (Vec<BigInt>, bool) {
+    // word-sized coefficients proved square-free modulo a prime: no big-integer gcds
+    if let Some(p) = crate::poly::polynomial::square_free_small(r) {
+        return (p, true);
+    }
     let p = crate::poly::polynomial::primitive_part(r.to_vec());
     let sf = crate::poly::polynomial::square_free_integer(p.clone());
     let simple = sf.len() == p.len();

@@ -249,6 +249,18 @@ pub(crate) fn residue(n: &num_bigint::BigInt, m: u64) -> u64 {
     if n.sign() == num_bigint::Sign::Minus && r != 0 { m - r } else { r }
 }
 
+/// `n mod m` in `[0, m)` for a signed `n` and `m < 2^32`, in `u64` operations (no 128-bit
+/// division): the magnitude's two words combined with `2^64 mod m`, negated modulo `m` for a
+/// negative `n`.
+pub(crate) fn residue_i128(n: i128, m: u64) -> u64 {
+    debug_assert!(m > 0 && m >> 32 == 0);
+    let mag = n.unsigned_abs();
+    let (hi, lo) = ((mag >> 64) as u64, mag as u64);
+    let base = (u64::MAX % m + 1) % m; // 2^64 mod m
+    let r = ((hi % m) * base + lo % m) % m;
+    if n < 0 && r != 0 { m - r } else { r }
+}
+
 /// [`extract_small_squares`] of a big number: `(k, m)` with `n = k²·m` and `m` free of the
 /// squares of primes below 1000 (the rule of
 /// [`QuadraticExt::sqrt`](crate::num::QuadraticExt::sqrt)).

@@ -191,23 +191,66 @@ pub fn square_free_integer(p: Vec<BigInt>) -> Vec<BigInt> {
 /// Primes below 2³¹ for the modular square-free test: products of two residues fit in a `u64`,
 /// so every step is one machine multiplication and remainder (a 62-bit prime needed `u128`
 /// remainders, a software division each, and cost more than the rest of the root isolation).
-const MODULAR_PRIMES: [u64; 3] = [2_147_483_647, 2_147_483_629, 2_147_483_587];
+const MODULAR_PRIMES: [u64; 3] = [MERSENNE, 2_147_483_629, 2_147_483_587];
+
+/// The Mersenne prime `2^31 − 1`, the first of [`MODULAR_PRIMES`].
+const MERSENNE: u64 = (1 << 31) - 1;
+
+/// The primitive part of a non-zero integer polynomial (trimmed, positive leading coefficient)
+/// when every coefficient fits an `i128` and the modular test of [`square_free_integer`] proves
+/// it square-free: then it is [`square_free_integer`]'s answer, found in machine words (the
+/// content by word gcds, the residues by word remainders). `None` otherwise (decide with
+/// [`square_free_integer`]).
+pub(crate) fn square_free_small(p: &[BigInt]) -> Option<Vec<BigInt>> {
+    let mut c: Vec<i128> = p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<_>>()?;
+    while c.last() == Some(&0) {
+        c.pop();
+    }
+    let last = *c.last()?;
+    let content = c
+        .iter()
+        .try_fold(0u128, |g, x| if g == 1 { None } else { Some(crate::num::word::gcd_u128(g, x.unsigned_abs())) });
+    let content = i128::try_from(content.unwrap_or(1)).ok()?;
+    let content = if last < 0 { -content } else { content };
+    let c: Vec<i128> = c.into_iter().map(|x| x / content).collect();
+    let big = || c.iter().map(|&x| BigInt::from(x)).collect();
+    if c.len() <= 2 {
+        return Some(big());
+    }
+    let dc: Vec<i128> = c.iter().enumerate().skip(1).map(|(k, x)| x.checked_mul(k as i128)).collect::<Option<_>>()?;
+    let reduce = |v: &[i128], q: u64| -> Vec<u64> { v.iter().map(|&x| crate::num::word::residue_i128(x, q)).collect() };
+    MODULAR_PRIMES.iter().any(|&q| coprime_residues(reduce(&c, q), reduce(&dc, q), q)).then(big)
+}
 
 /// `true` when `gcd(a mod q, b mod q)` is a non-zero constant and `q ∤ lc(a)`: then `a` and
 /// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
 fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
-    let reduce = |p: &[BigInt]| -> Vec<u64> {
-        let mut v: Vec<u64> = p.iter().map(|x| crate::num::word::residue(x, q)).collect();
+    let reduce = |p: &[BigInt]| -> Vec<u64> { p.iter().map(|x| crate::num::word::residue(x, q)).collect() };
+    coprime_residues(reduce(a), reduce(b), q)
+}
+
+/// [`coprime_mod`] on the residues `x` of `a` and `y` of `b` (untrimmed: `x` as long as `a`).
+fn coprime_residues(mut x: Vec<u64>, mut y: Vec<u64>, q: u64) -> bool {
+    let len = x.len();
+    for v in [&mut x, &mut y] {
         while v.last() == Some(&0) {
             v.pop();
         }
-        v
-    };
-    let (mut x, mut y) = (reduce(a), reduce(b));
-    if x.len() != a.len() || y.is_empty() {
+    }
+    if x.len() != len || y.is_empty() {
         return false; // q divides lc(a), or b vanishes mod q: no conclusion
     }
-    let mul = |u: u64, v: u64| u * v % q;
+    // v mod q for v < 2^62; by folding for the Mersenne prime 2^31 − 1 (no division)
+    let reduce = |v: u64| {
+        if q == MERSENNE {
+            let v = (v & MERSENNE) + (v >> 31);
+            let v = (v & MERSENNE) + (v >> 31);
+            if v >= MERSENNE { v - MERSENNE } else { v }
+        } else {
+            v % q
+        }
+    };
+    let mul = |u: u64, v: u64| reduce(u * v);
     let inv = |u: u64| {
         // extended Euclid on (u, q): q is prime and u ≠ 0
         let (mut r0, mut r1, mut s0, mut s1) = (q as i64, u as i64, 0i64, 1i64);
@@ -228,7 +271,7 @@ fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
             let f = mul(*x.last().expect("non-empty"), li);
             let shift = x.len() - y.len();
             for (i, c) in y.iter().enumerate() {
-                x[shift + i] = (x[shift + i] + q - mul(f, *c)) % q;
+                x[shift + i] = reduce(x[shift + i] + q - mul(f, *c));
             }
             x.pop();
             while x.last() == Some(&0) {

@@ -20,13 +20,20 @@ use std::cmp::Ordering;
 /// slower exact search of `detect_rational` then decides.
 pub(crate) fn no_rational_roots(p: &[BigInt]) -> bool {
     const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
-    let Some(lc) = p.last() else { return false };
-    let residue = crate::num::word::residue;
+    if p.is_empty() {
+        return false;
+    }
+    // word-sized coefficients: residues by word remainders
+    let small: Option<Vec<i128>> = p.iter().map(num_traits::ToPrimitive::to_i128).collect();
+    let residue = |k: usize, q: u64| match &small {
+        Some(c) => crate::num::word::residue_i128(c[k], q),
+        None => crate::num::word::residue(&p[k], q),
+    };
     PRIMES.iter().any(|&q| {
-        if residue(lc, q) == 0 {
+        let coeffs: Vec<u64> = (0..p.len()).map(|k| residue(k, q)).collect();
+        if coeffs[p.len() - 1] == 0 {
             return false;
         }
-        let coeffs: Vec<u64> = p.iter().map(|c| residue(c, q)).collect();
         (0..q).all(|x| coeffs.iter().rev().fold(0u64, |acc, c| (acc * x + c) % q) != 0)
     })
 }
