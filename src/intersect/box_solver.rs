@@ -39,8 +39,9 @@ pub(super) fn solved_in_boxes(
     // without rational roots the cells' roots are irrational; else each is checked
     let no_rational = crate::poly::algebraic::no_rational_roots;
     let (s_irrational, t_irrational) = (no_rational(&ps), no_rational(&pt));
-    let (dps, dpt) = (derivative_integer(&ps), derivative_integer(&pt));
-    let (dpsc, dptc) = (filter::Coeffs::new(&dps), filter::Coeffs::new(&dpt));
+    let (dpsc, dptc) = (filter::Coeffs::derivative_of(&ps), filter::Coeffs::derivative_of(&pt));
+    // the exact derivatives, for the exact cells (made on first need)
+    let (mut dps, mut dpt) = (None, None);
     let (side_a, side_b) = (Side::new(fa), Side::new(fb));
     let mut out: Vec<Intersection> = vec![];
     let fixed = FixedSystem::new(fa, fb);
@@ -54,15 +55,25 @@ pub(super) fn solved_in_boxes(
                 root_in_rounded_cell(&pt, &dptc, x.rounded(1)?, t_irrational)?,
             ))
         });
+        let proved_fast = proved.is_some();
         let ((s, s_float), (t, t_float)) = match proved {
             Some(st) => st,
-            None => (
-                root_in_cell(&ps, (&dps, &dpsc), z[0].ends(), s_irrational)?,
-                root_in_cell(&pt, (&dpt, &dptc), z[1].ends(), t_irrational)?,
-            ),
+            None => {
+                let dps = dps.get_or_insert_with(|| derivative_integer(&ps));
+                let dpt = dpt.get_or_insert_with(|| derivative_integer(&pt));
+                (
+                    root_in_cell(&ps, (dps, &dpsc), z[0].ends(), s_irrational)?,
+                    root_in_cell(&pt, (dpt, &dptc), z[1].ends(), t_irrational)?,
+                )
+            }
         };
         let point_float =
             refined.as_ref().and_then(|x| fixed.as_ref()?.point_float(x)).unwrap_or_else(|| side_a.point_float(&s));
+        // tight enclosures of the parameters, for the irrationality proof of the point
+        let (s_narrow, t_narrow) = match &refined {
+            Some(x) if proved_fast => (x.enclosure(0), x.enclosure(1)),
+            _ => (filter::outward(&s), filter::outward(&t)),
+        };
         if out.iter().any(|x| x.s_float == s_float && x.t_float == t_float) {
             continue; // the same crossing, from a box sharing an edge
         }
@@ -70,7 +81,7 @@ pub(super) fn solved_in_boxes(
         out.push(Intersection {
             s_float,
             t_float,
-            point: common_point((&side_a, &s, &s), (&side_b, &t, &t), &mut cached),
+            point: common_point((&side_a, &s, s_narrow), (&side_b, &t, t_narrow), &mut cached),
             point_float,
             kind: Contact::Transversal,
             contact_order: 1,

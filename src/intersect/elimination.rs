@@ -34,7 +34,7 @@ pub(super) fn cross_system(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[Bi
 /// matrix) instead of the `2m × 2m` Sylvester one, and `det M(x, y, w) = 0` is `B`'s implicit
 /// equation. Otherwise (a line parallel to an axis, say) the Sylvester resultant.
 pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
-    let (df, dg) = (cross_degree(&fa[0], &fa[2], &fb[0], &fb[2]), cross_degree(&fa[1], &fa[2], &fb[1], &fb[2]));
+    let (df, dg) = { (cross_degree(&fa[0], &fa[2], &fb[0], &fb[2]), cross_degree(&fa[1], &fa[2], &fb[1], &fb[2])) };
     if df != dg || df.is_none_or(|d| d < 1) {
         let f = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]);
         let g = cross_system(&fa[1], &fa[2], &fb[1], &fb[2]);
@@ -253,7 +253,13 @@ pub(super) fn bezoutian<T: CheckedRing>(p: &[T], q: &[T], m: usize) -> Option<Ve
 pub(super) fn divided_difference(f: &[BigInt], w: &[BigInt]) -> Vec<zv::P> {
     // Q[i][j], the coefficient of s^i t^j: the Bézoutian of f and w in formal degree n
     let n = f.len().max(w.len());
-    let q = bezoutian(f, w, n).expect("BigInt arithmetic does not overflow");
+    // in checked i128 when the coefficients allow, else in BigInt
+    let words = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
+    let small = words(f).zip(words(w)).and_then(|(f, w)| bezoutian(&f, &w, n));
+    let q: Vec<Vec<BigInt>> = match small {
+        Some(q) => q.into_iter().map(|row| row.into_iter().map(BigInt::from).collect()).collect(),
+        None => bezoutian(f, w, n).expect("BigInt arithmetic does not overflow"),
+    };
     let mut out: Vec<zv::P> = (0..n).map(|j| zv::trim((0..n).map(|i| q[i][j].clone()).collect())).collect();
     while out.last().is_some_and(|c| c.is_empty()) {
         out.pop();

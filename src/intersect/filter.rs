@@ -114,18 +114,19 @@ pub(super) const MAX_BEZOUT_ORDER: usize = 4;
 
 /// The polynomials `f(x, u)` and `g(x, u)` in `u` (coefficients in `Z[x]`, lowest first, of
 /// formal degree `m ≤` [`MAX_BEZOUT_ORDER`]) provably have no common root `u`, complex ones
-/// included, at the real number `x` (pass a copy narrowed by
-/// [`RealAlgebraic::narrowed_with_f64`]): the `m × m` Bézout matrix `B` of `f(x, ·)` and
-/// `g(x, ·)` — `f(u)g(v) − f(v)g(u) = (u − v)·Σ B_ij u^i v^j` — enclosed over `x`'s interval, has
+/// included, at the real number `x` in the `f64` interval `(lo, hi)` (a tight one: [`outward`]
+/// of a copy narrowed by [`RealAlgebraic::narrowed_with_f64`], say): the `m × m` Bézout matrix
+/// `B` of `f(x, ·)` and `g(x, ·)` — `f(u)g(v) − f(v)g(u) = (u − v)·Σ B_ij u^i v^j` — enclosed
+/// over that interval, has
 /// a determinant that keeps away from 0. A common root `u₀` would make the row vector
 /// `(u₀^i)` a left null vector of `B` (the left side vanishes for every `v`), so `det B = 0`.
 /// False when that is not shown (the exact route decides then).
-pub(super) fn no_common_root(f: &[Vec<BigInt>], g: &[Vec<BigInt>], x: &RealAlgebraic) -> bool {
+pub(super) fn no_common_root(f: &[Vec<BigInt>], g: &[Vec<BigInt>], (lo, hi): (f64, f64)) -> bool {
     let m = f.len().max(g.len()).saturating_sub(1);
     if m == 0 || m > MAX_BEZOUT_ORDER {
         return false;
     }
-    let xe = Enclosure::of_number(x);
+    let xe = Enclosure(lo, hi);
     let at = |p: &[Vec<BigInt>]| -> Vec<Enclosure> { p.iter().map(|c| enclose(c, xe)).collect() };
     let Some(bz) = super::elimination::bezoutian(&at(f), &at(g), m) else { return false };
     let d = det(&bz);
@@ -424,7 +425,9 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         }
         Some(p)
     };
-    let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else { return Regions::Anywhere };
+    let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else {
+        return Regions::Anywhere;
+    };
     let mut arena = vec![Piece::new(a, 0, 0), Piece::new(b, 0, 0)];
     let mut queue = std::collections::VecDeque::from([(0usize, 1usize)]);
     let mut left: Vec<(usize, usize)> = vec![];
@@ -472,6 +475,12 @@ impl Coeffs {
         Coeffs(p.iter().map(Enclosure::of_integer).collect())
     }
 
+    /// The enclosed coefficients of `p′` (`k·c_k`), without forming it.
+    pub(super) fn derivative_of(p: &[BigInt]) -> Self {
+        let k = |k: usize| Enclosure(k as f64, k as f64);
+        Coeffs(p.iter().enumerate().skip(1).map(|(i, c)| Enclosure::of_integer(c).mul(k(i))).collect())
+    }
+
     /// An enclosure of the polynomial over `x` (Horner).
     fn at(&self, x: Enclosure) -> Enclosure {
         self.0.iter().rev().fold(Enclosure(0.0, 0.0), |acc, &c| acc.mul(x).add(c))
@@ -505,11 +514,14 @@ impl System {
         }
         let (wa, wb) = (&fa[2][0], &fb[2][0]);
         let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
-        let polys = [scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa)];
-        let deriv = crate::poly::polynomial::derivative_integer;
+        let polys = if num_traits::One::is_one(wa) && num_traits::One::is_one(wb) {
+            [fa[0].clone(), fa[1].clone(), fb[0].clone(), fb[1].clone()]
+        } else {
+            [scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa)]
+        };
         Some(System {
             p: std::array::from_fn(|k| Coeffs::new(&polys[k])),
-            d: std::array::from_fn(|k| Coeffs::new(&deriv(&polys[k]))),
+            d: std::array::from_fn(|k| Coeffs::derivative_of(&polys[k])),
         })
     }
 

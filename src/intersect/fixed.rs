@@ -254,6 +254,12 @@ impl Refined {
         if k == 0 { self.s } else { self.t }
     }
 
+    /// An `f64` interval holding `σ` (`k = 0`) or `τ` (`k = 1`).
+    pub(super) fn enclosure(&self, k: usize) -> (f64, f64) {
+        let (lo, hi) = self.interval(k);
+        (to_f64(lo).next_down(), to_f64(hi).next_up())
+    }
+
     /// The parameter `σ` (`k = 0`) or `τ` (`k = 1`) correctly rounded, `u`, when both ends of
     /// its interval round to `u` and lie strictly inside `u`'s rounding cell (the numbers
     /// nearer to `u` than to its neighbours), with `u ≥ 2^−40` (so that the cell's ends are

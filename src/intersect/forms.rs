@@ -53,8 +53,10 @@ fn integer_forms_small(rows: &[[BigRational; 3]]) -> Option<[Vec<BigInt>; 3]> {
             .map(|r| if r[k].is_integer() { r[k].numer().to_i64().map(i128::from) } else { None })
             .collect::<Option<_>>()?;
         let mut c = Vec::with_capacity(n + 1);
+        let mut binomial: i128 = 1; // C(n, j)
         for j in 0..=n {
-            c.push(diff[0].checked_mul(crate::poly::bernstein::binomial(n, j).to_i128()?)?);
+            c.push(diff[0].checked_mul(binomial)?);
+            binomial = binomial.checked_mul((n - j) as i128)? / (j as i128 + 1);
             for i in 0..n - j {
                 diff[i] = diff[i + 1].checked_sub(diff[i])?;
             }

@@ -114,8 +114,8 @@ pub(super) fn intersect_forms(
                     s_float,
                     t_float,
                     point: common_point(
-                        (&side_a, s, na[i].as_ref().map_or(s, |n| &n.0)),
-                        (&side_b, t, nb[j].as_ref().map_or(t, |n| &n.0)),
+                        (&side_a, s, outward(na[i].as_ref().map_or(s, |n| &n.0))),
+                        (&side_b, t, outward(nb[j].as_ref().map_or(t, |n| &n.0))),
                         &mut pa[i],
                     ),
                     point_float: side_a.point_float(na[i].as_ref().map_or(s, |n| &n.0)),

@@ -90,7 +90,7 @@ impl<'a> Side<'a> {
         }
     }
 
-    /// The point at the irrational `x` (`narrow`: the same number, a tight interval) is
+    /// The point at the irrational `x` (`narrow`: a tight `f64` interval holding it) is
     /// provably irrational. Were it a rational point `P`, `x` would be a root of `X − P_x W` and
     /// `Y − P_y W`, so every conjugate `u ≠ x` of `x` (there is one: `x` is irrational) would be
     /// one too, and the curve would pass through `P` at `u`: the divided differences
@@ -99,7 +99,7 @@ impl<'a> Side<'a> {
     /// Else the degree of `x`: `P` rational makes it at most the curve's degree, so a lower bound
     /// above that proves it ([`RealAlgebraic::degree_lower_bound`], a factorization modulo
     /// primes: dearer).
-    fn irrational_at(&self, x: &RealAlgebraic, narrow: &RealAlgebraic) -> bool {
+    fn irrational_at(&self, x: &RealAlgebraic, narrow: (f64, f64)) -> bool {
         if x.to_rational().is_some() || !self.moves {
             return false;
         }
@@ -122,11 +122,12 @@ impl<'a> Side<'a> {
 }
 
 /// The common point `A(s) = B(t)` when it is rational, by the cheapest route that decides: a
-/// rational parameter, an irrationality proof ([`Side::irrational_at`]), or the exact point
-/// (computed once per root, `cached`).
+/// rational parameter, an irrationality proof ([`Side::irrational_at`], with `sn` and `tn`
+/// tight `f64` intervals holding `s` and `t`), or the exact point (computed once per root,
+/// `cached`).
 pub(super) fn common_point(
-    (a, s, sn): (&Side, &RealAlgebraic, &RealAlgebraic),
-    (b, t, tn): (&Side, &RealAlgebraic, &RealAlgebraic),
+    (a, s, sn): (&Side, &RealAlgebraic, (f64, f64)),
+    (b, t, tn): (&Side, &RealAlgebraic, (f64, f64)),
     cached: &mut Option<[RealAlgebraic; 2]>,
 ) -> Option<Point<BigRational>> {
     if let Some(x) = s.to_rational() {
@@ -162,15 +163,15 @@ mod tests {
         let nodal = [b(&[-2, 0, 1]), b(&[0, -2, 0, 1]), b(&[1])];
         let side = Side::new(&nodal);
         let sqrt2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
-        let (narrow, _) = sqrt2.narrowed_with_f64();
+        let narrow = filter::outward(&sqrt2.narrowed_with_f64().0);
         assert!(!filter::no_common_root(
             &divided_difference(&nodal[0], &nodal[2]),
             &divided_difference(&nodal[1], &nodal[2]),
-            &narrow
+            narrow
         ));
-        assert!(!side.irrational_at(&sqrt2, &narrow));
+        assert!(!side.irrational_at(&sqrt2, narrow));
         let sqrt3 = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
-        assert!(side.irrational_at(&sqrt3, &sqrt3.narrowed_with_f64().0)); // (1, √3)
+        assert!(side.irrational_at(&sqrt3, filter::outward(&sqrt3.narrowed_with_f64().0))); // (1, √3)
         let mut next = crate::num::symmetric(0x2545_F491_4F6C_DD1D);
         let mut proved = 0;
         for _ in 0..40 {
@@ -189,7 +190,7 @@ mod tests {
                 if x.sign_of(&to_rational(&f[2])) == Ordering::Equal {
                     continue;
                 }
-                if side.irrational_at(&x, &x.narrowed_with_f64().0) {
+                if side.irrational_at(&x, filter::outward(&x.narrowed_with_f64().0)) {
                     assert!(rational_point(&point_at(&f, &x)).is_none(), "proved irrational, but rational at {x}");
                     proved += 1;
                 }

@@ -251,27 +251,18 @@ fn coprime_residues(mut x: Vec<u64>, mut y: Vec<u64>, q: u64) -> bool {
         }
     };
     let mul = |u: u64, v: u64| reduce(u * v);
-    let inv = |u: u64| {
-        // extended Euclid on (u, q): q is prime and u ≠ 0
-        let (mut r0, mut r1, mut s0, mut s1) = (q as i64, u as i64, 0i64, 1i64);
-        while r1 != 0 {
-            let k = r0 / r1;
-            (r0, r1) = (r1, r0 - k * r1);
-            (s0, s1) = (s1, s0 - k * s1);
-        }
-        s0.rem_euclid(q as i64) as u64
-    };
     if x.len() < y.len() {
         std::mem::swap(&mut x, &mut y);
     }
     while y.len() > 1 {
-        // x ← x mod y over Z_q
-        let li = inv(*y.last().expect("non-zero"));
+        // x ← lc(y)·x − lc(x)·t^shift·y until deg x < deg y: a non-zero multiple of x mod y over
+        // Z_q, so the degrees of the remainder sequence are Euclid's (no inverses needed)
         while x.len() >= y.len() {
-            let f = mul(*x.last().expect("non-empty"), li);
+            let (lx, ly) = (*x.last().expect("non-empty"), *y.last().expect("non-zero"));
             let shift = x.len() - y.len();
-            for (i, c) in y.iter().enumerate() {
-                x[shift + i] = reduce(x[shift + i] + q - mul(f, *c));
+            for i in 0..x.len() - 1 {
+                let sub = if i >= shift { mul(lx, y[i - shift]) } else { 0 };
+                x[i] = reduce(mul(x[i], ly) + q - sub);
             }
             x.pop();
             while x.last() == Some(&0) {
