@@ -61,6 +61,8 @@ pub(super) fn solved_in_boxes(
             None => {
                 let dps = dps.get_or_insert_with(|| derivative_integer(&ps));
                 let dpt = dpt.get_or_insert_with(|| derivative_integer(&pt));
+                // the exact cells need a box some ulps wide
+                let z = filter::shrink(sys, z);
                 (
                     root_in_cell(&ps, (dps, &dpsc), z[0].ends(), s_irrational)?,
                     root_in_cell(&pt, (dpt, &dptc), z[1].ends(), t_irrational)?,

@@ -34,7 +34,7 @@ pub(super) fn cross_system(fa: &[BigInt], wa: &[BigInt], fb: &[BigInt], wb: &[Bi
 /// matrix) instead of the `2m × 2m` Sylvester one, and `det M(x, y, w) = 0` is `B`'s implicit
 /// equation. Otherwise (a line parallel to an axis, say) the Sylvester resultant.
 pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
-    let (df, dg) = { (cross_degree(&fa[0], &fa[2], &fb[0], &fb[2]), cross_degree(&fa[1], &fa[2], &fb[1], &fb[2])) };
+    let (df, dg) = (cross_degree(&fa[0], &fa[2], &fb[0], &fb[2]), cross_degree(&fa[1], &fa[2], &fb[1], &fb[2]));
     if df != dg || df.is_none_or(|d| d < 1) {
         let f = cross_system(&fa[0], &fa[2], &fb[0], &fb[2]);
         let g = cross_system(&fa[1], &fa[2], &fb[1], &fb[2]);
@@ -95,7 +95,7 @@ fn eliminate_in_words(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3], m: usize) ->
         for j in 0..n {
             for i in (1..n).rev() {
                 let prev = if j > 0 { out[i][j - 1] } else { 0 };
-                let pij = p[i].checked_mul(q[j])?.checked_sub(p[j].checked_mul(q[i])?)?;
+                let pij = mul64(p[i], q[j])?.checked_sub(mul64(p[j], q[i])?)?;
                 out[i - 1][j] = pij.checked_add(prev)?;
             }
         }
@@ -106,9 +106,9 @@ fn eliminate_in_words(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3], m: usize) ->
     for i in 0..m {
         for j in 0..m {
             for k in 0..WORDS {
-                let w = a[2][k].checked_mul(b3[i][j])?;
-                let x = a[0][k].checked_mul(b1[i][j])?;
-                let y = a[1][k].checked_mul(b2[i][j])?;
+                let w = mul64(a[2][k], b3[i][j])?;
+                let x = mul64(a[0][k], b1[i][j])?;
+                let y = mul64(a[1][k], b2[i][j])?;
                 e[i][j][k] = w.checked_sub(x)?.checked_sub(y)?;
             }
         }
@@ -125,7 +125,7 @@ fn words_det(e: &[[Words; 3]; 3], m: usize) -> Option<zv::P> {
         let mut out = [0i128; 2 * WORDS - 1];
         for (i, x) in a.iter().enumerate() {
             for (j, y) in b.iter().enumerate() {
-                out[i + j] = out[i + j].checked_add(x.checked_mul(*y)?)?;
+                out[i + j] = out[i + j].checked_add(mul64(*x, *y)?)?;
             }
         }
         Some(out)
@@ -143,7 +143,7 @@ fn words_det(e: &[[Words; 3]; 3], m: usize) -> Option<zv::P> {
     let mut wide = |sign: i128, a: &Words, b: &[i128]| -> Option<()> {
         for (i, x) in a.iter().enumerate() {
             for (j, y) in b.iter().enumerate() {
-                out[i + j].add_product(sign.checked_mul(*x)?, *y)?;
+                out[i + j].add_product(if sign < 0 { x.checked_neg()? } else { *x }, *y)?;
             }
         }
         Some(())
@@ -164,6 +164,15 @@ fn words_det(e: &[[Words; 3]; 3], m: usize) -> Option<zv::P> {
     Some(zv::trim(out.into_iter().map(Wide::to_bigint).collect()))
 }
 
+/// `a·b` checked, by one machine multiplication when both fit an `i64` (`i128::checked_mul`
+/// is a library call).
+fn mul64(a: i128, b: i128) -> Option<i128> {
+    match (i64::try_from(a), i64::try_from(b)) {
+        (Ok(x), Ok(y)) => Some(i128::from(x) * i128::from(y)),
+        _ => a.checked_mul(b),
+    }
+}
+
 /// A signed integer `h·2^64 + l` (`0 ≤ l < 2^64`), for sums of products of an `i64`-sized
 /// factor and an `i128` one (up to ~2^190) without allocating.
 #[derive(Clone, Copy, Default)]
@@ -173,14 +182,16 @@ struct Wide {
 }
 
 impl Wide {
-    /// `self += a·b` (checked: `None` on an overflow, which `|a| < 2^63` rules out for all but
-    /// long sums).
+    /// `self += a·b` for `a` that fits an `i64` (checked: `None` otherwise, or on an overflow of
+    /// a long sum).
     fn add_product(&mut self, a: i128, b: i128) -> Option<()> {
         const LOW: i128 = (1 << 64) - 1;
-        // b = (b >> 64)·2^64 + (b & LOW), the high part signed, the low part in [0, 2^64)
+        let a = i128::from(i64::try_from(a).ok()?);
+        // b = (b >> 64)·2^64 + (b & LOW), the high part signed, the low part in [0, 2^64): with
+        // |a| ≤ 2^63 neither product overflows
         let (bh, bl) = (b >> 64, b & LOW);
-        self.h = self.h.checked_add(a.checked_mul(bh)?)?;
-        let t = self.l.checked_add(a.checked_mul(bl)?)?;
+        self.h = self.h.checked_add(a * bh)?;
+        let t = self.l.checked_add(a * bl)?;
         self.h = self.h.checked_add(t >> 64)?;
         self.l = t & LOW;
         Some(())

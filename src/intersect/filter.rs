@@ -320,11 +320,11 @@ impl Polygon {
 /// At most this many pairs of pieces are compared by [`candidate_regions`].
 const PIECE_PAIRS: usize = 128;
 
-/// A pair of pieces both this deep (parameter intervals of `2^−8`) is left as a candidate box
+/// A pair of pieces both this deep (parameter intervals of `2^−7`) is left as a candidate box
 /// rather than halved further: near a crossing, halving goes on pair by pair until
 /// [`PIECE_PAIRS`] comparisons are spent, where the solver's Krawczyk steps ([`solve`]) converge
 /// quadratically on a box this small.
-const HANDOFF_DEPTH: u32 = 8;
+const HANDOFF_DEPTH: u32 = 7;
 
 /// Pieces are halved at most this often, so that their ends `k/2^d` are exact `f64`s.
 const MAX_DEPTH: u32 = 52;
@@ -428,6 +428,31 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
     let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else {
         return Regions::Anywhere;
     };
+    regions_of(a, b)
+}
+
+/// [`candidate_regions`] for polynomial curves with integer control points below `2^53` in
+/// magnitude (exact in `f64`): the same polygons, made without conversions.
+pub(super) fn candidate_regions_integer(a: &[[i64; 2]], b: &[[i64; 2]]) -> Regions {
+    let polygon = |points: &[[i64; 2]]| -> Option<Polygon> {
+        if points.is_empty() || points.len() > MAX_POINTS {
+            return None;
+        }
+        let mut p = Polygon { len: points.len(), points: [[0.0; 3]; MAX_POINTS], r: 0.0, rw: 0.0 };
+        for (q, c) in p.points.iter_mut().zip(points) {
+            if c.iter().any(|v| v.unsigned_abs() >= 1 << 53) {
+                return None;
+            }
+            *q = [c[0] as f64, c[1] as f64, 1.0];
+        }
+        Some(p)
+    };
+    let (Some(a), Some(b)) = (polygon(a), polygon(b)) else { return Regions::Anywhere };
+    regions_of(a, b)
+}
+
+/// The subdivision of [`candidate_regions`] on two control polygons.
+fn regions_of(a: Polygon, b: Polygon) -> Regions {
     let mut arena = vec![Piece::new(a, 0, 0), Piece::new(b, 0, 0)];
     let mut queue = std::collections::VecDeque::from([(0usize, 1usize)]);
     let mut left: Vec<(usize, usize)> = vec![];
@@ -580,7 +605,8 @@ const SOLVER_STEPS: usize = 32;
 /// Every zero of the system in the closed `boxes` (`[σ_lo, σ_hi, τ_lo, τ_hi]`, the
 /// [`Regions::Within`] ones): each box is proved empty (`F` keeps away from 0 on it, or
 /// Krawczyk's operator misses it), proved to hold exactly one zero (the operator maps it into
-/// its interior; the box is then shrunk by `x ← K(x) ∩ x`, which keeps the zero), or halved.
+/// its interior; `K(x)`, which holds that zero, is returned: [`shrink`] narrows it further
+/// where a caller needs that), or halved.
 /// The returned boxes each hold exactly one zero, at which the curves cross transversally (two
 /// boxes may hold the same zero, when it lies on an edge they share). `None` when
 /// [`SOLVER_STEPS`] examinations do not settle every box (a tangency, a zero on an edge of the
@@ -595,7 +621,7 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
                 if x[r].0 <= end && end <= x[r].1 {
                     let mut edge = *x;
                     edge[r] = Enclosure(end, end);
-                    if sys.f(edge).iter().all(|e| e.0 <= 0.0 && 0.0 <= e.1) {
+                    if may_vanish_on_edge(sys, edge, 1 - r, EDGE_PIECES) {
                         return None;
                     }
                 }
@@ -619,7 +645,7 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
                 continue; // no zero
             }
             if strictly_inside(k, x) {
-                zeros.push(shrink(sys, k));
+                zeros.push(k);
                 continue;
             }
         }
@@ -643,9 +669,31 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
     Some(zeros)
 }
 
+/// The edge test of [`solve`] halves an edge segment this often (into at most `2^4` pieces)
+/// before it gives up.
+const EDGE_PIECES: u32 = 4;
+
+/// `F` may vanish on the segment `edge` (a box whose side `1 − free` is a point): its
+/// enclosures over the segment, halved up to `depth` times where they hold 0, do not rule it
+/// out.
+fn may_vanish_on_edge(sys: &System, edge: Box2, free: usize, depth: u32) -> bool {
+    if sys.f(edge).iter().any(|e| e.0 > 0.0 || e.1 < 0.0) {
+        return false;
+    }
+    let (lo, hi) = edge[free].ends();
+    let m = lo + (hi - lo) / 2.0;
+    if depth == 0 || !(lo < m && m < hi) {
+        return true;
+    }
+    let (mut a, mut b) = (edge, edge);
+    a[free] = Enclosure(lo, m);
+    b[free] = Enclosure(m, hi);
+    may_vanish_on_edge(sys, a, free, depth - 1) || may_vanish_on_edge(sys, b, free, depth - 1)
+}
+
 /// A box holding exactly one zero, shrunk by `x ← K(x) ∩ x` (every zero of `x` lies in `K(x)`)
 /// while that gains.
-fn shrink(sys: &System, mut x: Box2) -> Box2 {
+pub(super) fn shrink(sys: &System, mut x: Box2) -> Box2 {
     for _ in 0..8 {
         let Some(k) = sys.krawczyk(x) else { break };
         let y: Box2 = std::array::from_fn(|r| x[r].meet(k[r]));

@@ -173,11 +173,12 @@ impl FixedSystem {
         };
         let bounds = [inner(z[0])?, inner(z[1])?];
         let mut m = [0, 1].map(|k| ((z[k].0 + z[k].1) / 2.0 * scale) as i128);
-        for _ in 0..3 {
+        for _ in 0..6 {
             let y = self.newton_matrix(m)?;
             let f = self.f(m).map(to_f64);
             let step: [f64; 2] = std::array::from_fn(|r| y[r][0] * f[0] + y[r][1] * f[1]);
-            if !step.iter().all(|s| s.is_finite() && s.abs() < 1e-6) {
+            // a step out of the unit square is no step towards the box's zero
+            if !step.iter().all(|s| s.is_finite() && s.abs() < 1.0) {
                 return None;
             }
             for k in 0..2 {

@@ -45,13 +45,24 @@ pub(super) fn forms_from_homogeneous(rows: &[[BigRational; 3]]) -> [Vec<BigInt>;
 /// (the scale is then 1): the same forms, big integers made once at the end. `None` otherwise.
 fn integer_forms_small(rows: &[[BigRational; 3]]) -> Option<[Vec<BigInt>; 3]> {
     use num_traits::ToPrimitive;
+    let word = |x: &BigRational| if x.is_integer() { x.numer().to_i64() } else { None };
+    let words: Vec<[i64; 3]> =
+        rows.iter().map(|r| Some([word(&r[0])?, word(&r[1])?, word(&r[2])?])).collect::<Option<_>>()?;
+    forms_of_words(&words)
+}
+
+/// `(X, Y, W)` of the polynomial curve with integer control points `points` (weights 1): as
+/// [`forms_from_homogeneous`] gives them for those points. `None` on an overflow of `i128`.
+pub(super) fn forms_from_integer_points(points: &[[i64; 2]]) -> Option<[Vec<BigInt>; 3]> {
+    forms_of_words(&points.iter().map(|p| [p[0], p[1], 1]).collect::<Vec<_>>())
+}
+
+/// The forms of homogeneous integer control points: `c_k = C(n,k) Δ^k b_0` in checked `i128`.
+fn forms_of_words(rows: &[[i64; 3]]) -> Option<[Vec<BigInt>; 3]> {
     let n = rows.len().checked_sub(1)?;
     let mut out: [Vec<BigInt>; 3] = Default::default();
     for (k, form) in out.iter_mut().enumerate() {
-        let mut diff: Vec<i128> = rows
-            .iter()
-            .map(|r| if r[k].is_integer() { r[k].numer().to_i64().map(i128::from) } else { None })
-            .collect::<Option<_>>()?;
+        let mut diff: Vec<i128> = rows.iter().map(|r| i128::from(r[k])).collect();
         let mut c = Vec::with_capacity(n + 1);
         let mut binomial: i128 = 1; // C(n, j)
         for j in 0..=n {

@@ -59,6 +59,9 @@ fn gcd(a: u128, b: u128) -> u128 {
         if b == 0 {
             return a << shift;
         }
+        if (a | b) >> 64 == 0 {
+            return u128::from(gcd64(a as u64, b as u64)) << shift;
+        }
         if b >> 64 == 0 && a >> 64 == 0 {
             return (gcd64(a as u64, b as u64) as u128) << shift;
         }
