@@ -112,7 +112,8 @@ pub(super) fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>;
 /// expanded by cofactors).
 pub(super) const MAX_BEZOUT_ORDER: usize = 4;
 
-/// The polynomials `f(x, u)` and `g(x, u)` in `u` (coefficients in `Z[x]`, lowest first, of
+/// The polynomials `f(x, u)` and `g(x, u)` in `u` (coefficients in `Z[x]` given as enclosed
+/// [`Coeffs`], lowest first, of
 /// formal degree `m ≤` [`MAX_BEZOUT_ORDER`]) provably have no common root `u`, complex ones
 /// included, at the real number `x` in the `f64` interval `(lo, hi)` (a tight one: [`outward`]
 /// of a copy narrowed by [`RealAlgebraic::narrowed_with_f64`], say): the `m × m` Bézout matrix
@@ -121,13 +122,13 @@ pub(super) const MAX_BEZOUT_ORDER: usize = 4;
 /// a determinant that keeps away from 0. A common root `u₀` would make the row vector
 /// `(u₀^i)` a left null vector of `B` (the left side vanishes for every `v`), so `det B = 0`.
 /// False when that is not shown (the exact route decides then).
-pub(super) fn no_common_root(f: &[Vec<BigInt>], g: &[Vec<BigInt>], (lo, hi): (f64, f64)) -> bool {
+pub(super) fn no_common_root(f: &[Coeffs], g: &[Coeffs], (lo, hi): (f64, f64)) -> bool {
     let m = f.len().max(g.len()).saturating_sub(1);
     if m == 0 || m > MAX_BEZOUT_ORDER {
         return false;
     }
     let xe = Enclosure(lo, hi);
-    let at = |p: &[Vec<BigInt>]| -> Vec<Enclosure> { p.iter().map(|c| enclose(c, xe)).collect() };
+    let at = |p: &[Coeffs]| -> Vec<Enclosure> { p.iter().map(|c| c.at(xe)).collect() };
     let Some(bz) = super::elimination::bezoutian(&at(f), &at(g), m) else { return false };
     let d = det(&bz);
     d.0 > 0.0 || d.1 < 0.0
@@ -237,24 +238,33 @@ fn midpoint_error(m: f64) -> f64 {
 /// weight within `rw` (0 while the weights are exactly 1: a polynomial curve, whose halves'
 /// weights stay exactly 1). Halving in plain arithmetic and widening once by a proved bound
 /// costs far less than interval arithmetic at every step.
+/// `N` bounds `len`: the subdivision of two curves of degree ≤ 3 runs on `Polygon<4>`, whose
+/// copies are a third of the general one's.
 #[derive(Clone, Copy)]
-struct Polygon {
+struct Polygon<const N: usize = MAX_POINTS> {
     len: usize,
-    points: [[f64; 3]; MAX_POINTS],
+    points: [[f64; 3]; N],
     r: f64,
     rw: f64,
 }
 
-impl Polygon {
+impl<const N: usize> Polygon<N> {
     fn points(&self) -> &[[f64; 3]] {
         &self.points[..self.len]
+    }
+
+    /// The same polygon with room for `M` points (`None` when it has more).
+    fn resized<const M: usize>(&self) -> Option<Polygon<M>> {
+        let mut points = [[0.0; 3]; M];
+        points.get_mut(..self.len)?.copy_from_slice(self.points());
+        Some(Polygon { len: self.len, points, r: self.r, rw: self.rw })
     }
 
     /// The two halves at `t = 1/2` (de Casteljau in `f64`). Each level's midpoints add at most
     /// [`midpoint_error`] of the largest coordinate to the error (the exact midpoints of the
     /// exact points lie within the mean of the two radii, and the midpoints stay within the
     /// largest coordinate), so the radii grow by `levels × midpoint_error`.
-    fn halves(&self) -> (Polygon, Polygon) {
+    fn halves(&self) -> (Self, Self) {
         let (mut left, mut right) = (*self, *self);
         let mut row = self.points;
         let n = self.len;
@@ -331,16 +341,16 @@ const MAX_DEPTH: u32 = 52;
 
 /// A parameter interval `[k/2^d, (k+1)/2^d]` of a curve, its control polygon and bounding box,
 /// and its halves once made (indices into the same arena).
-struct Piece {
-    polygon: Polygon,
+struct Piece<const N: usize> {
+    polygon: Polygon<N>,
     bbox: Option<[Enclosure; 2]>,
     k: u64,
     d: u32,
     halves: Option<(usize, usize)>,
 }
 
-impl Piece {
-    fn new(polygon: Polygon, k: u64, d: u32) -> Self {
+impl<const N: usize> Piece<N> {
+    fn new(polygon: Polygon<N>, k: u64, d: u32) -> Self {
         Piece { bbox: polygon.bounding_box(), polygon, k, d, halves: None }
     }
 
@@ -356,7 +366,7 @@ impl Piece {
 }
 
 /// The halves of `arena[i]`, made on first use.
-fn halves_of(arena: &mut Vec<Piece>, i: usize) -> (usize, usize) {
+fn halves_of<const N: usize>(arena: &mut Vec<Piece<N>>, i: usize) -> (usize, usize) {
     if let Some(h) = arena[i].halves {
         return h;
     }
@@ -451,8 +461,17 @@ pub(super) fn candidate_regions_integer(a: &[[i64; 2]], b: &[[i64; 2]]) -> Regio
     regions_of(a, b)
 }
 
-/// The subdivision of [`candidate_regions`] on two control polygons.
+/// The subdivision of [`candidate_regions`] on two control polygons (on `Polygon<4>` when both
+/// have at most 4 points).
 fn regions_of(a: Polygon, b: Polygon) -> Regions {
+    match (a.resized::<4>(), b.resized::<4>()) {
+        (Some(a), Some(b)) => subdivide(a, b),
+        _ => subdivide(a, b),
+    }
+}
+
+/// [`regions_of`] on polygons of room `N`.
+fn subdivide<const N: usize>(a: Polygon<N>, b: Polygon<N>) -> Regions {
     let mut arena = vec![Piece::new(a, 0, 0), Piece::new(b, 0, 0)];
     let mut queue = std::collections::VecDeque::from([(0usize, 1usize)]);
     let mut left: Vec<(usize, usize)> = vec![];
@@ -498,6 +517,15 @@ pub(super) struct Coeffs(Vec<Enclosure>);
 impl Coeffs {
     pub(super) fn new(p: &[BigInt]) -> Self {
         Coeffs(p.iter().map(Enclosure::of_integer).collect())
+    }
+
+    /// The enclosed coefficients of an integer polynomial given in words (exact below `2^53`).
+    pub(super) fn from_words(p: &[i128]) -> Self {
+        let enclose = |v: &i128| {
+            let f = *v as f64; // nearest
+            if v.unsigned_abs() < 1 << 53 { Enclosure(f, f) } else { Enclosure(f.next_down(), f.next_up()) }
+        };
+        Coeffs(p.iter().map(enclose).collect())
     }
 
     /// The enclosed coefficients of `p′` (`k·c_k`), without forming it.

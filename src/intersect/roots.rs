@@ -4,12 +4,12 @@
 //! rational when it is, proved irrational cheaply when it is not.
 
 use super::Domain;
-use super::elimination::divided_difference;
+use super::elimination::divided_difference_enclosed;
 use super::filter;
 use super::forms::{is_point, point_at, point_at_rational, rational_point, to_rational};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
-use crate::poly::algebraic::{RealAlgebraic, zv};
+use crate::poly::algebraic::RealAlgebraic;
 use crate::poly::polynomial::{derivative, trim};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -75,7 +75,7 @@ pub(super) struct Side<'a> {
     bound: std::cell::OnceCell<usize>,
     /// The divided differences `D_X`, `D_Y` of [`Side::irrational_at`] ([`divided_difference`]),
     /// computed on first use.
-    partner: std::cell::OnceCell<[Vec<zv::P>; 2]>,
+    partner: std::cell::OnceCell<[Vec<filter::Coeffs>; 2]>,
 }
 
 impl<'a> Side<'a> {
@@ -105,7 +105,8 @@ impl<'a> Side<'a> {
         }
         if self.degree <= filter::MAX_BEZOUT_ORDER + 1 {
             let [dx, dy] = self.partner.get_or_init(|| {
-                [divided_difference(&self.f[0], &self.f[2]), divided_difference(&self.f[1], &self.f[2])]
+                let dd = divided_difference_enclosed;
+                [dd(&self.f[0], &self.f[2]), dd(&self.f[1], &self.f[2])]
             });
             if filter::no_common_root(dx, dy, narrow) {
                 return true;
@@ -165,8 +166,8 @@ mod tests {
         let sqrt2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
         let narrow = filter::outward(&sqrt2.narrowed_with_f64().0);
         assert!(!filter::no_common_root(
-            &divided_difference(&nodal[0], &nodal[2]),
-            &divided_difference(&nodal[1], &nodal[2]),
+            &divided_difference_enclosed(&nodal[0], &nodal[2]),
+            &divided_difference_enclosed(&nodal[1], &nodal[2]),
             narrow
         ));
         assert!(!side.irrational_at(&sqrt2, narrow));

@@ -212,14 +212,31 @@ pub(crate) fn square_free_small(p: &[BigInt]) -> Option<Vec<BigInt>> {
         .try_fold(0u128, |g, x| if g == 1 { None } else { Some(crate::num::word::gcd_u128(g, x.unsigned_abs())) });
     let content = i128::try_from(content.unwrap_or(1)).ok()?;
     let content = if last < 0 { -content } else { content };
-    let c: Vec<i128> = c.into_iter().map(|x| x / content).collect();
+    let c: Vec<i128> = if content == 1 { c } else { c.into_iter().map(|x| x / content).collect() };
     let big = || c.iter().map(|&x| BigInt::from(x)).collect();
     if c.len() <= 2 {
         return Some(big());
     }
     let dc: Vec<i128> = c.iter().enumerate().skip(1).map(|(k, x)| x.checked_mul(k as i128)).collect::<Option<_>>()?;
-    let reduce = |v: &[i128], q: u64| -> Vec<u64> { v.iter().map(|&x| crate::num::word::residue_i128(x, q)).collect() };
+    let reduce = |v: &[i128], q: u64| -> Vec<u64> {
+        let residue = |x: i128| if q == MERSENNE { residue_mersenne(x) } else { crate::num::word::residue_i128(x, q) };
+        v.iter().map(|&x| residue(x)).collect()
+    };
     MODULAR_PRIMES.iter().any(|&q| coprime_residues(reduce(&c, q), reduce(&dc, q), q)).then(big)
+}
+
+/// `x mod (2^31 − 1)` in `[0, 2^31 − 1)`, by folding 31-bit digits (`2^31 ≡ 1`): no division.
+fn residue_mersenne(x: i128) -> u64 {
+    let mut m = x.unsigned_abs();
+    let mut r: u64 = 0;
+    while m != 0 {
+        r += (m as u64) & MERSENNE;
+        m >>= 31;
+    }
+    // at most five digits: r < 5·2^31
+    let r = (r & MERSENNE) + (r >> 31);
+    let r = if r >= MERSENNE { r - MERSENNE } else { r };
+    if x < 0 && r != 0 { MERSENNE - r } else { r }
 }
 
 /// `true` when `gcd(a mod q, b mod q)` is a non-zero constant and `q ∤ lc(a)`: then `a` and
@@ -344,6 +361,52 @@ pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<
         Ordering::Greater => {
             let r = disc / &(K::from_i64(4) * c2 * c2);
             center_plus_minus_sqrt(&center, &r).into_iter().map(|x| (x, 1)).collect()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The word route of the square-free part ([`square_free_small`]) against
+    /// [`square_free_integer`] on random polynomials with contents, repeated factors and
+    /// coefficients near `2^100`; and the Mersenne residues against big-integer remainders.
+    #[test]
+    fn square_free_in_words_matches_big_integers() {
+        let mut next = crate::num::symmetric(0x5F5F_0DD5_EED5_0001);
+        let mut decided = 0;
+        for round in 0..300 {
+            let n = 1 + round % 6;
+            let scale = BigInt::from(1) << (round % 3 * 45) as u32;
+            let mut p: Vec<BigInt> = (0..=n).map(|_| BigInt::from(next(1000)) * &scale).collect();
+            if round % 4 == 0 {
+                // a repeated factor (t + c)²
+                let c = BigInt::from(next(9));
+                for _ in 0..2 {
+                    let mut q = vec![BigInt::from(0); p.len() + 1];
+                    for (i, x) in p.iter().enumerate() {
+                        q[i] += x * &c;
+                        q[i + 1] += x;
+                    }
+                    p = q;
+                }
+            }
+            if p.iter().all(num_traits::Zero::is_zero) {
+                continue;
+            }
+            if let Some(sf) = square_free_small(&p) {
+                assert_eq!(sf, square_free_integer(p.clone()), "{p:?}");
+                decided += 1;
+            }
+        }
+        assert!(decided > 150, "{decided} decided in words");
+        let mut word = crate::num::xorshift(0x0A0B_0C0D_0E0F_1011);
+        for k in 0..500 {
+            let v = ((u128::from(word()) << 64 | u128::from(word())) >> (k % 127)) as i128;
+            for x in [v, -v, i128::MIN, i128::MAX] {
+                assert_eq!(residue_mersenne(x), crate::num::word::residue(&BigInt::from(x), MERSENNE), "{x}");
+            }
         }
     }
 }
