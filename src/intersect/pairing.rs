@@ -216,7 +216,8 @@ mod tests {
         let mut next = crate::num::symmetric(0x1D7E_6E25_0F0F_1A7E);
         let rows =
             |v: &[[i64; 2]]| -> Vec<[BigRational; 3]> { v.iter().map(|p| [rat(p[0]), rat(p[1]), rat(1)]).collect() };
-        let mut pairs: Vec<(Vec<[i64; 2]>, Vec<[i64; 2]>)> = (0..60)
+        type Points = Vec<[i64; 2]>;
+        let mut pairs: Vec<(Points, Points)> = (0..60)
             .map(|k| {
                 let mut curve = |n: usize| (0..=n).map(|_| [next(2048), next(2048)]).collect::<Vec<_>>();
                 (curve([3, 2, 1][k % 3]), curve([3, 3, 2, 1][k % 4]))
