@@ -183,12 +183,17 @@ impl FixedSystem {
             }
             for k in 0..2 {
                 m[k] -= (step[k] * scale) as i128;
+                // evaluations need 0 ≤ m ≤ 1 (their error bound, and no overflow)
+                if !(0..=ONE).contains(&m[k]) {
+                    return None;
+                }
             }
             if step.iter().all(|s| s.abs() < f64::powi(2.0, -96)) {
                 break;
             }
         }
-        let err_f = self.p[0].error() + self.p[2].error();
+        // F's components' evaluation errors: X_A and X_B's, Y_A and Y_B's
+        let err_f = [self.p[0].error() + self.p[2].error(), self.p[1].error() + self.p[3].error()];
         for bits in [88, 78, 68] {
             let r = 1i128 << (FRAC - bits);
             if (0..2).any(|k| m[k] - r < bounds[k].0 || m[k] + r > bounds[k].1) {
@@ -205,9 +210,10 @@ impl FixedSystem {
     /// `K − m = −Y·F(m) + (I − Y·J(x))·[−r, r]` inside `(−r, r)` in both coordinates, with
     /// `F(m)` and `J(x)` enclosed from fixed-point values and proved error bounds (`J` over the
     /// box: its value at `m` and the derivative bound times `r`).
-    fn krawczyk_inside(&self, m: [i128; 2], r: i128, err_f: i128) -> bool {
+    fn krawczyk_inside(&self, m: [i128; 2], r: i128, err_f: [i128; 2]) -> bool {
         let Some(y) = self.newton_matrix(m) else { return false };
-        let f = self.f(m).map(|v| enclose(v, err_f));
+        let f = self.f(m);
+        let f = [enclose(f[0], err_f[0]), enclose(f[1], err_f[1])];
         let jm = self.jacobian(m);
         // row i, column k: d[i] (σ, k = 0) or −d[2 + i] (τ, k = 1)
         let j: [[Enclosure; 2]; 2] = std::array::from_fn(|i| {
@@ -292,8 +298,17 @@ mod tests {
     fn refined_crossings_round_as_the_exact_route() {
         let mut next = crate::num::symmetric(0x5EED_F1AE_D0C5_0001);
         let (mut crossings, mut refined) = (0, 0);
-        for _ in 0..60 {
-            let (a, b) = (cubic(std::array::from_fn(|_| next(2048))), cubic(std::array::from_fn(|_| next(2048))));
+        for round in 0..90 {
+            let (mut va, vb): ([i64; 8], [i64; 8]) =
+                (std::array::from_fn(|_| next(2048)), std::array::from_fn(|_| next(2048)));
+            if round % 3 == 0 {
+                // x linear in the parameter: forms of different lengths for X and Y
+                let (x0, dx) = (next(1000), next(300));
+                for k in 0..4 {
+                    va[2 * k] = x0 + dx * k as i64;
+                }
+            }
+            let (a, b) = (cubic(va), cubic(vb));
             let (fa, fb) = (integer_forms(&a), integer_forms(&b));
             let exact = pairing::intersect_forms(&fa, &fb, Domain::Unit, &Regions::Anywhere).unwrap();
             let sys = FixedSystem::new(&fa, &fb).expect("small integer cubics");
