@@ -46,7 +46,12 @@ pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
         let row = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
         Some([row(&f[0])?, row(&f[1])?, row(&f[2])?])
     };
-    let matrix: Vec<Vec<zv::P>> = match small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m)) {
+    // curves of degree ≤ 3 with word-sized coefficients: fixed arrays, no allocation
+    if let Some(d) = eliminate_in_words(fa, fb, m) {
+        return d;
+    }
+    let small_matrix = small(fa).zip(small(fb)).and_then(|(a, b)| implicit_matrix(&a, &b, m));
+    let matrix: Vec<Vec<zv::P>> = match small_matrix {
         Some(mm) => mm
             .into_iter()
             .map(|row| row.into_iter().map(|e| zv::trim(e.into_iter().map(BigInt::from).collect())).collect())
@@ -58,6 +63,146 @@ pub(super) fn eliminate(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3]) -> zv::P {
             .collect(),
     };
     zv::det(matrix)
+}
+
+/// A polynomial of degree ≤ 3 in fixed-size words (lowest degree first).
+type Words = [i128; WORDS];
+
+/// The coefficients of a polynomial of degree ≤ 3.
+const WORDS: usize = 4;
+
+/// [`eliminate`]'s implicit-matrix determinant for curves of degree ≤ 3 (order `m ≤ 3`) whose
+/// forms' coefficients fit an `i64`, in fixed arrays of words: the Bézoutians and entries in
+/// checked `i128`, the determinant by [`words_det`]; as [`zv::det`] gives it (trimmed). `None`
+/// on an overflow or a larger degree (the general route decides then).
+fn eliminate_in_words(fa: &[Vec<BigInt>; 3], fb: &[Vec<BigInt>; 3], m: usize) -> Option<zv::P> {
+    use num_traits::ToPrimitive;
+    if m > 3 {
+        return None;
+    }
+    let words = |p: &[BigInt]| -> Option<Words> {
+        let mut w = [0; WORDS];
+        for (k, c) in p.iter().enumerate() {
+            *w.get_mut(k)? = i128::from(c.to_i64()?);
+        }
+        Some(w)
+    };
+    let (a, b) = ([words(&fa[0])?, words(&fa[1])?, words(&fa[2])?], [words(&fb[0])?, words(&fb[1])?, words(&fb[2])?]);
+    // the Bézoutian of formal degree m, as [`bezoutian`]
+    let bz = |p: &Words, q: &Words| -> Option<[Words; WORDS]> {
+        let n = m + 1;
+        let mut out = [[0i128; WORDS]; WORDS];
+        for j in 0..n {
+            for i in (1..n).rev() {
+                let prev = if j > 0 { out[i][j - 1] } else { 0 };
+                let pij = mul64(p[i], q[j])?.checked_sub(mul64(p[j], q[i])?)?;
+                out[i - 1][j] = pij.checked_add(prev)?;
+            }
+        }
+        Some(out)
+    };
+    let (b1, b2, b3) = (bz(&b[2], &b[1])?, bz(&b[0], &b[2])?, bz(&b[0], &b[1])?);
+    let mut e = [[[0i128; WORDS]; 3]; 3];
+    for i in 0..m {
+        for j in 0..m {
+            for k in 0..WORDS {
+                let w = mul64(a[2][k], b3[i][j])?;
+                let x = mul64(a[0][k], b1[i][j])?;
+                let y = mul64(a[1][k], b2[i][j])?;
+                e[i][j][k] = w.checked_sub(x)?.checked_sub(y)?;
+            }
+        }
+    }
+    words_det(&e, m)
+}
+
+/// The determinant of the leading `m × m` block (`m ≤ 3`) of a matrix over `Z[s]` with entries
+/// of degree ≤ 3 in words (as [`zv::det`] gives it: trimmed): the minors in checked `i128`, the
+/// last products summed in [`Wide`] (up to ~2^190). `None` on an overflow.
+fn words_det(e: &[[Words; 3]; 3], m: usize) -> Option<zv::P> {
+    // a·b, degree ≤ 6, in checked i128
+    let product = |a: &Words, b: &Words| -> Option<[i128; 2 * WORDS - 1]> {
+        let mut out = [0i128; 2 * WORDS - 1];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] = out[i + j].checked_add(mul64(*x, *y)?)?;
+            }
+        }
+        Some(out)
+    };
+    let minor = |(j, l): (usize, usize)| -> Option<[i128; 2 * WORDS - 1]> {
+        let (p, q) = (product(&e[1][j], &e[2][l])?, product(&e[1][l], &e[2][j])?);
+        let mut out = [0i128; 2 * WORDS - 1];
+        for k in 0..out.len() {
+            out[k] = p[k].checked_sub(q[k])?;
+        }
+        Some(out)
+    };
+    // Σ sign·a_j·b_j in wide sums
+    let mut out = [Wide::default(); 3 * WORDS - 2];
+    let mut wide = |sign: i128, a: &Words, b: &[i128]| -> Option<()> {
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j].add_product(if sign < 0 { x.checked_neg()? } else { *x }, *y)?;
+            }
+        }
+        Some(())
+    };
+    match m {
+        1 => wide(1, &e[0][0], &[1])?,
+        2 => {
+            wide(1, &e[0][0], &e[1][1])?;
+            wide(-1, &e[0][1], &e[1][0])?;
+        }
+        3 => {
+            wide(1, &e[0][0], &minor((1, 2))?)?;
+            wide(-1, &e[0][1], &minor((0, 2))?)?;
+            wide(1, &e[0][2], &minor((0, 1))?)?;
+        }
+        _ => return None,
+    }
+    Some(zv::trim(out.into_iter().map(Wide::to_bigint).collect()))
+}
+
+/// `a·b` checked, by one machine multiplication when both fit an `i64` (`i128::checked_mul`
+/// is a library call).
+fn mul64(a: i128, b: i128) -> Option<i128> {
+    match (i64::try_from(a), i64::try_from(b)) {
+        (Ok(x), Ok(y)) => Some(i128::from(x) * i128::from(y)),
+        _ => a.checked_mul(b),
+    }
+}
+
+/// A signed integer `h·2^64 + l` (`0 ≤ l < 2^64`), for sums of products of an `i64`-sized
+/// factor and an `i128` one (up to ~2^190) without allocating.
+#[derive(Clone, Copy, Default)]
+struct Wide {
+    h: i128,
+    l: i128,
+}
+
+impl Wide {
+    /// `self += a·b` for `a` that fits an `i64` (checked: `None` otherwise, or on an overflow of
+    /// a long sum).
+    fn add_product(&mut self, a: i128, b: i128) -> Option<()> {
+        const LOW: i128 = (1 << 64) - 1;
+        let a = i128::from(i64::try_from(a).ok()?);
+        // b = (b >> 64)·2^64 + (b & LOW), the high part signed, the low part in [0, 2^64): with
+        // |a| ≤ 2^63 neither product overflows
+        let (bh, bl) = (b >> 64, b & LOW);
+        self.h = self.h.checked_add(a * bh)?;
+        let t = self.l.checked_add(a * bl)?;
+        self.h = self.h.checked_add(t >> 64)?;
+        self.l = t & LOW;
+        Some(())
+    }
+
+    fn to_bigint(self) -> BigInt {
+        match self.h.checked_mul(1 << 64).and_then(|h| h.checked_add(self.l)) {
+            Some(v) => BigInt::from(v),
+            None => (BigInt::from(self.h) << 64u32) + BigInt::from(self.l),
+        }
+    }
 }
 
 /// [`eliminate`]'s implicit matrix `M(A(s))` of order `m`, entries polynomials in `s`:
@@ -115,11 +260,42 @@ pub(super) fn bezoutian<T: CheckedRing>(p: &[T], q: &[T], m: usize) -> Option<Ve
     Some(out)
 }
 
+/// [`divided_difference`] with each coefficient (a polynomial in `s`) enclosed in `f64`, for
+/// [`no_common_root`](super::filter::no_common_root): from words when the coefficients allow
+/// (no big integers), else from [`divided_difference`].
+pub(super) fn divided_difference_enclosed(f: &[BigInt], w: &[BigInt]) -> Vec<super::filter::Coeffs> {
+    use super::filter::Coeffs;
+    let n = f.len().max(w.len());
+    let words = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
+    let Some(q) = words(f).zip(words(w)).and_then(|(f, w)| bezoutian(&f, &w, n)) else {
+        return divided_difference(f, w).iter().map(|c| Coeffs::new(c)).collect();
+    };
+    // as divided_difference: column j trimmed, empty columns at the end dropped
+    let column = |j: usize| -> Vec<i128> {
+        let mut c: Vec<i128> = (0..n).map(|i| q[i][j]).collect();
+        while c.last() == Some(&0) {
+            c.pop();
+        }
+        c
+    };
+    let mut out: Vec<Vec<i128>> = (0..n).map(column).collect();
+    while out.last().is_some_and(Vec::is_empty) {
+        out.pop();
+    }
+    out.iter().map(|c| Coeffs::from_words(c)).collect()
+}
+
 /// `(F(s)W(t) − F(t)W(s)) / (s − t)` as a polynomial in `t` with coefficients in `Z[s]`.
 pub(super) fn divided_difference(f: &[BigInt], w: &[BigInt]) -> Vec<zv::P> {
     // Q[i][j], the coefficient of s^i t^j: the Bézoutian of f and w in formal degree n
     let n = f.len().max(w.len());
-    let q = bezoutian(f, w, n).expect("BigInt arithmetic does not overflow");
+    // in checked i128 when the coefficients allow, else in BigInt
+    let words = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
+    let small = words(f).zip(words(w)).and_then(|(f, w)| bezoutian(&f, &w, n));
+    let q: Vec<Vec<BigInt>> = match small {
+        Some(q) => q.into_iter().map(|row| row.into_iter().map(BigInt::from).collect()).collect(),
+        None => bezoutian(f, w, n).expect("BigInt arithmetic does not overflow"),
+    };
     let mut out: Vec<zv::P> = (0..n).map(|j| zv::trim((0..n).map(|i| q[i][j].clone()).collect())).collect();
     while out.last().is_some_and(|c| c.is_empty()) {
         out.pop();
@@ -136,6 +312,32 @@ mod tests {
     use crate::rational::RationalBezier;
     use num_bigint::BigInt;
     use num_rational::BigRational;
+
+    /// The word-sized determinant against [`zv::det`], on random matrices of order 1 to 3 with
+    /// entries of degree ≤ 3 up to 2^62 (wide sums past 2^127) and small ones.
+    #[test]
+    fn words_determinant_matches_bareiss() {
+        let mut word = crate::num::xorshift(0x0B5E_55ED_D0D0_CAFE);
+        for round in 0..300 {
+            let n = 1 + round % 3;
+            let bits = [62, 40, 8][round % 3];
+            let mut e = [[[0i128; WORDS]; 3]; 3];
+            for entry in e.iter_mut().flatten().take(9) {
+                let len = 1 + (word() % 4) as usize;
+                for c in entry.iter_mut().take(len) {
+                    *c = (word() as i64 >> (64 - bits)) as i128;
+                }
+            }
+            let big: Vec<Vec<zv::P>> = (0..n)
+                .map(|i| (0..n).map(|j| zv::trim(e[i][j].iter().map(|&c| BigInt::from(c)).collect())).collect())
+                .collect();
+            let expected = zv::det(big);
+            match words_det(&e, n) {
+                Some(d) => assert_eq!(d, expected, "{e:?}"),
+                None => assert!(bits == 62 && n == 3, "declined {e:?}"),
+            }
+        }
+    }
 
     /// The implicit-matrix elimination against the Sylvester resultant: equal up to a constant
     /// and the factor `W_A^m`, on random polynomial and rational cubics, quadratics and lines.

@@ -32,10 +32,14 @@ impl Enclosure {
         let f = num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN);
         Enclosure(f.next_down().next_down(), f.next_up().next_up())
     }
-    fn add(self, o: Self) -> Self {
+    /// `[lo, hi]` (the caller knows it holds the value).
+    pub(super) fn new(lo: f64, hi: f64) -> Self {
+        Enclosure(lo, hi)
+    }
+    pub(super) fn add(self, o: Self) -> Self {
         Enclosure((self.0 + o.0).next_down(), (self.1 + o.1).next_up())
     }
-    fn mul(self, o: Self) -> Self {
+    pub(super) fn mul(self, o: Self) -> Self {
         let p = [self.0 * o.0, self.0 * o.1, self.1 * o.0, self.1 * o.1];
         if p.iter().any(|x| x.is_nan()) {
             return Enclosure(f64::NAN, f64::NAN);
@@ -57,7 +61,7 @@ impl Enclosure {
         let hi = q.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Enclosure(lo.next_down(), hi.next_up())
     }
-    fn neg(self) -> Self {
+    pub(super) fn neg(self) -> Self {
         Enclosure(-self.1, -self.0)
     }
     /// Provably no common point (false whenever an end is `NaN`).
@@ -108,21 +112,23 @@ pub(super) fn apart(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic, fb: &[Vec<BigInt>;
 /// expanded by cofactors).
 pub(super) const MAX_BEZOUT_ORDER: usize = 4;
 
-/// The polynomials `f(x, u)` and `g(x, u)` in `u` (coefficients in `Z[x]`, lowest first, of
+/// The polynomials `f(x, u)` and `g(x, u)` in `u` (coefficients in `Z[x]` given as enclosed
+/// [`Coeffs`], lowest first, of
 /// formal degree `m ≤` [`MAX_BEZOUT_ORDER`]) provably have no common root `u`, complex ones
-/// included, at the real number `x` (pass a copy narrowed by
-/// [`RealAlgebraic::narrowed_with_f64`]): the `m × m` Bézout matrix `B` of `f(x, ·)` and
-/// `g(x, ·)` — `f(u)g(v) − f(v)g(u) = (u − v)·Σ B_ij u^i v^j` — enclosed over `x`'s interval, has
+/// included, at the real number `x` in the `f64` interval `(lo, hi)` (a tight one: [`outward`]
+/// of a copy narrowed by [`RealAlgebraic::narrowed_with_f64`], say): the `m × m` Bézout matrix
+/// `B` of `f(x, ·)` and `g(x, ·)` — `f(u)g(v) − f(v)g(u) = (u − v)·Σ B_ij u^i v^j` — enclosed
+/// over that interval, has
 /// a determinant that keeps away from 0. A common root `u₀` would make the row vector
 /// `(u₀^i)` a left null vector of `B` (the left side vanishes for every `v`), so `det B = 0`.
 /// False when that is not shown (the exact route decides then).
-pub(super) fn no_common_root(f: &[Vec<BigInt>], g: &[Vec<BigInt>], x: &RealAlgebraic) -> bool {
+pub(super) fn no_common_root(f: &[Coeffs], g: &[Coeffs], (lo, hi): (f64, f64)) -> bool {
     let m = f.len().max(g.len()).saturating_sub(1);
     if m == 0 || m > MAX_BEZOUT_ORDER {
         return false;
     }
-    let xe = Enclosure::of_number(x);
-    let at = |p: &[Vec<BigInt>]| -> Vec<Enclosure> { p.iter().map(|c| enclose(c, xe)).collect() };
+    let xe = Enclosure(lo, hi);
+    let at = |p: &[Coeffs]| -> Vec<Enclosure> { p.iter().map(|c| c.at(xe)).collect() };
     let Some(bz) = super::elimination::bezoutian(&at(f), &at(g), m) else { return false };
     let d = det(&bz);
     d.0 > 0.0 || d.1 < 0.0
@@ -232,24 +238,33 @@ fn midpoint_error(m: f64) -> f64 {
 /// weight within `rw` (0 while the weights are exactly 1: a polynomial curve, whose halves'
 /// weights stay exactly 1). Halving in plain arithmetic and widening once by a proved bound
 /// costs far less than interval arithmetic at every step.
+/// `N` bounds `len`: the subdivision of two curves of degree ≤ 3 runs on `Polygon<4>`, whose
+/// copies are a third of the general one's.
 #[derive(Clone, Copy)]
-struct Polygon {
+struct Polygon<const N: usize = MAX_POINTS> {
     len: usize,
-    points: [[f64; 3]; MAX_POINTS],
+    points: [[f64; 3]; N],
     r: f64,
     rw: f64,
 }
 
-impl Polygon {
+impl<const N: usize> Polygon<N> {
     fn points(&self) -> &[[f64; 3]] {
         &self.points[..self.len]
+    }
+
+    /// The same polygon with room for `M` points (`None` when it has more).
+    fn resized<const M: usize>(&self) -> Option<Polygon<M>> {
+        let mut points = [[0.0; 3]; M];
+        points.get_mut(..self.len)?.copy_from_slice(self.points());
+        Some(Polygon { len: self.len, points, r: self.r, rw: self.rw })
     }
 
     /// The two halves at `t = 1/2` (de Casteljau in `f64`). Each level's midpoints add at most
     /// [`midpoint_error`] of the largest coordinate to the error (the exact midpoints of the
     /// exact points lie within the mean of the two radii, and the midpoints stay within the
     /// largest coordinate), so the radii grow by `levels × midpoint_error`.
-    fn halves(&self) -> (Polygon, Polygon) {
+    fn halves(&self) -> (Self, Self) {
         let (mut left, mut right) = (*self, *self);
         let mut row = self.points;
         let n = self.len;
@@ -279,6 +294,19 @@ impl Polygon {
     /// included: it holds the curve when every weight is positive (convex hull property).
     /// `None` when an enclosure says nothing.
     fn bounding_box(&self) -> Option<[Enclosure; 2]> {
+        if self.rw == 0.0 && self.points().iter().all(|p| p[2] == 1.0) {
+            // the hull of the points' enclosures `around(p, r)`: rounding is monotone, so it is
+            // the extreme coordinates widened once
+            let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+            for p in self.points() {
+                for k in 0..2 {
+                    lo[k] = lo[k].min(p[k]);
+                    hi[k] = hi[k].max(p[k]);
+                }
+            }
+            let b = [0, 1].map(|k| Enclosure((lo[k] - self.r).next_down(), (hi[k] + self.r).next_up()));
+            return b.iter().all(|e| e.0.is_finite() && e.1.is_finite()).then_some(b);
+        }
         let mut out: Option<[Enclosure; 2]> = None;
         for p in self.points() {
             let q = if self.rw == 0.0 && p[2] == 1.0 {
@@ -302,21 +330,27 @@ impl Polygon {
 /// At most this many pairs of pieces are compared by [`candidate_regions`].
 const PIECE_PAIRS: usize = 128;
 
+/// A pair of pieces both this deep (parameter intervals of `2^−7`) is left as a candidate box
+/// rather than halved further: near a crossing, halving goes on pair by pair until
+/// [`PIECE_PAIRS`] comparisons are spent, where the solver's Krawczyk steps ([`solve`]) converge
+/// quadratically on a box this small.
+const HANDOFF_DEPTH: u32 = 7;
+
 /// Pieces are halved at most this often, so that their ends `k/2^d` are exact `f64`s.
 const MAX_DEPTH: u32 = 52;
 
 /// A parameter interval `[k/2^d, (k+1)/2^d]` of a curve, its control polygon and bounding box,
 /// and its halves once made (indices into the same arena).
-struct Piece {
-    polygon: Polygon,
+struct Piece<const N: usize> {
+    polygon: Polygon<N>,
     bbox: Option<[Enclosure; 2]>,
     k: u64,
     d: u32,
     halves: Option<(usize, usize)>,
 }
 
-impl Piece {
-    fn new(polygon: Polygon, k: u64, d: u32) -> Self {
+impl<const N: usize> Piece<N> {
+    fn new(polygon: Polygon<N>, k: u64, d: u32) -> Self {
         Piece { bbox: polygon.bounding_box(), polygon, k, d, halves: None }
     }
 
@@ -332,7 +366,7 @@ impl Piece {
 }
 
 /// The halves of `arena[i]`, made on first use.
-fn halves_of(arena: &mut Vec<Piece>, i: usize) -> (usize, usize) {
+fn halves_of<const N: usize>(arena: &mut Vec<Piece<N>>, i: usize) -> (usize, usize) {
     if let Some(h) = arena[i].halves {
         return h;
     }
@@ -364,8 +398,9 @@ pub(super) enum Regions {
 /// positive): pairs of pieces are compared by bounding boxes (which hold the pieces, by the
 /// convex hull property), breadth first, the larger piece halved while they overlap (each piece
 /// halved once, its halves shared by every pair it is in). Pairs with disjoint boxes hold no
-/// common point; after [`PIECE_PAIRS`] comparisons the pairs left over hold every one. Boxes
-/// that touch do not count as disjoint, so hits at ends are never filtered out.
+/// common point; after [`PIECE_PAIRS`] comparisons the pairs left over (and those handed off at
+/// [`HANDOFF_DEPTH`]) hold every one. Boxes that touch do not count as disjoint, so hits at ends
+/// are never filtered out.
 pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) -> Regions {
     let enclosed = |rows: &[[BigRational; 3]]| -> Option<Polygon> {
         if rows.is_empty() || rows.len() > MAX_POINTS {
@@ -374,7 +409,12 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         let mut p = Polygon { len: rows.len(), points: [[0.0; 3]; MAX_POINTS], r: 0.0, rw: 0.0 };
         for (q, row) in p.points.iter_mut().zip(rows) {
             for k in 0..3 {
-                let f = crate::num::scalar::ratio_to_f64(&row[k]);
+                // an integer below 2^53 converts exactly (and without num-rational's general route)
+                let small = row[k].is_integer().then(|| num_traits::ToPrimitive::to_i64(row[k].numer())).flatten();
+                let f = match small {
+                    Some(v) if v.unsigned_abs() < 1 << 53 => v as f64,
+                    _ => crate::num::scalar::ratio_to_f64(&row[k]),
+                };
                 if !f.is_finite() {
                     return None;
                 }
@@ -395,7 +435,43 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         }
         Some(p)
     };
-    let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else { return Regions::Anywhere };
+    let (Some(a), Some(b)) = (enclosed(a), enclosed(b)) else {
+        return Regions::Anywhere;
+    };
+    regions_of(a, b)
+}
+
+/// [`candidate_regions`] for polynomial curves with integer control points below `2^53` in
+/// magnitude (exact in `f64`): the same polygons, made without conversions.
+pub(super) fn candidate_regions_integer(a: &[[i64; 2]], b: &[[i64; 2]]) -> Regions {
+    let polygon = |points: &[[i64; 2]]| -> Option<Polygon> {
+        if points.is_empty() || points.len() > MAX_POINTS {
+            return None;
+        }
+        let mut p = Polygon { len: points.len(), points: [[0.0; 3]; MAX_POINTS], r: 0.0, rw: 0.0 };
+        for (q, c) in p.points.iter_mut().zip(points) {
+            if c.iter().any(|v| v.unsigned_abs() >= 1 << 53) {
+                return None;
+            }
+            *q = [c[0] as f64, c[1] as f64, 1.0];
+        }
+        Some(p)
+    };
+    let (Some(a), Some(b)) = (polygon(a), polygon(b)) else { return Regions::Anywhere };
+    regions_of(a, b)
+}
+
+/// The subdivision of [`candidate_regions`] on two control polygons (on `Polygon<4>` when both
+/// have at most 4 points).
+fn regions_of(a: Polygon, b: Polygon) -> Regions {
+    match (a.resized::<4>(), b.resized::<4>()) {
+        (Some(a), Some(b)) => subdivide(a, b),
+        _ => subdivide(a, b),
+    }
+}
+
+/// [`regions_of`] on polygons of room `N`.
+fn subdivide<const N: usize>(a: Polygon<N>, b: Polygon<N>) -> Regions {
     let mut arena = vec![Piece::new(a, 0, 0), Piece::new(b, 0, 0)];
     let mut queue = std::collections::VecDeque::from([(0usize, 1usize)]);
     let mut left: Vec<(usize, usize)> = vec![];
@@ -408,7 +484,8 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         }
         let split_a = arena[i].size() >= arena[j].size();
         let depth = if split_a { arena[i].d } else { arena[j].d };
-        if compared >= PIECE_PAIRS || depth >= MAX_DEPTH {
+        let handed_off = arena[i].d.min(arena[j].d) >= HANDOFF_DEPTH;
+        if compared >= PIECE_PAIRS || depth >= MAX_DEPTH || handed_off {
             left.push((i, j));
             continue;
         }
@@ -440,6 +517,21 @@ pub(super) struct Coeffs(Vec<Enclosure>);
 impl Coeffs {
     pub(super) fn new(p: &[BigInt]) -> Self {
         Coeffs(p.iter().map(Enclosure::of_integer).collect())
+    }
+
+    /// The enclosed coefficients of an integer polynomial given in words (exact below `2^53`).
+    pub(super) fn from_words(p: &[i128]) -> Self {
+        let enclose = |v: &i128| {
+            let f = *v as f64; // nearest
+            if v.unsigned_abs() < 1 << 53 { Enclosure(f, f) } else { Enclosure(f.next_down(), f.next_up()) }
+        };
+        Coeffs(p.iter().map(enclose).collect())
+    }
+
+    /// The enclosed coefficients of `p′` (`k·c_k`), without forming it.
+    pub(super) fn derivative_of(p: &[BigInt]) -> Self {
+        let k = |k: usize| Enclosure(k as f64, k as f64);
+        Coeffs(p.iter().enumerate().skip(1).map(|(i, c)| Enclosure::of_integer(c).mul(k(i))).collect())
     }
 
     /// An enclosure of the polynomial over `x` (Horner).
@@ -475,11 +567,14 @@ impl System {
         }
         let (wa, wb) = (&fa[2][0], &fb[2][0]);
         let scaled = |p: &[BigInt], w: &BigInt| -> Vec<BigInt> { p.iter().map(|c| c * w).collect() };
-        let polys = [scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa)];
-        let deriv = crate::poly::polynomial::derivative_integer;
+        let polys = if num_traits::One::is_one(wa) && num_traits::One::is_one(wb) {
+            [fa[0].clone(), fa[1].clone(), fb[0].clone(), fb[1].clone()]
+        } else {
+            [scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa)]
+        };
         Some(System {
             p: std::array::from_fn(|k| Coeffs::new(&polys[k])),
-            d: std::array::from_fn(|k| Coeffs::new(&deriv(&polys[k]))),
+            d: std::array::from_fn(|k| Coeffs::derivative_of(&polys[k])),
         })
     }
 
@@ -538,7 +633,8 @@ const SOLVER_STEPS: usize = 32;
 /// Every zero of the system in the closed `boxes` (`[σ_lo, σ_hi, τ_lo, τ_hi]`, the
 /// [`Regions::Within`] ones): each box is proved empty (`F` keeps away from 0 on it, or
 /// Krawczyk's operator misses it), proved to hold exactly one zero (the operator maps it into
-/// its interior; the box is then shrunk by `x ← K(x) ∩ x`, which keeps the zero), or halved.
+/// its interior; `K(x)`, which holds that zero, is returned: [`shrink`] narrows it further
+/// where a caller needs that), or halved.
 /// The returned boxes each hold exactly one zero, at which the curves cross transversally (two
 /// boxes may hold the same zero, when it lies on an edge they share). `None` when
 /// [`SOLVER_STEPS`] examinations do not settle every box (a tangency, a zero on an edge of the
@@ -553,7 +649,7 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
                 if x[r].0 <= end && end <= x[r].1 {
                     let mut edge = *x;
                     edge[r] = Enclosure(end, end);
-                    if sys.f(edge).iter().all(|e| e.0 <= 0.0 && 0.0 <= e.1) {
+                    if may_vanish_on_edge(sys, edge, 1 - r, EDGE_PIECES) {
                         return None;
                     }
                 }
@@ -577,7 +673,7 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
                 continue; // no zero
             }
             if strictly_inside(k, x) {
-                zeros.push(shrink(sys, k));
+                zeros.push(k);
                 continue;
             }
         }
@@ -601,9 +697,31 @@ pub(super) fn solve(sys: &System, boxes: &[[f64; 4]]) -> Option<Vec<Box2>> {
     Some(zeros)
 }
 
+/// The edge test of [`solve`] halves an edge segment this often (into at most `2^4` pieces)
+/// before it gives up.
+const EDGE_PIECES: u32 = 4;
+
+/// `F` may vanish on the segment `edge` (a box whose side `1 − free` is a point): its
+/// enclosures over the segment, halved up to `depth` times where they hold 0, do not rule it
+/// out.
+fn may_vanish_on_edge(sys: &System, edge: Box2, free: usize, depth: u32) -> bool {
+    if sys.f(edge).iter().any(|e| e.0 > 0.0 || e.1 < 0.0) {
+        return false;
+    }
+    let (lo, hi) = edge[free].ends();
+    let m = lo + (hi - lo) / 2.0;
+    if depth == 0 || !(lo < m && m < hi) {
+        return true;
+    }
+    let (mut a, mut b) = (edge, edge);
+    a[free] = Enclosure(lo, m);
+    b[free] = Enclosure(m, hi);
+    may_vanish_on_edge(sys, a, free, depth - 1) || may_vanish_on_edge(sys, b, free, depth - 1)
+}
+
 /// A box holding exactly one zero, shrunk by `x ← K(x) ∩ x` (every zero of `x` lies in `K(x)`)
 /// while that gains.
-fn shrink(sys: &System, mut x: Box2) -> Box2 {
+pub(super) fn shrink(sys: &System, mut x: Box2) -> Box2 {
     for _ in 0..8 {
         let Some(k) = sys.krawczyk(x) else { break };
         let y: Box2 = std::array::from_fn(|r| x[r].meet(k[r]));

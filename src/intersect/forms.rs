@@ -18,6 +18,9 @@ pub(super) fn integer_forms(c: &RationalBezier<BigRational>) -> [Vec<BigInt>; 3]
 /// number scaled by the lcm of the denominators, then `c_k = C(n,k) Δ^k b_0` (forward
 /// differences) in integers.
 pub(super) fn forms_from_homogeneous(rows: &[[BigRational; 3]]) -> [Vec<BigInt>; 3] {
+    if let Some(f) = integer_forms_small(rows) {
+        return f;
+    }
     let scale = rows.iter().flatten().fold(BigInt::one(), |acc, x| {
         if x.denom().is_one() { acc } else { num_integer::Integer::lcm(&acc, x.denom()) }
     });
@@ -38,6 +41,42 @@ pub(super) fn forms_from_homogeneous(rows: &[[BigRational; 3]]) -> [Vec<BigInt>;
     })
 }
 
+/// [`forms_from_homogeneous`] in checked `i128` for integer control points that fit an `i64`
+/// (the scale is then 1): the same forms, big integers made once at the end. `None` otherwise.
+fn integer_forms_small(rows: &[[BigRational; 3]]) -> Option<[Vec<BigInt>; 3]> {
+    use num_traits::ToPrimitive;
+    let word = |x: &BigRational| if x.is_integer() { x.numer().to_i64() } else { None };
+    let words: Vec<[i64; 3]> =
+        rows.iter().map(|r| Some([word(&r[0])?, word(&r[1])?, word(&r[2])?])).collect::<Option<_>>()?;
+    forms_of_words(&words)
+}
+
+/// `(X, Y, W)` of the polynomial curve with integer control points `points` (weights 1): as
+/// [`forms_from_homogeneous`] gives them for those points. `None` on an overflow of `i128`.
+pub(super) fn forms_from_integer_points(points: &[[i64; 2]]) -> Option<[Vec<BigInt>; 3]> {
+    forms_of_words(&points.iter().map(|p| [p[0], p[1], 1]).collect::<Vec<_>>())
+}
+
+/// The forms of homogeneous integer control points: `c_k = C(n,k) Δ^k b_0` in checked `i128`.
+fn forms_of_words(rows: &[[i64; 3]]) -> Option<[Vec<BigInt>; 3]> {
+    let n = rows.len().checked_sub(1)?;
+    let mut out: [Vec<BigInt>; 3] = Default::default();
+    for (k, form) in out.iter_mut().enumerate() {
+        let mut diff: Vec<i128> = rows.iter().map(|r| i128::from(r[k])).collect();
+        let mut c = Vec::with_capacity(n + 1);
+        let mut binomial: i128 = 1; // C(n, j)
+        for j in 0..=n {
+            c.push(diff[0].checked_mul(binomial)?);
+            binomial = binomial.checked_mul((n - j) as i128)? / (j as i128 + 1);
+            for i in 0..n - j {
+                diff[i] = diff[i + 1].checked_sub(diff[i])?;
+            }
+        }
+        *form = zv::trim(c.into_iter().map(BigInt::from).collect());
+    }
+    Some(out)
+}
+
 pub(super) fn to_rational(p: &[BigInt]) -> Vec<BigRational> {
     p.iter().map(|c| BigRational::from_integer(c.clone())).collect()
 }
@@ -49,6 +88,10 @@ pub(super) fn coefficient<T: CheckedRing>(p: &[T], k: usize) -> T {
 
 /// `X/W` and `Y/W` are constant: every parameter gives one point.
 pub(super) fn is_point(f: &[Vec<BigInt>; 3]) -> bool {
+    if f[2].len() == 1 {
+        // a constant weight (non-zero): X/W and Y/W are constant exactly when X and Y are
+        return f[0].len() <= 1 && f[1].len() <= 1;
+    }
     let parallel = |a: &[BigInt], w: &[BigInt]| {
         let n = a.len().max(w.len());
         (0..n)

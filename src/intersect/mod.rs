@@ -31,6 +31,7 @@
 mod box_solver;
 mod elimination;
 mod filter;
+mod fixed;
 mod forms;
 mod oracle;
 mod overlap;
@@ -151,10 +152,33 @@ pub fn intersect_polynomial(
     for c in [a, b] {
         check_shape(c.dim(), c.degree())?;
     }
+    // integer control points below 2^53 (font outlines, say): regions and forms from words
+    if let (Some(pa), Some(pb)) = (integer_points(a.points(), false), integer_points(b.points(), false))
+        && let Some(found) = pairing::intersect_integer_points(&pa, &pb, domain)
+    {
+        return found;
+    }
     let rows = |c: &BezierCurve<BigRational>| -> Vec<[BigRational; 3]> {
         c.points().iter().map(|p| [p.coords[0].clone(), p.coords[1].clone(), rat(1)]).collect()
     };
     pairing::intersect_rows(&rows(a), &rows(b), domain)
+}
+
+/// The control points `(x, y)` as words when every coordinate is an integer below `2^53` in
+/// magnitude (exact in `f64`), from planar points, or from homogeneous ones `(x, y, 1)`
+/// (`weighted`: every weight exactly 1, a polynomial curve).
+fn integer_points(points: &[Point<BigRational>], weighted: bool) -> Option<Vec<[i64; 2]>> {
+    let word = |x: &BigRational| {
+        let v = if x.is_integer() { num_traits::ToPrimitive::to_i64(x.numer()) } else { None }?;
+        (v.unsigned_abs() < 1 << 53).then_some(v)
+    };
+    points
+        .iter()
+        .map(|p| {
+            let unit = !weighted || num_traits::One::is_one(p.coords.get(2)?);
+            unit.then_some([word(&p.coords[0])?, word(&p.coords[1])?])
+        })
+        .collect()
 }
 
 /// Planar, and of degree at most [`MAX_INTERSECT_DEGREE`].
@@ -221,6 +245,12 @@ pub fn intersect_within(
     check(a, domain)?;
     check(b, domain)?;
     budget.check(format!("intersecting degree {} with degree {}", a.degree(), b.degree()), estimate(a, b))?;
+    let words = |c: &RationalBezier<BigRational>| integer_points(c.homogeneous().points(), true);
+    if let (Some(pa), Some(pb)) = (words(a), words(b))
+        && let Some(found) = pairing::intersect_integer_points(&pa, &pb, domain)
+    {
+        return found;
+    }
     pairing::intersect_rows(&forms::homogeneous_rows(a), &forms::homogeneous_rows(b), domain)
 }
 

@@ -29,6 +29,23 @@ pub(super) fn intersect_rows(
     intersect_forms(&forms_from_homogeneous(ra), &forms_from_homogeneous(rb), domain, &regions)
 }
 
+/// [`intersect_rows`] for polynomial curves with integer control points below `2^53` in
+/// magnitude (checked by the caller): the same regions and forms, made from words (`None` on an
+/// overflow, for [`intersect_rows`] to answer).
+pub(super) fn intersect_integer_points(
+    pa: &[[i64; 2]],
+    pb: &[[i64; 2]],
+    domain: Domain,
+) -> Option<Result<Intersections>> {
+    use super::forms::forms_from_integer_points;
+    let regions = if domain == Domain::Unit { filter::candidate_regions_integer(pa, pb) } else { Regions::Anywhere };
+    if let Regions::Apart = regions {
+        return Some(Ok(Intersections { intersections: vec![], overlaps: vec![] }));
+    }
+    let (fa, fb) = (forms_from_integer_points(pa)?, forms_from_integer_points(pb)?);
+    Some(intersect_forms(&fa, &fb, domain, &regions))
+}
+
 /// The intersections of the curves with integer power forms `fa` and `fb` (checked by the
 /// caller); [`overlap::overlap`] answers when they share a component.
 pub(super) fn intersect_forms(
@@ -114,8 +131,8 @@ pub(super) fn intersect_forms(
                     s_float,
                     t_float,
                     point: common_point(
-                        (&side_a, s, na[i].as_ref().map_or(s, |n| &n.0)),
-                        (&side_b, t, nb[j].as_ref().map_or(t, |n| &n.0)),
+                        (&side_a, s, outward(na[i].as_ref().map_or(s, |n| &n.0))),
+                        (&side_b, t, outward(nb[j].as_ref().map_or(t, |n| &n.0))),
                         &mut pa[i],
                     ),
                     point_float: side_a.point_float(na[i].as_ref().map_or(s, |n| &n.0)),
@@ -189,6 +206,32 @@ mod tests {
             assert_eq!(filtered, exact);
         }
         assert!(empty > 5 && 4 * apart >= 3 * empty, "{apart} of {empty} empty pairs proved apart");
+    }
+
+    /// The word route for integer control points ([`intersect_integer_points`]) answers as the
+    /// rows do, on random pairs of lines, quadratics and cubics (both domains), pairs sharing an
+    /// end, and a cubic against its own left half (an overlap).
+    #[test]
+    fn integer_points_route_agrees_with_rows() {
+        let mut next = crate::num::symmetric(0x1D7E_6E25_0F0F_1A7E);
+        let rows =
+            |v: &[[i64; 2]]| -> Vec<[BigRational; 3]> { v.iter().map(|p| [rat(p[0]), rat(p[1]), rat(1)]).collect() };
+        type Points = Vec<[i64; 2]>;
+        let mut pairs: Vec<(Points, Points)> = (0..60)
+            .map(|k| {
+                let mut curve = |n: usize| (0..=n).map(|_| [next(2048), next(2048)]).collect::<Vec<_>>();
+                (curve([3, 2, 1][k % 3]), curve([3, 3, 2, 1][k % 4]))
+            })
+            .collect();
+        pairs.push((vec![[0, 0], [1, 3], [2, 1], [4, 4]], vec![[4, 4], [5, 0], [9, 9]]));
+        pairs.push((vec![[0, 0], [8, 16], [16, 0], [24, 8]], vec![[0, 0], [4, 8], [8, 8], [12, 7]]));
+        for (a, b) in &pairs {
+            for domain in [Domain::Unit, Domain::All] {
+                let by_rows = intersect_rows(&rows(a), &rows(b), domain).unwrap();
+                let by_words = intersect_integer_points(a, b, domain).expect("small").unwrap();
+                assert_eq!(by_words, by_rows, "{a:?} × {b:?}");
+            }
+        }
     }
 
     #[test]

@@ -4,12 +4,12 @@
 //! rational when it is, proved irrational cheaply when it is not.
 
 use super::Domain;
-use super::elimination::divided_difference;
+use super::elimination::divided_difference_enclosed;
 use super::filter;
 use super::forms::{is_point, point_at, point_at_rational, rational_point, to_rational};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
-use crate::poly::algebraic::{RealAlgebraic, zv};
+use crate::poly::algebraic::RealAlgebraic;
 use crate::poly::polynomial::{derivative, trim};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -32,6 +32,10 @@ pub(super) fn roots(r: &[BigInt], domain: Domain) -> (Vec<RealAlgebraic>, bool) 
 /// The primitive square-free part of `r` (integer coefficients, non-zero), and whether `r`
 /// was square-free already.
 pub(super) fn square_free_part(r: &[BigInt]) -> (Vec<BigInt>, bool) {
+    // word-sized coefficients proved square-free modulo a prime: no big-integer gcds
+    if let Some(p) = crate::poly::polynomial::square_free_small(r) {
+        return (p, true);
+    }
     let p = crate::poly::polynomial::primitive_part(r.to_vec());
     let sf = crate::poly::polynomial::square_free_integer(p.clone());
     let simple = sf.len() == p.len();
@@ -71,7 +75,7 @@ pub(super) struct Side<'a> {
     bound: std::cell::OnceCell<usize>,
     /// The divided differences `D_X`, `D_Y` of [`Side::irrational_at`] ([`divided_difference`]),
     /// computed on first use.
-    partner: std::cell::OnceCell<[Vec<zv::P>; 2]>,
+    partner: std::cell::OnceCell<[Vec<filter::Coeffs>; 2]>,
 }
 
 impl<'a> Side<'a> {
@@ -86,7 +90,7 @@ impl<'a> Side<'a> {
         }
     }
 
-    /// The point at the irrational `x` (`narrow`: the same number, a tight interval) is
+    /// The point at the irrational `x` (`narrow`: a tight `f64` interval holding it) is
     /// provably irrational. Were it a rational point `P`, `x` would be a root of `X − P_x W` and
     /// `Y − P_y W`, so every conjugate `u ≠ x` of `x` (there is one: `x` is irrational) would be
     /// one too, and the curve would pass through `P` at `u`: the divided differences
@@ -95,13 +99,14 @@ impl<'a> Side<'a> {
     /// Else the degree of `x`: `P` rational makes it at most the curve's degree, so a lower bound
     /// above that proves it ([`RealAlgebraic::degree_lower_bound`], a factorization modulo
     /// primes: dearer).
-    fn irrational_at(&self, x: &RealAlgebraic, narrow: &RealAlgebraic) -> bool {
+    fn irrational_at(&self, x: &RealAlgebraic, narrow: (f64, f64)) -> bool {
         if x.to_rational().is_some() || !self.moves {
             return false;
         }
         if self.degree <= filter::MAX_BEZOUT_ORDER + 1 {
             let [dx, dy] = self.partner.get_or_init(|| {
-                [divided_difference(&self.f[0], &self.f[2]), divided_difference(&self.f[1], &self.f[2])]
+                let dd = divided_difference_enclosed;
+                [dd(&self.f[0], &self.f[2]), dd(&self.f[1], &self.f[2])]
             });
             if filter::no_common_root(dx, dy, narrow) {
                 return true;
@@ -118,11 +123,12 @@ impl<'a> Side<'a> {
 }
 
 /// The common point `A(s) = B(t)` when it is rational, by the cheapest route that decides: a
-/// rational parameter, an irrationality proof ([`Side::irrational_at`]), or the exact point
-/// (computed once per root, `cached`).
+/// rational parameter, an irrationality proof ([`Side::irrational_at`], with `sn` and `tn`
+/// tight `f64` intervals holding `s` and `t`), or the exact point (computed once per root,
+/// `cached`).
 pub(super) fn common_point(
-    (a, s, sn): (&Side, &RealAlgebraic, &RealAlgebraic),
-    (b, t, tn): (&Side, &RealAlgebraic, &RealAlgebraic),
+    (a, s, sn): (&Side, &RealAlgebraic, (f64, f64)),
+    (b, t, tn): (&Side, &RealAlgebraic, (f64, f64)),
     cached: &mut Option<[RealAlgebraic; 2]>,
 ) -> Option<Point<BigRational>> {
     if let Some(x) = s.to_rational() {
@@ -158,15 +164,15 @@ mod tests {
         let nodal = [b(&[-2, 0, 1]), b(&[0, -2, 0, 1]), b(&[1])];
         let side = Side::new(&nodal);
         let sqrt2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
-        let (narrow, _) = sqrt2.narrowed_with_f64();
+        let narrow = filter::outward(&sqrt2.narrowed_with_f64().0);
         assert!(!filter::no_common_root(
-            &divided_difference(&nodal[0], &nodal[2]),
-            &divided_difference(&nodal[1], &nodal[2]),
-            &narrow
+            &divided_difference_enclosed(&nodal[0], &nodal[2]),
+            &divided_difference_enclosed(&nodal[1], &nodal[2]),
+            narrow
         ));
-        assert!(!side.irrational_at(&sqrt2, &narrow));
+        assert!(!side.irrational_at(&sqrt2, narrow));
         let sqrt3 = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
-        assert!(side.irrational_at(&sqrt3, &sqrt3.narrowed_with_f64().0)); // (1, √3)
+        assert!(side.irrational_at(&sqrt3, filter::outward(&sqrt3.narrowed_with_f64().0))); // (1, √3)
         let mut next = crate::num::symmetric(0x2545_F491_4F6C_DD1D);
         let mut proved = 0;
         for _ in 0..40 {
@@ -185,7 +191,7 @@ mod tests {
                 if x.sign_of(&to_rational(&f[2])) == Ordering::Equal {
                     continue;
                 }
-                if side.irrational_at(&x, &x.narrowed_with_f64().0) {
+                if side.irrational_at(&x, filter::outward(&x.narrowed_with_f64().0)) {
                     assert!(rational_point(&point_at(&f, &x)).is_none(), "proved irrational, but rational at {x}");
                     proved += 1;
                 }

@@ -59,6 +59,9 @@ fn gcd(a: u128, b: u128) -> u128 {
         if b == 0 {
             return a << shift;
         }
+        if (a | b) >> 64 == 0 {
+            return u128::from(gcd64(a as u64, b as u64)) << shift;
+        }
         if b >> 64 == 0 && a >> 64 == 0 {
             return (gcd64(a as u64, b as u64) as u128) << shift;
         }
@@ -249,6 +252,19 @@ pub(crate) fn residue(n: &num_bigint::BigInt, m: u64) -> u64 {
     if n.sign() == num_bigint::Sign::Minus && r != 0 { m - r } else { r }
 }
 
+/// `n mod m` in `[0, m)` for a signed `n` and `m < 2^32`, in `u64` operations (no 128-bit
+/// division): the magnitude's two words combined with `2^64 mod m`, negated modulo `m` for a
+/// negative `n`.
+#[inline]
+pub(crate) fn residue_i128(n: i128, m: u64) -> u64 {
+    debug_assert!(m > 0 && m >> 32 == 0);
+    let mag = n.unsigned_abs();
+    let (hi, lo) = ((mag >> 64) as u64, mag as u64);
+    let base = (u64::MAX % m + 1) % m; // 2^64 mod m
+    let r = ((hi % m) * base + lo % m) % m;
+    if n < 0 && r != 0 { m - r } else { r }
+}
+
 /// [`extract_small_squares`] of a big number: `(k, m)` with `n = k²·m` and `m` free of the
 /// squares of primes below 1000 (the rule of
 /// [`QuadraticExt::sqrt`](crate::num::QuadraticExt::sqrt)).
@@ -335,6 +351,27 @@ mod tests {
             }
         }
         assert_eq!(isqrt(u128::MAX), u64::MAX as u128);
+    }
+
+    /// Word residues and gcds against big-integer arithmetic, extremes included.
+    #[test]
+    fn word_residues_and_gcds_match_big_integers() {
+        let mut next = crate::num::xorshift(0x7E51_DDE5_0F12_8B17);
+        let mut values: Vec<i128> = vec![0, 1, -1, i128::MAX, i128::MIN, i128::MIN + 1, 1 << 64, -(1 << 64)];
+        for k in 0..400 {
+            let v = ((u128::from(next()) << 64 | u128::from(next())) >> (1 + k % 120)) as i128;
+            values.extend([v, -v]);
+        }
+        for &v in &values {
+            for m in [3u64, 47 * 53, 111_546_435, 58_642_669, (1 << 31) - 1, 4_294_967_291] {
+                assert_eq!(residue_i128(v, m), residue(&num_bigint::BigInt::from(v), m), "{v} mod {m}");
+            }
+        }
+        for _ in 0..400 {
+            let (a, b) = (u128::from(next()) << (next() % 64), u128::from(next()) << (next() % 64));
+            let expected = num_integer::Integer::gcd(&num_bigint::BigUint::from(a), &num_bigint::BigUint::from(b));
+            assert_eq!(num_bigint::BigUint::from(gcd_u128(a, b)), expected, "gcd({a}, {b})");
+        }
     }
 
     #[test]

@@ -191,44 +191,95 @@ pub fn square_free_integer(p: Vec<BigInt>) -> Vec<BigInt> {
 /// Primes below 2³¹ for the modular square-free test: products of two residues fit in a `u64`,
 /// so every step is one machine multiplication and remainder (a 62-bit prime needed `u128`
 /// remainders, a software division each, and cost more than the rest of the root isolation).
-const MODULAR_PRIMES: [u64; 3] = [2_147_483_647, 2_147_483_629, 2_147_483_587];
+const MODULAR_PRIMES: [u64; 3] = [MERSENNE, 2_147_483_629, 2_147_483_587];
+
+/// The Mersenne prime `2^31 − 1`, the first of [`MODULAR_PRIMES`].
+const MERSENNE: u64 = (1 << 31) - 1;
+
+/// The primitive part of a non-zero integer polynomial (trimmed, positive leading coefficient)
+/// when every coefficient fits an `i128` and the modular test of [`square_free_integer`] proves
+/// it square-free: then it is [`square_free_integer`]'s answer, found in machine words (the
+/// content by word gcds, the residues by word remainders). `None` otherwise (decide with
+/// [`square_free_integer`]).
+pub(crate) fn square_free_small(p: &[BigInt]) -> Option<Vec<BigInt>> {
+    let mut c: Vec<i128> = p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<_>>()?;
+    while c.last() == Some(&0) {
+        c.pop();
+    }
+    let last = *c.last()?;
+    let content = c
+        .iter()
+        .try_fold(0u128, |g, x| if g == 1 { None } else { Some(crate::num::word::gcd_u128(g, x.unsigned_abs())) });
+    let content = i128::try_from(content.unwrap_or(1)).ok()?;
+    let content = if last < 0 { -content } else { content };
+    let c: Vec<i128> = if content == 1 { c } else { c.into_iter().map(|x| x / content).collect() };
+    let big = || c.iter().map(|&x| BigInt::from(x)).collect();
+    if c.len() <= 2 {
+        return Some(big());
+    }
+    let dc: Vec<i128> = c.iter().enumerate().skip(1).map(|(k, x)| x.checked_mul(k as i128)).collect::<Option<_>>()?;
+    let reduce = |v: &[i128], q: u64| -> Vec<u64> {
+        let residue = |x: i128| if q == MERSENNE { residue_mersenne(x) } else { crate::num::word::residue_i128(x, q) };
+        v.iter().map(|&x| residue(x)).collect()
+    };
+    MODULAR_PRIMES.iter().any(|&q| coprime_residues(reduce(&c, q), reduce(&dc, q), q)).then(big)
+}
+
+/// `x mod (2^31 − 1)` in `[0, 2^31 − 1)`, by folding 31-bit digits (`2^31 ≡ 1`): no division.
+fn residue_mersenne(x: i128) -> u64 {
+    let mut m = x.unsigned_abs();
+    let mut r: u64 = 0;
+    while m != 0 {
+        r += (m as u64) & MERSENNE;
+        m >>= 31;
+    }
+    // at most five digits: r < 5·2^31
+    let r = (r & MERSENNE) + (r >> 31);
+    let r = if r >= MERSENNE { r - MERSENNE } else { r };
+    if x < 0 && r != 0 { MERSENNE - r } else { r }
+}
 
 /// `true` when `gcd(a mod q, b mod q)` is a non-zero constant and `q ∤ lc(a)`: then `a` and
 /// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
 fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
-    let reduce = |p: &[BigInt]| -> Vec<u64> {
-        let mut v: Vec<u64> = p.iter().map(|x| crate::num::word::residue(x, q)).collect();
+    let reduce = |p: &[BigInt]| -> Vec<u64> { p.iter().map(|x| crate::num::word::residue(x, q)).collect() };
+    coprime_residues(reduce(a), reduce(b), q)
+}
+
+/// [`coprime_mod`] on the residues `x` of `a` and `y` of `b` (untrimmed: `x` as long as `a`).
+fn coprime_residues(mut x: Vec<u64>, mut y: Vec<u64>, q: u64) -> bool {
+    let len = x.len();
+    for v in [&mut x, &mut y] {
         while v.last() == Some(&0) {
             v.pop();
         }
-        v
-    };
-    let (mut x, mut y) = (reduce(a), reduce(b));
-    if x.len() != a.len() || y.is_empty() {
+    }
+    if x.len() != len || y.is_empty() {
         return false; // q divides lc(a), or b vanishes mod q: no conclusion
     }
-    let mul = |u: u64, v: u64| u * v % q;
-    let inv = |u: u64| {
-        // extended Euclid on (u, q): q is prime and u ≠ 0
-        let (mut r0, mut r1, mut s0, mut s1) = (q as i64, u as i64, 0i64, 1i64);
-        while r1 != 0 {
-            let k = r0 / r1;
-            (r0, r1) = (r1, r0 - k * r1);
-            (s0, s1) = (s1, s0 - k * s1);
+    // v mod q for v < 2^62; by folding for the Mersenne prime 2^31 − 1 (no division)
+    let reduce = |v: u64| {
+        if q == MERSENNE {
+            let v = (v & MERSENNE) + (v >> 31);
+            let v = (v & MERSENNE) + (v >> 31);
+            if v >= MERSENNE { v - MERSENNE } else { v }
+        } else {
+            v % q
         }
-        s0.rem_euclid(q as i64) as u64
     };
+    let mul = |u: u64, v: u64| reduce(u * v);
     if x.len() < y.len() {
         std::mem::swap(&mut x, &mut y);
     }
     while y.len() > 1 {
-        // x ← x mod y over Z_q
-        let li = inv(*y.last().expect("non-zero"));
+        // x ← lc(y)·x − lc(x)·t^shift·y until deg x < deg y: a non-zero multiple of x mod y over
+        // Z_q, so the degrees of the remainder sequence are Euclid's (no inverses needed)
         while x.len() >= y.len() {
-            let f = mul(*x.last().expect("non-empty"), li);
+            let (lx, ly) = (*x.last().expect("non-empty"), *y.last().expect("non-zero"));
             let shift = x.len() - y.len();
-            for (i, c) in y.iter().enumerate() {
-                x[shift + i] = (x[shift + i] + q - mul(f, *c)) % q;
+            for i in 0..x.len() - 1 {
+                let sub = if i >= shift { mul(lx, y[i - shift]) } else { 0 };
+                x[i] = reduce(mul(x[i], ly) + q - sub);
             }
             x.pop();
             while x.last() == Some(&0) {
@@ -310,6 +361,52 @@ pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<
         Ordering::Greater => {
             let r = disc / &(K::from_i64(4) * c2 * c2);
             center_plus_minus_sqrt(&center, &r).into_iter().map(|x| (x, 1)).collect()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The word route of the square-free part ([`square_free_small`]) against
+    /// [`square_free_integer`] on random polynomials with contents, repeated factors and
+    /// coefficients near `2^100`; and the Mersenne residues against big-integer remainders.
+    #[test]
+    fn square_free_in_words_matches_big_integers() {
+        let mut next = crate::num::symmetric(0x5F5F_0DD5_EED5_0001);
+        let mut decided = 0;
+        for round in 0..300 {
+            let n = 1 + round % 6;
+            let scale = BigInt::from(1) << (round % 3 * 45) as u32;
+            let mut p: Vec<BigInt> = (0..=n).map(|_| BigInt::from(next(1000)) * &scale).collect();
+            if round % 4 == 0 {
+                // a repeated factor (t + c)²
+                let c = BigInt::from(next(9));
+                for _ in 0..2 {
+                    let mut q = vec![BigInt::from(0); p.len() + 1];
+                    for (i, x) in p.iter().enumerate() {
+                        q[i] += x * &c;
+                        q[i + 1] += x;
+                    }
+                    p = q;
+                }
+            }
+            if p.iter().all(num_traits::Zero::is_zero) {
+                continue;
+            }
+            if let Some(sf) = square_free_small(&p) {
+                assert_eq!(sf, square_free_integer(p.clone()), "{p:?}");
+                decided += 1;
+            }
+        }
+        assert!(decided > 150, "{decided} decided in words");
+        let mut word = crate::num::xorshift(0x0A0B_0C0D_0E0F_1011);
+        for k in 0..500 {
+            let v = ((u128::from(word()) << 64 | u128::from(word())) >> (k % 127)) as i128;
+            for x in [v, -v, i128::MIN, i128::MAX] {
+                assert_eq!(residue_mersenne(x), crate::num::word::residue(&BigInt::from(x), MERSENNE), "{x}");
+            }
         }
     }
 }

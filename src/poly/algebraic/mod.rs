@@ -195,6 +195,21 @@ impl RealAlgebraic {
         Some(x)
     }
 
+    /// The root of `poly` in `(lo, hi)` (`lo < hi`) when the caller has proved the whole
+    /// invariant without evaluating `poly` at the ends: `poly` square-free, primitive, with a
+    /// positive leading coefficient, and a root of it strictly inside `[lo, hi]`, where its
+    /// derivative keeps one sign (so the root is the only one in `[lo, hi]`, and `poly` is
+    /// non-zero at the ends with opposite signs). `irrational` as for
+    /// [`Self::certified_root`]. The box solver's fixed-point refinement builds parameters this
+    /// way from `f64` rounding cells.
+    pub(crate) fn proved_root(poly: Vec<BigInt>, lo: BigRational, hi: BigRational, irrational: bool) -> Self {
+        let mut x = RealAlgebraic(Repr::Root { poly, lo, hi });
+        if !irrational {
+            x.detect_rational();
+        }
+        x
+    }
+
     /// The root of `poly` (square-free, primitive) in `(lo, hi)`, where it changes sign; made
     /// rational when it is.
     fn from_isolated(poly: Vec<BigInt>, mut lo: BigRational, mut hi: BigRational, irrational: bool) -> Self {

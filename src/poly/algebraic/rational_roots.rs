@@ -14,21 +14,56 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
-/// `true` when `p` provably has no rational root: `p mod q` has no root for some small prime
-/// `q` not dividing the leading coefficient (a rational root `a/b` has `b | lc`, so `b` is
+/// `true` when `p` provably has no rational root: `p mod q` has no root for some prime `q` from
+/// 3 to 53 not dividing the leading coefficient (a rational root `a/b` has `b | lc`, so `b` is
 /// invertible mod `q` and `a·b⁻¹` would be a root mod `q`). `false` means "not proved"; the
 /// slower exact search of `detect_rational` then decides.
 pub(crate) fn no_rational_roots(p: &[BigInt]) -> bool {
-    const PRIMES: [u64; 15] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
-    let Some(lc) = p.last() else { return false };
-    let residue = crate::num::word::residue;
-    PRIMES.iter().any(|&q| {
-        if residue(lc, q) == 0 {
-            return false;
+    if p.is_empty() {
+        return false;
+    }
+    // the residues modulo products of the primes, once per coefficient (word remainders when
+    // the coefficients fit an i128), then modulo each prime (a constant: no division)
+    let small: Option<Vec<i128>> = p.iter().map(num_traits::ToPrimitive::to_i128).collect();
+    let residues = |m: u64| -> Vec<u64> {
+        match &small {
+            Some(c) => c.iter().map(|&x| crate::num::word::residue_i128(x, m)).collect(),
+            None => p.iter().map(|x| crate::num::word::residue(x, m)).collect(),
         }
-        let coeffs: Vec<u64> = p.iter().map(|c| residue(c, q)).collect();
-        (0..q).all(|x| coeffs.iter().rev().fold(0u64, |acc, c| (acc * x + c) % q) != 0)
-    })
+    };
+    let first = residues(3 * 5 * 7 * 11 * 13 * 17 * 19 * 23);
+    if no_root_mod::<3>(&first)
+        || no_root_mod::<5>(&first)
+        || no_root_mod::<7>(&first)
+        || no_root_mod::<11>(&first)
+        || no_root_mod::<13>(&first)
+        || no_root_mod::<17>(&first)
+        || no_root_mod::<19>(&first)
+        || no_root_mod::<23>(&first)
+    {
+        return true;
+    }
+    let second = residues(29 * 31 * 37 * 41 * 43);
+    if no_root_mod::<29>(&second)
+        || no_root_mod::<31>(&second)
+        || no_root_mod::<37>(&second)
+        || no_root_mod::<41>(&second)
+        || no_root_mod::<43>(&second)
+    {
+        return true;
+    }
+    let third = residues(47 * 53);
+    no_root_mod::<47>(&third) || no_root_mod::<53>(&third)
+}
+
+/// The polynomial with residues `r` modulo a multiple of the prime `Q` has no root modulo `Q`,
+/// and `Q` does not divide its leading coefficient.
+fn no_root_mod<const Q: u64>(r: &[u64]) -> bool {
+    let c: Vec<u64> = r.iter().map(|x| x % Q).collect();
+    if c.last().is_none_or(|&lc| lc == 0) {
+        return false;
+    }
+    (0..Q).all(|x| c.iter().rev().fold(0u64, |acc, v| (acc * x + v) % Q) != 0)
 }
 
 /// `p / (q·t − n)` for a rational root `x = n/q` of the integer polynomial `p`, primitive

@@ -195,6 +195,26 @@ pub(crate) fn f64_cell(u: f64) -> Option<(BigRational, BigRational)> {
     if !(below.is_finite() && above.is_finite()) || u == 0.0 {
         return None;
     }
+    if u.abs() < 1.0 && u.abs() >= f64::powi(2.0, -1000) {
+        // |u| = m·2^e (e < 0, 2^52 ≤ m < 2^53): the neighbours are m ± 1 at the scale 2^e,
+        // except below a power of two (m = 2^52), where the spacing halves; every end is an
+        // odd multiple of a power of two, so the ratios are reduced
+        let (m, e, sign) = num_traits::Float::integer_decode(u);
+        let k = u64::from((-e) as u16);
+        let end = |num: u64, k: u64| BigRational::new_raw(BigInt::from(num) * i64::from(sign), BigInt::from(1) << k);
+        let (near, far) =
+            (if m == 1 << 52 { end(4 * m - 1, k + 2) } else { end(2 * m - 1, k + 1) }, end(2 * m + 1, k + 1));
+        return Some(if sign > 0 { (near, far) } else { (far, near) });
+    }
+    f64_cell_by_ratios(u)
+}
+
+/// [`f64_cell`] from the exact ratios of `u` and its neighbours.
+fn f64_cell_by_ratios(u: f64) -> Option<(BigRational, BigRational)> {
+    let (below, above) = (u.next_down(), u.next_up());
+    if !(below.is_finite() && above.is_finite()) || u == 0.0 {
+        return None;
+    }
     let mid = |a: f64, b: f64| -> Option<BigRational> {
         let (ma, mb, k) = aligned(&exact_f64(a)?, &exact_f64(b)?)?;
         Some(dyadic(ma + mb, k + 1))
@@ -336,6 +356,20 @@ impl RealAlgebraic {
 mod tests {
     use super::*;
     use crate::num::scalar::rat;
+
+    /// The rounding cells from the float's parts against those from exact ratios: powers of
+    /// two (where the spacing below halves), their neighbours, random floats of both signs.
+    #[test]
+    fn f64_cells_from_parts_match_exact_ratios() {
+        let mut word = crate::num::xorshift(0x00CE_11CE_11CE_11CE);
+        let mut floats: Vec<f64> = (1..60).map(|k| f64::powi(2.0, -k)).collect();
+        floats.extend(floats.clone().iter().flat_map(|&u| [u.next_up(), u.next_down()]));
+        floats.extend((0..500).map(|_| f64::from_bits(word() % 0x3FF0_0000_0000_0000)));
+        floats.extend([f64::powi(2.0, -1000), f64::powi(2.0, -1000).next_down(), 1e-310, 0.75, 0.999]);
+        for u in floats.iter().flat_map(|&u| [u, -u]) {
+            assert_eq!(f64_cell(u), f64_cell_by_ratios(u), "{u:e}");
+        }
+    }
 
     /// The fast `to_f64` (Newton candidate, exact cell test) against bisection alone, on every
     /// real root of random integer polynomials of degree 2 to 9 (wide and clustered roots).
