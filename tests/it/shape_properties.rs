@@ -60,19 +60,27 @@ fn svg(sh: &Sh) -> String {
     out
 }
 
-/// One coordinate: an integer in −6..=6 three times in four, else a half-integer.
-fn coord() -> impl Strategy<Value = Q> {
-    prop_oneof![3 => (-6i64..=6).prop_map(rat), 1 => (-12i64..=12).prop_map(|v| ratio(v, 2))]
+/// SVG path data of a shape of polynomial segments.
+fn shape_svg(s: &Shape) -> String {
+    let sh: Sh = s.path().contours().iter().map(|c| c.iter().map(bezier_points).collect()).collect();
+    svg(&sh)
+}
+
+/// One coordinate: an integer in −m..=m three times in four, else a half-integer (none when
+/// `halves` is false).
+fn coord(m: i64, halves: bool) -> impl Strategy<Value = Q> {
+    let h = if halves { 1 } else { 0 };
+    prop_oneof![3 => (-m..=m).prop_map(rat), h => (-2 * m..=2 * m).prop_map(|v| ratio(v, 2))]
 }
 
 /// A closed contour of 2–5 segments, each a line, a quadratic or a cubic (2 : 2 : 1: cubic
 /// against cubic is the slow case).
-fn contour() -> impl Strategy<Value = Contour> {
-    (2usize..=5).prop_flat_map(|n| {
+fn contour(m: i64, halves: bool) -> impl Strategy<Value = Contour> {
+    (2usize..=5).prop_flat_map(move |n| {
         (
-            prop::collection::vec((coord(), coord()), n),
+            prop::collection::vec((coord(m, halves), coord(m, halves)), n),
             prop::collection::vec(prop_oneof![2 => Just(1usize), 2 => Just(2), 1 => Just(3)], n),
-            prop::collection::vec((coord(), coord()), 2 * n),
+            prop::collection::vec((coord(m, halves), coord(m, halves)), 2 * n),
         )
             .prop_map(move |(verts, degs, ctrl)| {
                 (0..n)
@@ -87,9 +95,18 @@ fn contour() -> impl Strategy<Value = Contour> {
     })
 }
 
-/// One contour three times in four, else two.
+/// One contour three times in four, else two; coordinates in −6..=6 and halves.
 fn shape() -> impl Strategy<Value = Sh> {
-    prop_oneof![3 => contour().prop_map(|c| vec![c]), 1 => prop::collection::vec(contour(), 2)]
+    shape_on(6, true)
+}
+
+fn shape_on(m: i64, halves: bool) -> impl Strategy<Value = Sh> {
+    prop_oneof![3 => contour(m, halves).prop_map(|c| vec![c]), 1 => prop::collection::vec(contour(m, halves), 2)]
+}
+
+/// Integer coordinates in −2..=2: shared vertices, overlapping and tangent segments are common.
+fn coarse_shape() -> impl Strategy<Value = Sh> {
+    shape_on(2, false)
 }
 
 /// Rational sample points off the half-integer grid, in about −7.5..7.5.
@@ -108,9 +125,12 @@ fn fill_rule() -> impl Strategy<Value = FillRule> {
 fn run(op: BooleanOp, inputs: &[Shape], fill: FillRule) -> Option<BooleanResult> {
     match boolean(op, inputs, BooleanOptions { fill, direction: Direction::Ccw }) {
         Ok(r) => Some(r),
-        Err(e) if e.to_string().contains("tangentially") => None,
+        Err(e) if e.to_string().contains("tangentially") => {
+            eprintln!("skipped, refused: {e}");
+            None
+        }
         Err(e) => {
-            let paths: Vec<String> = inputs.iter().map(|s| format!("{:?}", s.path().contours())).collect();
+            let paths: Vec<String> = inputs.iter().map(shape_svg).collect();
             panic!("{op:?} {fill}: {e}\n{paths:#?}")
         }
     }
@@ -269,7 +289,32 @@ proptest! {
     /// holes cw.
     #[test]
     fn membership(a in shape(), b in shape(), fill in fill_rule(), qs in points(10)) {
-        let (sa, sb) = (to_shape(&a), to_shape(&b));
+        membership_of(&a, &b, fill, &qs).map_err(|e| named(e, &a, &b))?;
+    }
+
+    /// 1′. The same on a coarse integer grid (−2..=2): degenerate cases are the rule.
+    #[test]
+    fn membership_on_a_coarse_grid(a in coarse_shape(), b in coarse_shape(), fill in fill_rule(), qs in coarse_points(10)) {
+        membership_of(&a, &b, fill, &qs).map_err(|e| named(e, &a, &b))?;
+    }
+}
+
+/// The failure with both inputs as SVG path data.
+fn named(e: TestCaseError, a: &Sh, b: &Sh) -> TestCaseError {
+    TestCaseError::fail(format!("{e}\nA: {}\nB: {}", svg(a), svg(b)))
+}
+
+/// Rational sample points off the integer grid in about −2.5..2.5.
+fn coarse_points(n: usize) -> impl Strategy<Value = Vec<Point<Q>>> {
+    prop::collection::vec((-10i64..=9, -10i64..=9), n).prop_map(|v| {
+        v.into_iter().map(|(x, y)| pt(&(ratio(x, 4) + ratio(1, 7)), &(ratio(y, 4) + ratio(1, 11)))).collect()
+    })
+}
+
+fn membership_of(a: &Sh, b: &Sh, fill: FillRule, qs: &[Point<Q>]) -> std::result::Result<(), TestCaseError> {
+    {
+        let (sa, sb) = (to_shape(a), to_shape(b));
+        let qs = qs.to_vec();
         for op in OPS {
             let Some(r) = run(op, &[sa.clone(), sb.clone()], fill) else { continue };
             check_membership(&r, op, &[sa.path(), sb.path()], fill, &qs)?;
@@ -279,6 +324,7 @@ proptest! {
         check_membership(&r, BooleanOp::Simplify, &[sa.path()], fill, &qs)?;
         check_orientation(&r)?;
     }
+    Ok(())
 }
 
 fn any_op() -> impl Strategy<Value = BooleanOp> {
@@ -523,18 +569,13 @@ proptest! {
     /// rational, else in floats (1e-9 relative).
     #[test]
     fn area_identities(a in shape(), b in shape(), fill in fill_rule()) {
-        let (sa, sb) = (to_shape(&a), to_shape(&b));
-        let both = [sa.clone(), sb.clone()];
-        let (Some(aa), Some(bb)) = (run(BooleanOp::Simplify, &both[..1], fill), run(BooleanOp::Simplify, &both[1..], fill)) else { return Ok(()) };
-        let (Some(u), Some(i), Some(d), Some(x)) = (
-            run(BooleanOp::Union, &both, fill),
-            run(BooleanOp::Intersection, &both, fill),
-            run(BooleanOp::Difference, &both, fill),
-            run(BooleanOp::Xor, &both, fill),
-        ) else { return Ok(()) };
-        area_sum(&[&u, &i], &[&aa, &bb], "union + intersection = A + B")?;
-        area_sum(&[&d, &i], &[&aa], "difference + intersection = A")?;
-        area_sum(&[&x, &i], &[&u], "xor + intersection = union")?;
+        area_identities_of(&a, &b, fill).map_err(|e| named(e, &a, &b))?;
+    }
+
+    /// 5′. The same on the coarse integer grid (where most areas are rational).
+    #[test]
+    fn area_identities_on_a_coarse_grid(a in coarse_shape(), b in coarse_shape(), fill in fill_rule()) {
+        area_identities_of(&a, &b, fill).map_err(|e| named(e, &a, &b))?;
     }
 
     /// 6. Every face's winding numbers are the inputs' `winding` at a rational point in it
@@ -592,4 +633,55 @@ proptest! {
             check_orientation(&r)?;
         }
     }
+}
+
+fn area_identities_of(a: &Sh, b: &Sh, fill: FillRule) -> std::result::Result<(), TestCaseError> {
+    let (sa, sb) = (to_shape(a), to_shape(b));
+    let both = [sa.clone(), sb.clone()];
+    let (Some(aa), Some(bb)) = (run(BooleanOp::Simplify, &both[..1], fill), run(BooleanOp::Simplify, &both[1..], fill))
+    else {
+        return Ok(());
+    };
+    let (Some(u), Some(i), Some(d), Some(x)) = (
+        run(BooleanOp::Union, &both, fill),
+        run(BooleanOp::Intersection, &both, fill),
+        run(BooleanOp::Difference, &both, fill),
+        run(BooleanOp::Xor, &both, fill),
+    ) else {
+        return Ok(());
+    };
+    area_sum(&[&u, &i], &[&aa, &bb], "union + intersection = A + B")?;
+    area_sum(&[&d, &i], &[&aa], "difference + intersection = A")?;
+    area_sum(&[&x, &i], &[&u], "xor + intersection = union")?;
+    Ok(())
+}
+
+/// Simplify of `A op B` for the minimal cases below.
+fn simplify_of(op: BooleanOp, ds: &[&str]) -> casteljau::Result<BooleanResult> {
+    let shapes: Vec<Shape> = ds.iter().map(|d| d.parse().unwrap()).collect();
+    boolean(op, &shapes, BooleanOptions::default())
+}
+
+/// Found by `membership_on_a_coarse_grid` (shrunk). A line from (0, 0) to (−1, 1) and back
+/// along a quadratic whose control point is its start (the same segment, traced at another
+/// speed) bound no region: every point off them has winding number 0. The arrangement does
+/// not merge the two arcs (the edges get windings 0 | −1 on both), and simplify returns one
+/// clockwise contour of area 0. The same shape along (1, 1), (2, 1), (0, 2) or (−1, 1) with the
+/// control point at the middle is handled (no contour); along (−2, 2), or with a cubic
+/// `C-1 1 -1 1 0 0`, it is not.
+#[test]
+#[ignore = "library bug: a line and a degenerate quadratic on the same segment toward (-1, 1) are not merged; simplify returns a zero-area cw contour"]
+fn a_line_and_a_degenerate_quadratic_on_one_segment_bound_nothing() {
+    let r = simplify_of(BooleanOp::Simplify, &["M0 0 L-1 1 Q-1 1 0 0 Z"]).unwrap();
+    assert_eq!(r.area, Some(rat(0)));
+    assert_eq!(r.contours, 0, "{} {:?}", r.path, r.orientation);
+}
+
+/// The same unmerged overlap next to a triangle: the union is refused instead of being the
+/// triangle (area 1).
+#[test]
+#[ignore = "library bug: union with the unmerged line/degenerate-quadratic overlap fails: 'two edges agree to every order at a vertex'"]
+fn a_triangle_with_the_unmerged_sliver() {
+    let r = simplify_of(BooleanOp::Union, &["M0 0 L0 -1 L-2 0 Z", "M0 0 L-1 1 Q-1 1 0 0 Z"]).unwrap();
+    assert_eq!((r.contours, r.area), (1, Some(rat(1))));
 }
