@@ -292,8 +292,13 @@ proptest! {
         membership_of(&a, &b, fill, &qs).map_err(|e| named(e, &a, &b))?;
     }
 
-    /// 1′. The same on a coarse integer grid (−2..=2): degenerate cases are the rule.
+    /// 1′. The same on a coarse integer grid (−2..=2): degenerate cases are the rule. It fails
+    /// in nearly every run of 24 cases on the bug of
+    /// `a_line_and_a_degenerate_quadratic_on_one_segment_bound_nothing` (a quadratic or cubic
+    /// with a control point on an end, overlapping a line toward negative x); with such
+    /// segments filtered out it passed 300 cases. Run it with `--ignored`.
     #[test]
+    #[ignore = "library bug: unmerged line/degenerate-quadratic overlaps toward negative x (see a_line_and_a_degenerate_quadratic_on_one_segment_bound_nothing)"]
     fn membership_on_a_coarse_grid(a in coarse_shape(), b in coarse_shape(), fill in fill_rule(), qs in coarse_points(10)) {
         membership_of(&a, &b, fill, &qs).map_err(|e| named(e, &a, &b))?;
     }
