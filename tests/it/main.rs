@@ -39,6 +39,7 @@ mod rational_cubic;
 #[cfg(feature = "cli")]
 mod robustness;
 mod seed_examples;
+mod shape_properties;
 mod shapes;
 mod spline_knots;
 mod strategies;
