@@ -324,7 +324,10 @@ fn between(x: &RealAlgebraic, y: &RealAlgebraic) -> BigRational {
     loop {
         let (xh, yl) = (x.interval().1, y.interval().0);
         if xh < yl {
-            return simplest_rational(&xh, &yl);
+            // the simplest rational of the closed interval may be one of its ends (0 in [0, 1]),
+            // which is x or y itself when they are rational: strictly between, take the midpoint
+            let r = simplest_rational(&xh, &yl);
+            return if r == xh || r == yl { (xh + yl) / rat(2) } else { r };
         }
         x.bisect();
         y.bisect();

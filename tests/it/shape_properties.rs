@@ -298,7 +298,6 @@ proptest! {
     /// with a control point on an end, overlapping a line toward negative x); with such
     /// segments filtered out it passed 300 cases. Run it with `--ignored`.
     #[test]
-    #[ignore = "library bug: unmerged line/degenerate-quadratic overlaps toward negative x (see a_line_and_a_degenerate_quadratic_on_one_segment_bound_nothing)"]
     fn membership_on_a_coarse_grid(a in coarse_shape(), b in coarse_shape(), fill in fill_rule(), qs in coarse_points(10)) {
         membership_of(&a, &b, fill, &qs).map_err(|e| named(e, &a, &b))?;
     }
@@ -676,7 +675,6 @@ fn simplify_of(op: BooleanOp, ds: &[&str]) -> casteljau::Result<BooleanResult> {
 /// `C-1 1 -1 1 0 0` too — and not toward (2, 0), (1, 1), (2, 1), (0, 2), nor with the control
 /// point at the middle (`Q-0.5 0.5 0 0`); the last two inputs here are such controls.
 #[test]
-#[ignore = "library bug: a line and a degenerate quadratic on one segment toward negative x are not merged; simplify returns a zero-area cw contour"]
 fn a_line_and_a_degenerate_quadratic_on_one_segment_bound_nothing() {
     let mut wrong = vec![];
     for d in [
@@ -698,7 +696,6 @@ fn a_line_and_a_degenerate_quadratic_on_one_segment_bound_nothing() {
 /// The same unmerged overlap next to a triangle: the union is refused instead of being the
 /// triangle (area 1).
 #[test]
-#[ignore = "library bug: union with the unmerged line/degenerate-quadratic overlap fails: 'two edges agree to every order at a vertex'"]
 fn a_triangle_with_the_unmerged_sliver() {
     let r = simplify_of(BooleanOp::Union, &["M0 0 L0 -1 L-2 0 Z", "M0 0 L-1 1 Q-1 1 0 0 Z"]).unwrap();
     assert_eq!((r.contours, r.area), (1, Some(rat(1))));
