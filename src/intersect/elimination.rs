@@ -260,31 +260,6 @@ pub(super) fn bezoutian<T: CheckedRing>(p: &[T], q: &[T], m: usize) -> Option<Ve
     Some(out)
 }
 
-/// [`divided_difference`] with each coefficient (a polynomial in `s`) enclosed in `f64`, for
-/// [`no_common_root`](super::filter::no_common_root): from words when the coefficients allow
-/// (no big integers), else from [`divided_difference`].
-pub(super) fn divided_difference_enclosed(f: &[BigInt], w: &[BigInt]) -> Vec<super::filter::Coeffs> {
-    use super::filter::Coeffs;
-    let n = f.len().max(w.len());
-    let words = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
-    let Some(q) = words(f).zip(words(w)).and_then(|(f, w)| bezoutian(&f, &w, n)) else {
-        return divided_difference(f, w).iter().map(|c| Coeffs::new(c)).collect();
-    };
-    // as divided_difference: column j trimmed, empty columns at the end dropped
-    let column = |j: usize| -> Vec<i128> {
-        let mut c: Vec<i128> = (0..n).map(|i| q[i][j]).collect();
-        while c.last() == Some(&0) {
-            c.pop();
-        }
-        c
-    };
-    let mut out: Vec<Vec<i128>> = (0..n).map(column).collect();
-    while out.last().is_some_and(Vec::is_empty) {
-        out.pop();
-    }
-    out.iter().map(|c| Coeffs::from_words(c)).collect()
-}
-
 /// `(F(s)W(t) − F(t)W(s)) / (s − t)` as a polynomial in `t` with coefficients in `Z[s]`.
 pub(super) fn divided_difference(f: &[BigInt], w: &[BigInt]) -> Vec<zv::P> {
     // Q[i][j], the coefficient of s^i t^j: the Bézoutian of f and w in formal degree n

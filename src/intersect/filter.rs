@@ -743,3 +743,27 @@ impl Enclosure {
         (self.0, self.1)
     }
 }
+
+/// [`divided_difference`](super::elimination::divided_difference) with each coefficient (a polynomial in `s`) enclosed in `f64`, for
+/// [`no_common_root`]: from words when the coefficients allow
+/// (no big integers), else from the big-integer route.
+pub(super) fn divided_difference_enclosed(f: &[BigInt], w: &[BigInt]) -> Vec<Coeffs> {
+    let n = f.len().max(w.len());
+    let words = |p: &[BigInt]| p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<Vec<i128>>>();
+    let Some(q) = words(f).zip(words(w)).and_then(|(f, w)| super::elimination::bezoutian(&f, &w, n)) else {
+        return super::elimination::divided_difference(f, w).iter().map(|c| Coeffs::new(c)).collect();
+    };
+    // as divided_difference: column j trimmed, empty columns at the end dropped
+    let column = |j: usize| -> Vec<i128> {
+        let mut c: Vec<i128> = (0..n).map(|i| q[i][j]).collect();
+        while c.last() == Some(&0) {
+            c.pop();
+        }
+        c
+    };
+    let mut out: Vec<Vec<i128>> = (0..n).map(column).collect();
+    while out.last().is_some_and(Vec::is_empty) {
+        out.pop();
+    }
+    out.iter().map(|c| Coeffs::from_words(c)).collect()
+}

@@ -4,8 +4,8 @@
 //! rational when it is, proved irrational cheaply when it is not.
 
 use super::Domain;
-use super::elimination::divided_difference_enclosed;
 use super::filter;
+use super::filter::divided_difference_enclosed;
 use super::forms::{is_point, point_at, point_at_rational, rational_point, to_rational};
 use crate::num::point::Point;
 use crate::num::scalar::rat;

@@ -53,7 +53,8 @@ pub enum Winding {
     },
 }
 
-enum Event {
+/// What the ray meets along a cycle, in order.
+pub(crate) enum Event {
     /// The sign of `y − q_y` on a piece of positive length.
     Sign(Ordering),
     /// A point on the ray's line: is it right of `q`?
@@ -213,18 +214,21 @@ pub fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &Point<B
             }
         }
     }
-    // follow the cycle: each run of zeros between two signs is one event
+    Ok(Winding::Inside(count_crossings(&events)))
+}
+
+/// The crossings beyond the origin along one closed cycle of events: each run of zeros between
+/// two signs is one event, counted `+1` when the sign goes from negative to positive across it
+/// and `−1` the other way, when a zero of the run lies beyond the origin (0 without any sign:
+/// the whole cycle on the ray's line).
+pub(crate) fn count_crossings(events: &[Event]) -> i64 {
     let Some(start) = events.iter().position(|e| matches!(e, Event::Sign(_))) else {
-        return Ok(Winding::Inside(0)); // the whole path lies on the ray's line
+        return 0;
     };
     let n = events.len();
     let mut winding = 0i64;
-    let mut prev = match events[start] {
-        Event::Sign(s) => s,
-        Event::Zero(_) => unreachable!("start is a sign"),
-    };
-    let mut right = false;
-    let mut in_zero = false;
+    let Event::Sign(mut prev) = events[start] else { return 0 };
+    let (mut right, mut in_zero) = (false, false);
     for k in 1..=n {
         match &events[(start + k) % n] {
             Event::Zero(r) => {
@@ -241,7 +245,7 @@ pub fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &Point<B
             }
         }
     }
-    Ok(Winding::Inside(winding))
+    winding
 }
 
 /// How a winding number decides what is inside a path: the `fill-rule` of SVG and CSS (and the

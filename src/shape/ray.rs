@@ -11,7 +11,7 @@
 
 use super::segment::{Poly, Seg, add_scaled};
 use crate::error::{Error, Result};
-use crate::intersect::winding::rational_between;
+use crate::intersect::winding::{Event, count_crossings, rational_between};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
 use crate::poly::algebraic::RealAlgebraic;
@@ -102,11 +102,6 @@ pub(crate) enum RayWinding {
     On { cycle: usize, piece: usize, t: RealAlgebraic },
 }
 
-enum Event {
-    Sign(Ordering),
-    Zero(bool),
-}
-
 /// The winding number of the cycles around `q` by the ray from `q` along `axis` (the sum over
 /// the cycles), or where `q` lies on them (`Origin::Free`).
 ///
@@ -159,7 +154,7 @@ pub(crate) fn winding(
             }
             events.extend(own);
         }
-        total += count(&events);
+        total += count_crossings(&events);
     }
     Ok(RayWinding::Off(total))
 }
@@ -253,36 +248,6 @@ fn piece_events(
         }
     }
     Ok(None)
-}
-
-/// The crossings right of the origin along one cycle of events: each run of zeros between two
-/// signs is one event, counted `±1` when the sign changes across it and a zero of the run lies
-/// beyond the origin.
-fn count(events: &[Event]) -> i64 {
-    let Some(start) = events.iter().position(|e| matches!(e, Event::Sign(_))) else {
-        return 0;
-    };
-    let n = events.len();
-    let mut winding = 0i64;
-    let Event::Sign(mut prev) = events[start] else { return 0 };
-    let (mut right, mut in_zero) = (false, false);
-    for k in 1..=n {
-        match &events[(start + k) % n] {
-            Event::Zero(r) => {
-                in_zero = true;
-                right |= *r;
-            }
-            Event::Sign(s) => {
-                if in_zero && right && *s != prev {
-                    winding += if *s == Ordering::Greater { 1 } else { -1 };
-                }
-                in_zero = false;
-                right = false;
-                prev = *s;
-            }
-        }
-    }
-    winding
 }
 
 /// Pieces of whole segments (parameters `[0, 1]`, forwards).

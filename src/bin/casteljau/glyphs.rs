@@ -17,7 +17,7 @@
 //! counter-clockwise for CFF), so an outline already in that form comes back unchanged.
 
 use crate::args::BooleanArgs;
-use crate::shapes::{result_json, tolerance, verdict_json, verdict_text};
+use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{Font, Segment, close_for_fill, fill_path, font_count};
 use casteljau::intersect::{ClosedPath, FillRule};

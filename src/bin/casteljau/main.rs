@@ -29,6 +29,7 @@ mod render;
 mod scan;
 mod shapes;
 mod splines;
+mod verdicts;
 
 use args::{Cli, Command};
 use clap::Parser;

@@ -9,18 +9,18 @@
 //! (the fields of `casteljau::shape::Verdict`).
 
 use crate::args::{ArrangeArgs, BooleanArgs};
-use crate::batch::{Answer, Json, batch_lines, option_number};
+use crate::batch::{Answer, Json, batch_lines};
+use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{close_for_fill, fill_path, read_svg};
-use casteljau::intersect::{ClosedPath, FillRule};
+use casteljau::intersect::ClosedPath;
 use casteljau::num::{NumberMode, parse_points_in};
 use casteljau::shape::{
-    Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Edge, Face, InputPiece, Location, Shape, Verdict,
-    Vertex, boolean_within, check_against,
+    Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Edge, Face, InputPiece, Location, Shape, Vertex,
+    boolean_within, check_against,
 };
 use casteljau::work::Budget;
 use num_rational::BigRational;
-use num_traits::Signed;
 use serde::Serialize;
 use std::collections::HashMap;
 use std::io::Write;
@@ -76,15 +76,6 @@ fn svg_shape(file: &str, mode: NumberMode) -> Result<Shape> {
         }
     }
     Ok(Shape::new(ClosedPath::from_polynomial(contours).map_err(|e| invalid(format!("{file}: {e}")))?))
-}
-
-/// `--tol`: an exact, non-negative number.
-pub(crate) fn tolerance(text: &str) -> Result<BigRational> {
-    let tol = option_number("--tol", text)?;
-    if tol.is_negative() {
-        return Err(invalid(format!("--tol is a distance (≥ 0), not {tol}")));
-    }
-    Ok(tol)
 }
 
 /// The float results of `--against`: one for a single question, or per question line.
@@ -168,25 +159,6 @@ fn against_lines(a: &str, input: Option<&str>) -> Result<Against> {
         )));
     }
     Ok(Against::Lines(questions.into_iter().zip(answers.into_iter().map(str::to_string)).collect()))
-}
-
-/// `"agree"` or `"disagree: <problems>"`.
-pub(crate) fn verdict_text(v: &Verdict) -> String {
-    if v.agree { "agree".into() } else { format!("disagree: {}", v.problems.join("; ")) }
-}
-
-/// The JSON object of an answer: `head` (already written fields, each followed by a comma, or
-/// empty), `op`, `fill`, the result's fields, then `tail` fields (each preceded by a comma).
-pub(crate) fn result_json(head: &str, op: BooleanOp, fill: FillRule, r: &BooleanResult, tail: &str) -> String {
-    let body = serde_json::to_string(r).expect("exact strings and finite floats serialize");
-    let fill = serde_json::to_string(&fill).expect("a name serializes");
-    format!("{{{head}\"op\":\"{}\",\"fill\":{fill},{}{tail}}}", op.as_str(), &body[1..body.len() - 1])
-}
-
-/// `,"verdict":{…}` (or nothing).
-pub(crate) fn verdict_json(v: Option<&Verdict>) -> String {
-    v.map(|v| format!(",\"verdict\":{}", serde_json::to_string(v).expect("exact strings and finite floats serialize")))
-        .unwrap_or_default()
 }
 
 /// Runs `boolean`; returns the exit code.
