@@ -506,7 +506,24 @@ impl Arrangement {
         build(segs, inputs.len(), contours, links)
     }
 
-    /// The vertices.
+    /// The vertices, in order of first appearance along the inputs' segments. Each point is
+    /// exact (rational, or real algebraic where curves cross at an irrational point).
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::shape::{Arrangement, Shape};
+    /// // the diagonals of the unit square cross at (1/2, 1/2); the parabola y = 2x(1 − x)·… meets
+    /// // the line y = 1/4 at irrational points
+    /// let a: Shape = "M0 0 L1 1 L1 0 L0 1 Z".parse().unwrap();
+    /// let arr = Arrangement::new(&[a]).unwrap();
+    /// let centre = arr.vertices().into_iter().find(|v| v.degree == 4).unwrap();
+    /// assert_eq!(centre.point.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["1/2", "1/2"]);
+    /// let b: Shape = "M0 0 Q1 2 2 0 Z".parse().unwrap();
+    /// let c: Shape = "M0 0.25 H2 V2 H0 Z".parse().unwrap();
+    /// let arr = Arrangement::new(&[b, c]).unwrap();
+    /// let v = arr.vertices().into_iter().find(|v| v.point[0].to_rational().is_none()).unwrap();
+    /// assert_eq!(v.point[1].to_string(), "1/4");
+    /// ```
     pub fn vertices(&self) -> Vec<Vertex> {
         self.vertex_at
             .iter()
@@ -522,7 +539,18 @@ impl Arrangement {
             .collect()
     }
 
-    /// The edges.
+    /// The edges: each a piece of one segment between two vertices, with every input piece it
+    /// carries (overlapping pieces merged) and, per input, the winding numbers on its two sides
+    /// (`left − right` is the sum of `±1` over the pieces of that input it carries, `+1` along).
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::shape::{Arrangement, Shape};
+    /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
+    /// let arr = Arrangement::new(&[a.clone(), a]).unwrap();
+    /// // every edge carries a piece of both copies
+    /// assert!(arr.edges().iter().all(|e| e.pieces.len() == 2 && e.winding_left == [1, 1] && e.winding_right == [0, 0]));
+    /// ```
     pub fn edges(&self) -> Vec<Edge> {
         self.edges
             .iter()
@@ -544,6 +572,13 @@ impl Arrangement {
     }
 
     /// The number of inputs.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::shape::{Arrangement, Shape};
+    /// let a: Shape = "M0 0 H1 V1 Z".parse().unwrap();
+    /// assert_eq!(Arrangement::new(&[a.clone(), a.clone(), a]).unwrap().inputs(), 3);
+    /// ```
     pub fn inputs(&self) -> usize {
         self.inputs
     }

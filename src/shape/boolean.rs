@@ -117,6 +117,13 @@ pub enum Direction {
 
 impl Direction {
     /// The other direction.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::shape::Direction;
+    /// assert_eq!(Direction::Ccw.reversed(), Direction::Cw);
+    /// assert_eq!("cw".parse::<Direction>().unwrap().reversed(), Direction::default());
+    /// ```
     pub fn reversed(self) -> Direction {
         match self {
             Direction::Ccw => Direction::Cw,

@@ -57,6 +57,15 @@ pub struct Shape {
 
 impl Shape {
     /// The shape filled by a closed path.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::format::fill_path;
+    /// use casteljau::num::NumberMode;
+    /// use casteljau::shape::Shape;
+    /// let s = Shape::new(fill_path("M0 0 L1 0 L0 1", NumberMode::Exact).unwrap()); // closed for fill
+    /// assert_eq!(s, "M0 0 L1 0 L0 1 Z".parse().unwrap());
+    /// ```
     pub fn new(path: ClosedPath) -> Self {
         Shape { path }
     }
@@ -115,6 +124,13 @@ impl Shape {
     }
 
     /// The closed path.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::shape::Shape;
+    /// let s: Shape = "M0 0 H2 V2 H0 Z M5 5 H6 V6 Z".parse().unwrap();
+    /// assert_eq!(s.path().contours().len(), 2);
+    /// ```
     pub fn path(&self) -> &ClosedPath {
         &self.path
     }
