@@ -27,6 +27,7 @@ mod arrangement;
 mod boolean;
 mod germ;
 mod oracle;
+mod pairs;
 mod ray;
 mod segment;
 
