@@ -197,6 +197,8 @@ pub struct Arrangement {
     /// Per vertex, a representative `(segment, parameter)`.
     pub(crate) vertex_at: Vec<(usize, RealAlgebraic)>,
     pub(crate) degree: Vec<usize>,
+    /// The faces and, per bounded face, how many outer boundaries enclose it, once computed.
+    faces: std::sync::OnceLock<(Vec<Face>, Vec<usize>)>,
 }
 
 /// What two segments share, as found.
@@ -621,6 +623,19 @@ impl Arrangement {
     /// [`Error::InvalidArgument`] when two curves leave a vertex tangentially where their order
     /// cannot be decided exactly (an irrational vertex, or a cusp at the vertex).
     pub fn faces(&self) -> Result<Vec<Face>> {
+        Ok(self.faces_with_depths()?.0.clone())
+    }
+
+    /// The faces (computed once) with the depth of each bounded one.
+    fn faces_with_depths(&self) -> Result<&(Vec<Face>, Vec<usize>)> {
+        if let Some(f) = self.faces.get() {
+            return Ok(f);
+        }
+        let computed = self.compute_faces()?;
+        Ok(self.faces.get_or_init(|| computed))
+    }
+
+    fn compute_faces(&self) -> Result<(Vec<Face>, Vec<usize>)> {
         let all = |_: HalfEdge| true;
         let cycles = self.cycles(&all)?;
         let mut outer = vec![];
@@ -651,7 +666,7 @@ impl Arrangement {
             }
         }
         faces.push(unbounded);
-        Ok(faces)
+        Ok((faces, depth))
     }
 
     /// For each outer cycle, how many other outer cycles enclose its face.
@@ -706,22 +721,15 @@ impl Arrangement {
                 return Ok(Location::Edge { edge: i, t, t_float });
             }
         }
-        let faces = self.faces()?;
-        let bounded: Vec<&Face> = faces.iter().filter(|f| f.bounded).collect();
+        let (faces, depths) = self.faces_with_depths()?;
         let mut best: Option<(usize, usize)> = None;
-        for (i, f) in bounded.iter().enumerate() {
-            if self.winding_around(std::slice::from_ref(&f.outer), q)? == 0 {
+        // the bounded faces come first, in the order of `depths`
+        for (i, f) in faces.iter().enumerate().filter(|(_, f)| f.bounded) {
+            if best.is_some_and(|(_, d)| depths[i] <= d) {
                 continue;
             }
-            let depth = bounded
-                .iter()
-                .enumerate()
-                .filter(|&(j, g)| {
-                    j != i && self.beside(std::slice::from_ref(&g.outer), f.outer[0]).is_ok_and(|w| w != 0)
-                })
-                .count();
-            if best.is_none_or(|(_, d)| depth > d) {
-                best = Some((i, depth));
+            if self.winding_around(std::slice::from_ref(&f.outer), q)? != 0 {
+                best = Some((i, depths[i]));
             }
         }
         Ok(match best {
@@ -879,7 +887,7 @@ fn build(
         degree[e.from] += 1;
         degree[e.to] += 1;
     }
-    let mut arr = Arrangement { segs, inputs, contours, edges, vertex_at, degree };
+    let mut arr = Arrangement { segs, inputs, contours, edges, vertex_at, degree, faces: std::sync::OnceLock::new() };
     sides(&mut arr)?;
     Ok(arr)
 }
