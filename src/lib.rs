@@ -20,6 +20,10 @@
 //!   and spline nets.
 //! * [`classify`](mod@classify): exact cubic classification, the certified fast path, moving lines,
 //!   canonical forms, rational cubics.
+//! * [`intersect`](mod@intersect), [`shape`]: exact intersections, winding numbers, arrangements
+//!   of closed paths and boolean operations.
+//! * [`format`]: fonts, SVG and path data read exactly (the edge of the library).
+//! * [`lint`]: outline QA findings decided exactly, from the shapes and curves below.
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
 //!
@@ -43,6 +47,7 @@ pub mod format;
 #[doc(hidden)]
 pub mod internal;
 pub mod intersect;
+pub mod lint;
 pub mod num;
 pub mod oracle;
 pub mod plot;

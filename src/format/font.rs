@@ -208,11 +208,7 @@ impl<'a> Font<'a> {
             return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
         }
         match &self.outlines {
-            Outlines::Glyf { glyf, loca } => {
-                let mut contours = vec![];
-                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut contours)?;
-                Ok(contours.iter().map(quadratic_contour).collect())
-            }
+            Outlines::Glyf { .. } => Ok(self.outline_numbered(gid)?.0),
             Outlines::Cff(cff) => {
                 let fd = cff.subfont_index(GlyphId::new(gid)).unwrap_or(0);
                 let sub = cff.subfont(fd, &self.coords).map_err(|e| fail(format!("glyph {gid}: CFF: {e}")))?;
@@ -223,6 +219,47 @@ impl<'a> Font<'a> {
                 Ok(sink.contours)
             }
         }
+    }
+
+    /// The glyph's contours ([`Self::outline`]) with, per contour, per segment, per control
+    /// point, the index of that point among the contour's stored points: for `glyf`, the
+    /// contour's own points, off-curve points counted, `None` for an implied on-curve midpoint;
+    /// for CFF, the start point is 0 and every later control and end point takes the next
+    /// number (the closing line, and a last segment ending on the start point, end at 0), as
+    /// [`super::point_numbers`] gives.
+    ///
+    /// # Errors
+    /// As [`Self::outline`].
+    pub fn outline_numbered(&self, gid: u32) -> Result<(Vec<Contour>, Vec<super::PointNumbers>)> {
+        if gid >= self.num_glyphs {
+            return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
+        }
+        match &self.outlines {
+            Outlines::Glyf { glyf, loca } => {
+                let mut raw = vec![];
+                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut raw)?;
+                Ok(raw.iter().map(quadratic_contour).unzip())
+            }
+            Outlines::Cff(_) => {
+                let contours = self.outline(gid)?;
+                let numbers = contours.iter().map(super::point_numbers).collect();
+                Ok((contours, numbers))
+            }
+        }
+    }
+
+    /// The bounding box stored in the glyph's `glyf` header, `[x_min, y_min, x_max, y_max]`
+    /// (`None` for CFF fonts, an empty glyph, or an unreadable one).
+    pub fn stored_glyph_box(&self, gid: u32) -> Option<[i16; 4]> {
+        let Outlines::Glyf { glyf, loca } = &self.outlines else { return None };
+        let g = loca.get_glyf(GlyphId::new(gid), glyf).ok()??;
+        Some([g.x_min(), g.y_min(), g.x_max(), g.y_max()])
+    }
+
+    /// The font's bounding box from its `head` table, `[x_min, y_min, x_max, y_max]`.
+    pub fn head_box(&self) -> Option<[i16; 4]> {
+        let h = self.font.head().ok()?;
+        Some([h.x_min(), h.y_min(), h.x_max(), h.y_max()])
     }
 
     /// The glyph as a filled [`crate::shape::Shape`]: its contours ([`Self::outline`]), each
@@ -366,44 +403,56 @@ fn midpoint(a: &P, b: &P) -> P {
 
 /// The segments of a closed TrueType contour: lines between on-curve points, quadratics through
 /// off-curve points, and the implied on-curve midpoint between two off-curve points.
-fn quadratic_contour(points: &RawContour) -> Contour {
+/// Each segment's control points are numbered by their index in `points` (`None`: implied).
+fn quadratic_contour(points: &RawContour) -> (Contour, super::PointNumbers) {
     let mut segments = vec![];
+    let mut numbers = vec![];
     let n = points.len();
     if n == 0 {
-        return Contour { segments, closed: true };
+        return (Contour { segments, closed: true }, numbers);
     }
     let first_on = points.iter().position(|(_, on)| *on);
-    let (start, order): (P, Vec<&(P, bool)>) = match first_on {
-        Some(f) => (points[f].0.clone(), points[f + 1..].iter().chain(&points[..f]).collect()),
-        None => (midpoint(&points[n - 1].0, &points[0].0), points.iter().collect()),
+    let (start, start_index, order): (P, Option<usize>, Vec<usize>) = match first_on {
+        Some(f) => (points[f].0.clone(), Some(f), (f + 1..n).chain(0..f).collect()),
+        None => (midpoint(&points[n - 1].0, &points[0].0), None, (0..n).collect()),
     };
-    let mut cur = start.clone();
-    let mut pending: Option<P> = None;
-    for (q, on) in order {
+    let (mut cur, mut cur_index) = (start.clone(), start_index);
+    let mut pending: Option<usize> = None;
+    for i in order {
+        let (q, on) = &points[i];
         match (pending.take(), on) {
             (None, true) => {
                 segments.push(Segment::Bezier(vec![cur.clone(), q.clone()]));
-                cur = q.clone();
+                numbers.push(vec![cur_index, Some(i)]);
+                (cur, cur_index) = (q.clone(), Some(i));
             }
-            (None, false) => pending = Some(q.clone()),
+            (None, false) => pending = Some(i),
             (Some(c), true) => {
-                segments.push(Segment::Bezier(vec![cur.clone(), c, q.clone()]));
-                cur = q.clone();
+                segments.push(Segment::Bezier(vec![cur.clone(), points[c].0.clone(), q.clone()]));
+                numbers.push(vec![cur_index, Some(c), Some(i)]);
+                (cur, cur_index) = (q.clone(), Some(i));
             }
             (Some(c), false) => {
-                let m = midpoint(&c, q);
-                segments.push(Segment::Bezier(vec![cur.clone(), c, m.clone()]));
-                cur = m;
-                pending = Some(q.clone());
+                let m = midpoint(&points[c].0, q);
+                segments.push(Segment::Bezier(vec![cur.clone(), points[c].0.clone(), m.clone()]));
+                numbers.push(vec![cur_index, Some(c), None]);
+                (cur, cur_index) = (m, None);
+                pending = Some(i);
             }
         }
     }
     match pending {
-        Some(c) => segments.push(Segment::Bezier(vec![cur, c, start])),
-        None if cur != start => segments.push(Segment::Bezier(vec![cur, start])),
+        Some(c) => {
+            segments.push(Segment::Bezier(vec![cur, points[c].0.clone(), start]));
+            numbers.push(vec![cur_index, Some(c), start_index]);
+        }
+        None if cur != start => {
+            segments.push(Segment::Bezier(vec![cur, start]));
+            numbers.push(vec![cur_index, start_index]);
+        }
         None => {}
     }
-    Contour { segments, closed: true }
+    (Contour { segments, closed: true }, numbers)
 }
 
 /// Collects the charstring's path commands as exact segments.

@@ -22,6 +22,56 @@ pub use scan::{Element, ScanRecord, Source};
 pub use svg::{MAX_SVG_NODES, ShapeProblem, SvgShape, parse_transform, read_svg};
 pub use svg_path::{MAX_PATH_BYTES, close_for_fill, fill_path, parse_path};
 
+/// Per segment of a contour, per control point, the index of that point among the contour's
+/// stored points (`None`: a point the format implies, such as TrueType's on-curve midpoint
+/// between two off-curve points).
+pub type PointNumbers = Vec<Vec<Option<usize>>>;
+
+/// The numbering of a contour whose points are all stored, in drawing order: the first
+/// segment's start is 0, every later control and end point takes the next number, and a closed
+/// contour's last segment ends at 0 when it ends on the start point (CFF charstrings, SVG path
+/// data).
+///
+/// # Example
+/// ```
+/// use casteljau::format::{parse_path, point_numbers};
+/// let c = &parse_path("M0 0 L10 0 C10 5 5 10 0 10 Z", casteljau::num::NumberMode::Exact).unwrap()[0];
+/// // the line, the cubic and the closing line back to the start
+/// assert_eq!(point_numbers(c), [vec![Some(0), Some(1)], vec![Some(1), Some(2), Some(3), Some(4)], vec![Some(4), Some(0)]]);
+/// ```
+pub fn point_numbers(c: &Contour) -> PointNumbers {
+    let mut next = 0usize;
+    let start = c.segments.first().map(|s| match s {
+        Segment::Bezier(ps) => ps[0].clone(),
+        Segment::Skipped { from, .. } => from.clone(),
+    });
+    let last = c.segments.len().saturating_sub(1);
+    c.segments
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let count = match s {
+                Segment::Bezier(ps) => ps.len(),
+                Segment::Skipped { .. } => 2,
+            };
+            let end = match s {
+                Segment::Bezier(ps) => ps.last().cloned(),
+                Segment::Skipped { to, .. } => Some(to.clone()),
+            };
+            let mut numbers = vec![Some(next)];
+            for k in 1..count {
+                if k + 1 == count && i == last && c.closed && end == start {
+                    numbers.push(Some(0));
+                } else {
+                    next += 1;
+                    numbers.push(Some(next));
+                }
+            }
+            numbers
+        })
+        .collect()
+}
+
 use crate::num::point::Point;
 use num_rational::BigRational;
 

@@ -23,7 +23,7 @@
 //! assert_eq!(r.area.unwrap().to_string(), "2");
 //! ```
 
-mod arrangement;
+pub(crate) mod arrangement;
 mod boolean;
 mod germ;
 mod oracle;

@@ -106,6 +106,13 @@ pub enum Command {
     /// or text batches (other files), exactly: one JSON line per segment with its provenance,
     /// control points, classification and flags; a summary per file on stderr.
     Scan(ScanArgs),
+    /// Outline QA decided exactly, for fonts (.ttf .otf .ttc .otc), SVG files (.svg) and SVG path
+    /// data (--path): per glyph (element), findings of each kind (direction, self_intersection,
+    /// overlap, touching, overlapping_segments, missing_extremum, kink, collinear_points,
+    /// zero_length_segment, zero_length_handle, degenerate_curve, cusp, loop, bbox) with exact
+    /// evidence; text (one line per finding, a summary per file) or --json (one line per
+    /// finding); exit 1 when a denied kind is found, 2 for unreadable input.
+    Lint(LintArgs),
     /// Check a float library's answers (JSON Lines: node type, category, loop, cusp,
     /// inflections, parameters, double point) against the exact ones: every disagreement with
     /// the exact and float values and the curve; exit 1 when there is any.
@@ -637,6 +644,69 @@ pub struct ScanArgs {
     /// command takes, so scripts may pass it to all of them).
     #[arg(long)]
     pub json: bool,
+}
+
+/// `casteljau lint`.
+#[derive(Args, Debug)]
+pub struct LintArgs {
+    /// Font files (.ttf .otf .ttc .otc) and SVG files (.svg).
+    pub files: Vec<String>,
+    /// SVG path data to check, e.g. "M0 0 H10 V10 Z" (reported as file "<path>").
+    #[arg(long, allow_hyphen_values = true)]
+    pub path: Option<String>,
+    /// One JSON object per finding and line (the summary goes to stderr).
+    #[arg(long)]
+    pub json: bool,
+    /// Also write a self-contained HTML report (summary tables, every flagged glyph drawn).
+    #[arg(long)]
+    pub html: Option<std::path::PathBuf>,
+    /// Only these kinds (comma-separated).
+    #[arg(long, value_delimiter = ',', value_parser = parse_kind)]
+    pub only: Vec<casteljau::lint::Kind>,
+    /// Not these kinds (comma-separated).
+    #[arg(long, value_delimiter = ',', value_parser = parse_kind)]
+    pub ignore: Vec<casteljau::lint::Kind>,
+    /// The kinds that fail the run (exit 1), comma-separated, or "none"; findings explained by
+    /// rounding never fail it. Default: direction, self_intersection, overlapping_segments,
+    /// zero_length_segment.
+    #[arg(long, value_delimiter = ',')]
+    pub deny: Option<Vec<String>>,
+    /// The orientation of outer contours (holes the other way), in the file's own coordinates
+    /// (ccw: positive signed area). Default: cw for TrueType glyf fonts, ccw for CFF, CFF2, SVG
+    /// and path data.
+    #[arg(long, value_enum)]
+    pub direction: Option<Orientation>,
+    /// The kink angle in degrees (0 < angle < 90): a node whose tangents turn by less than this,
+    /// but not by zero, is a kink (decided exactly against the binary64 value of its tangent).
+    #[arg(long, default_value_t = 10.0)]
+    pub kink_angle: f64,
+    /// Ignore missing extrema that reach less than this many units beyond the segment's end
+    /// points (an exact number, compared exactly).
+    #[arg(long, allow_hyphen_values = true)]
+    pub extremum_min: Option<String>,
+    /// Fonts: only these glyphs (names, comma-separated); an unknown name is an error.
+    #[arg(long, value_delimiter = ',')]
+    pub glyphs: Vec<String>,
+    /// An instance of a variable CFF2 font, in user coordinates: "wght=700,wdth=80".
+    #[arg(long)]
+    pub variation: Option<String>,
+    /// How SVG numbers are read: `exact` (0.1 is 1/10) or `binary64`.
+    #[arg(long, value_enum, default_value_t = Numbers::Exact)]
+    pub numbers: Numbers,
+    /// Work budget per glyph, in work units (about 1 ns each): a glyph whose arrangement is
+    /// estimated to cost more is refused (an error line, exit 2) before it starts.
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
+    /// Threads (0: all cores). Output stays in glyph order.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No summary and no progress on stderr (text mode keeps its summary on stdout).
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+fn parse_kind(s: &str) -> Result<casteljau::lint::Kind, String> {
+    s.trim().parse().map_err(|e: casteljau::Error| e.to_string())
 }
 
 /// `casteljau check`.

@@ -281,7 +281,7 @@ pub fn run(args: &BooleanArgs, out: &mut dyn Write) -> i32 {
 }
 
 /// The glyph ids to answer, in glyph order: all, or those named (every name must exist).
-fn select(font: &Font<'_>, names: &[String]) -> std::result::Result<Vec<u32>, String> {
+pub(crate) fn select(font: &Font<'_>, names: &[String]) -> std::result::Result<Vec<u32>, String> {
     if names.is_empty() {
         return Ok((0..font.num_glyphs()).collect());
     }

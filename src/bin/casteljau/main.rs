@@ -23,6 +23,8 @@ mod curves;
 mod glyphs;
 mod input;
 mod intersect;
+mod lint;
+mod lint_html;
 mod options;
 mod pipeline;
 mod render;
@@ -66,6 +68,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Check(args) => check::run(&args, out),
         Command::Spline { op } => splines::run(op, out),
         Command::Scan(args) => scan::run(&args, out),
+        Command::Lint(args) => lint::run(&args, out),
         Command::Intersect(args) => intersect::run(&args, out),
         Command::Winding(args) => intersect::run_winding(&args, out),
         Command::Boolean(args) => shapes::boolean(&args, out),

@@ -384,7 +384,7 @@ fn summary(args: &ScanArgs, file: &str, t: &Tally) {
 }
 
 /// `wght=700,wdth=80` as `(tag, value)` pairs.
-fn parse_variation(text: &str) -> Result<Vec<(String, f64)>, String> {
+pub(crate) fn parse_variation(text: &str) -> Result<Vec<(String, f64)>, String> {
     text.split(',')
         .filter(|s| !s.trim().is_empty())
         .map(|s| {

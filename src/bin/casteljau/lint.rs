@@ -1,0 +1,442 @@
+//! `casteljau lint FILE... [--path DATA]`: outline QA decided exactly (see `casteljau::lint`).
+//!
+//! Every glyph of every font (or the `--glyphs` named), every shape element of an SVG file and
+//! the `--path` data is checked on all cores; the findings are written in glyph order, as text
+//! (one line per finding, then a summary per file) or `--json` (one JSON object per finding:
+//! the location fields `file`, `face` (collections), `glyph`, `glyph_id` or `element`, `tag`,
+//! then the fields of `casteljau::lint::Finding`; a glyph that could not be checked is a line
+//! with `error`). `--html` also writes the report of `lint_html`.
+//!
+//! Exit code: 2 when a file, a glyph or an element could not be read or checked; else 1 when a
+//! finding of a denied kind is not explained by rounding; else 0.
+
+use crate::args::LintArgs;
+use casteljau::format::{Element, Font, Source, font_count, parse_path, read_svg};
+use casteljau::lint::{Finding, Glyph, Kind, LintOptions, Severity, lint};
+use casteljau::num::NumberMode;
+use casteljau::shape::Direction;
+use casteljau::work::Budget;
+use num_rational::BigRational;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::io::{IsTerminal, Write};
+
+/// The findings of one glyph or element, with what the report draws.
+pub struct Unit {
+    /// Where it is (file, face, glyph, glyph id, or element and tag).
+    pub at: Source<'static>,
+    /// A label for people: the glyph name (or `gid N`), or the element.
+    pub label: String,
+    /// Its outline, as read.
+    pub glyph: Glyph,
+    /// Its findings (after `--only`/`--ignore`).
+    pub findings: Vec<Finding>,
+    /// Why it could not be checked.
+    pub error: Option<String>,
+}
+
+/// Counts of one file.
+#[derive(Default)]
+pub struct Tally {
+    /// Glyphs (elements) checked.
+    pub units: usize,
+    /// Glyphs with at least one finding not explained by rounding.
+    pub flagged: usize,
+    /// Per kind: (findings not explained by rounding, findings rounding explains).
+    pub by_kind: BTreeMap<Kind, (usize, usize)>,
+    /// Per severity, findings not explained by rounding.
+    pub by_severity: BTreeMap<Severity, usize>,
+    /// Glyphs that could not be checked.
+    pub errors: usize,
+}
+
+impl Tally {
+    fn add(&mut self, u: &Unit) {
+        self.units += 1;
+        if u.error.is_some() {
+            self.errors += 1;
+        }
+        if u.findings.iter().any(|f| !f.rounding) {
+            self.flagged += 1;
+        }
+        for f in &u.findings {
+            let e = self.by_kind.entry(f.kind).or_default();
+            if f.rounding {
+                e.1 += 1;
+            } else {
+                e.0 += 1;
+                *self.by_severity.entry(f.severity).or_default() += 1;
+            }
+        }
+    }
+}
+
+/// One file's results, for the report.
+pub struct FileReport {
+    /// The file as named.
+    pub file: String,
+    /// Its counts.
+    pub tally: Tally,
+    /// The glyphs (elements) with a finding or an error, in order.
+    pub units: Vec<Unit>,
+}
+
+struct Linter {
+    kinds: Vec<Kind>,
+    deny: Vec<Kind>,
+    direction: Option<Direction>,
+    kink_angle: f64,
+    extremum_min: Option<BigRational>,
+    max_work: f64,
+    mode: NumberMode,
+    json: bool,
+}
+
+impl Linter {
+    fn options(&self, outer: Direction) -> LintOptions {
+        let mut o = LintOptions::new(self.direction.unwrap_or(outer))
+            .with_kink_angle(self.kink_angle)
+            .expect("checked before the run");
+        o.kinds = self.kinds.clone();
+        o.extremum_min = self.extremum_min.clone();
+        o.budget = Budget::new(self.max_work, "--max-work");
+        o
+    }
+
+    fn check(&self, at: Source<'static>, label: String, glyph: Glyph, outer: Direction) -> Unit {
+        match lint(&glyph, &self.options(outer)) {
+            Ok(findings) => Unit { at, label, glyph, findings, error: None },
+            Err(e) => Unit { at, label, glyph, findings: vec![], error: Some(e.to_string()) },
+        }
+    }
+
+    fn write(&self, u: &Unit, out: &mut Vec<u8>) {
+        #[derive(Serialize)]
+        struct Line<'a> {
+            #[serde(flatten)]
+            at: &'a Source<'a>,
+            #[serde(flatten)]
+            finding: &'a Finding,
+        }
+        #[derive(Serialize)]
+        struct ErrorLine<'a> {
+            #[serde(flatten)]
+            at: &'a Source<'a>,
+            error: &'a str,
+        }
+        if self.json {
+            if let Some(e) = &u.error {
+                serde_json::to_writer(&mut *out, &ErrorLine { at: &u.at, error: e }).expect("strings serialize");
+                out.push(b'\n');
+            }
+            for f in &u.findings {
+                serde_json::to_writer(&mut *out, &Line { at: &u.at, finding: f }).expect("strings serialize");
+                out.push(b'\n');
+            }
+            return;
+        }
+        let file = u.at.file;
+        if let Some(e) = &u.error {
+            let _ = writeln!(out, "{file}: {}: error: {e}", u.label);
+        }
+        for f in &u.findings {
+            let mut place = vec![];
+            if let Some(c) = f.contour {
+                place.push(format!("contour {c}"));
+            }
+            if let Some([a, b]) = f.contours {
+                place.push(format!("contours {a} and {b}"));
+            }
+            if let Some(i) = f.index {
+                place.push(format!("segment {i}"));
+            }
+            if let Some(p) = f.point {
+                place.push(format!("point {p}"));
+            }
+            let place = if place.is_empty() { String::new() } else { format!(" {}", place.join(", ")) };
+            let rounding = if f.rounding { " (rounding)" } else { "" };
+            let _ = writeln!(
+                out,
+                "{file}: {}{place}: {} {}{rounding}: {}",
+                u.label,
+                f.severity.as_str(),
+                f.kind,
+                f.message
+            );
+        }
+    }
+}
+
+/// Glyphs answered per parallel chunk.
+const UNITS_PER_CHUNK: usize = 256;
+
+/// The kinds of `--deny`, `none` for none.
+fn denied(list: &Option<Vec<String>>) -> Result<Vec<Kind>, String> {
+    match list {
+        None => Ok(Kind::ALL.into_iter().filter(|k| k.denied_by_default()).collect()),
+        Some(names) => {
+            let mut kinds = vec![];
+            for n in names.iter().map(|n| n.trim()).filter(|n| !n.is_empty()) {
+                match n {
+                    "none" => {}
+                    "all" => kinds.extend(Kind::ALL),
+                    _ => kinds.push(n.parse::<Kind>().map_err(|e| format!("--deny: {e}"))?),
+                }
+            }
+            Ok(kinds)
+        }
+    }
+}
+
+/// Runs `lint`; returns the exit code.
+pub fn run(args: &LintArgs, out: &mut dyn Write) -> i32 {
+    match run_checked(args, out) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("casteljau: {e}");
+            2
+        }
+    }
+}
+
+fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
+    if args.files.is_empty() && args.path.is_none() {
+        return Err("lint needs FILE arguments or --path".into());
+    }
+    LintOptions::new(Direction::Ccw).with_kink_angle(args.kink_angle).map_err(|e| format!("--kink-angle: {e}"))?;
+    let extremum_min = args
+        .extremum_min
+        .as_deref()
+        .map(|s| casteljau::num::parse_number(s.trim(), Default::default()))
+        .transpose()
+        .map_err(|e| format!("--extremum-min: {e}"))?;
+    let variation = args.variation.as_deref().map(crate::scan::parse_variation).transpose()?;
+    let kinds: Vec<Kind> = Kind::ALL
+        .into_iter()
+        .filter(|k| args.only.is_empty() || args.only.contains(k))
+        .filter(|k| !args.ignore.contains(k))
+        .collect();
+    let linter = Linter {
+        kinds,
+        deny: denied(&args.deny)?,
+        direction: args.direction.map(Into::into),
+        kink_angle: args.kink_angle,
+        extremum_min,
+        max_work: args.max_work,
+        mode: args.numbers.into(),
+        json: args.json,
+    };
+    let Some(pool) = crate::batch::thread_pool(args.threads) else { return Ok(2) };
+    // every file is read before any work
+    let mut sources: Vec<(String, Vec<u8>)> = vec![];
+    for file in &args.files {
+        let data = std::fs::read(file).map_err(|e| format!("{file}: cannot read: {e}"))?;
+        sources.push((file.clone(), data));
+    }
+    let progress = !args.quiet && std::io::stderr().is_terminal();
+    let mut reports: Vec<FileReport> = vec![];
+    let mut code = 0;
+    let keep_units = args.html.is_some();
+    let mut finish = |file: &str, units: Vec<Unit>, tally: &mut Tally, kept: &mut Vec<Unit>, out: &mut dyn Write| {
+        let mut buf = vec![];
+        for u in units {
+            linter.write(&u, &mut buf);
+            tally.add(&u);
+            if u.findings.iter().any(|f| f.fails(&linter.deny)) {
+                code = code.max(1);
+            }
+            if u.error.is_some() {
+                code = 2;
+            }
+            if keep_units && (u.error.is_some() || !u.findings.is_empty()) {
+                kept.push(u);
+            }
+        }
+        if progress {
+            eprint!("\r\x1b[K{file}: {}", tally.units);
+        }
+        out.write_all(&buf).is_ok()
+    };
+    if let Some(d) = &args.path {
+        let mut tally = Tally::default();
+        let mut kept = vec![];
+        let at = Source { element: Some(Element::Index(0)), ..Source::new("<path>") };
+        let unit = match parse_path(d, linter.mode) {
+            Ok(contours) => linter.check(at, "path".into(), Glyph::new(contours), Direction::Ccw),
+            Err(e) => {
+                Unit { at, label: "path".into(), glyph: Glyph::default(), findings: vec![], error: Some(e.to_string()) }
+            }
+        };
+        if !finish("<path>", vec![unit], &mut tally, &mut kept, out) {
+            return Ok(2);
+        }
+        reports.push(FileReport { file: "<path>".into(), tally, units: kept });
+    }
+    for (file, data) in &sources {
+        let name: &'static str = Box::leak(file.clone().into_boxed_str());
+        let lower = file.to_ascii_lowercase();
+        let mut tally = Tally::default();
+        let mut kept = vec![];
+        let mut each = |units: Vec<Unit>| finish(name, units, &mut tally, &mut kept, out);
+        let ok = if [".ttf", ".otf", ".ttc", ".otc"].iter().any(|e| lower.ends_with(e)) {
+            lint_font(&linter, &pool, name, data, &args.glyphs, variation.as_deref(), &mut each)?
+        } else if lower.ends_with(".svg") {
+            lint_svg(&linter, &pool, name, data, &mut each)?
+        } else {
+            return Err(format!("{file}: lint reads fonts (.ttf .otf .ttc .otc) and SVG files (.svg)"));
+        };
+        if progress {
+            eprint!("\r\x1b[K");
+        }
+        if !ok {
+            return Ok(2);
+        }
+        reports.push(FileReport { file: file.clone(), tally, units: kept });
+    }
+    for r in &reports {
+        let line = summary(&r.file, &r.tally);
+        if args.json {
+            if !args.quiet {
+                eprintln!("{line}");
+            }
+        } else if writeln!(out, "{line}").is_err() {
+            return Ok(2);
+        }
+    }
+    if let Some(path) = &args.html {
+        let html = crate::lint_html::render(&reports, &linter.deny);
+        casteljau::plot::write_atomically(path, html.as_bytes())
+            .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+    }
+    Ok(code)
+}
+
+fn summary(file: &str, t: &Tally) -> String {
+    let kinds: Vec<String> = t
+        .by_kind
+        .iter()
+        .map(|(k, (n, r))| if *r > 0 { format!("{k} {n} (+{r} rounding)") } else { format!("{k} {n}") })
+        .collect();
+    let sev = |s: Severity| t.by_severity.get(&s).copied().unwrap_or(0);
+    format!(
+        "{file}: {} checked, {} flagged; {} errors, {} warnings, {} info; {}{}",
+        t.units,
+        t.flagged,
+        sev(Severity::Error),
+        sev(Severity::Warning),
+        sev(Severity::Info),
+        if kinds.is_empty() { "no findings".into() } else { kinds.join(", ") },
+        if t.errors > 0 { format!("; {} could not be checked", t.errors) } else { String::new() }
+    )
+}
+
+type Each<'e> = dyn FnMut(Vec<Unit>) -> bool + 'e;
+
+fn lint_font(
+    linter: &Linter,
+    pool: &rayon::ThreadPool,
+    file: &'static str,
+    data: &[u8],
+    names: &[String],
+    variation: Option<&[(String, f64)]>,
+    each: &mut Each<'_>,
+) -> Result<bool, String> {
+    let faces = font_count(data).map_err(|e| format!("{file}: {e}"))?;
+    for face in 0..faces {
+        let mut f = Font::open(data, face).map_err(|e| format!("{file}: {e}"))?;
+        if let Some(v) = variation {
+            f.set_variation(v).map_err(|e| format!("{file}: --variation: {e}"))?;
+        }
+        let gids = crate::glyphs::select(&f, names).map_err(|e| format!("{file}: {e}"))?;
+        let outer = if f.is_cff() { Direction::Ccw } else { Direction::Cw };
+        let rat4 = |b: [i16; 4]| b.map(|x| BigRational::from_integer(x.into()));
+        // an instance moves the outline away from the default instance's head box
+        let font_box = if variation.is_none() { f.head_box().map(rat4) } else { None };
+        for chunk in gids.chunks(UNITS_PER_CHUNK) {
+            let units: Vec<Unit> = pool.install(|| {
+                chunk
+                    .par_iter()
+                    .map(|&gid| {
+                        let name = f.glyph_name(gid);
+                        let label = name.clone().unwrap_or_else(|| format!("gid {gid}"));
+                        let at = Source {
+                            file,
+                            face: (faces > 1).then_some(face),
+                            glyph: Some(name),
+                            glyph_id: Some(gid),
+                            ..Default::default()
+                        };
+                        match f.outline_numbered(gid) {
+                            Ok((contours, numbers)) => {
+                                let empty = contours.iter().all(|c| c.segments.is_empty());
+                                let glyph = Glyph {
+                                    contours,
+                                    numbers,
+                                    stored_box: if empty { None } else { f.stored_glyph_box(gid).map(rat4) },
+                                    font_box: font_box.clone(),
+                                };
+                                linter.check(at, label, glyph, outer)
+                            }
+                            Err(e) => Unit {
+                                at,
+                                label,
+                                glyph: Glyph::default(),
+                                findings: vec![],
+                                error: Some(e.to_string()),
+                            },
+                        }
+                    })
+                    .collect()
+            });
+            if !each(units) {
+                return Ok(false);
+            }
+        }
+    }
+    Ok(true)
+}
+
+fn lint_svg(
+    linter: &Linter,
+    pool: &rayon::ThreadPool,
+    file: &'static str,
+    data: &[u8],
+    each: &mut Each<'_>,
+) -> Result<bool, String> {
+    let text = std::str::from_utf8(data).map_err(|e| format!("{file}: not UTF-8: {e}"))?;
+    let shapes = read_svg(text, linter.mode).map_err(|e| format!("{file}: {e}"))?;
+    for chunk in shapes.chunks(UNITS_PER_CHUNK) {
+        let units: Vec<Unit> = pool.install(|| {
+            chunk
+                .par_iter()
+                .filter(|s| !matches!(&s.contours, Err(e) if e.is_skipped()))
+                .map(|s| {
+                    let element = match &s.id {
+                        Some(id) => Element::Id(id.clone()),
+                        None => Element::Index(s.index),
+                    };
+                    let label = match &s.id {
+                        Some(id) => format!("{} #{id}", s.tag),
+                        None => format!("{} [{}]", s.tag, s.index),
+                    };
+                    let at = Source { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
+                    match &s.contours {
+                        Ok(contours) => linter.check(at, label, Glyph::new(contours.clone()), Direction::Ccw),
+                        Err(e) => Unit {
+                            at,
+                            label,
+                            glyph: Glyph::default(),
+                            findings: vec![],
+                            error: Some(format!("line {}: {e}", s.line)),
+                        },
+                    }
+                })
+                .collect()
+        });
+        if !each(units) {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}

@@ -1,0 +1,261 @@
+//! The checks between contours, from one exact arrangement of the glyph with each contour as
+//! its own input: `direction`, `self_intersection`, `overlap`, `touching` and
+//! `overlapping_segments`.
+//!
+//! * Each vertex lists the (contour, segment, parameter) records of the pieces that meet there.
+//!   A contour *passes* a vertex once per run of its records joined end-to-start (the end of a
+//!   segment and the start of the next non-degenerate one are one pass); two passes are a
+//!   `self_intersection`.
+//! * Contour `i` *crosses* contour `j` when the edges drawn by `i` and not by `j` lie both
+//!   where `j`'s winding number is zero and where it is not (or the same with `i` and `j`
+//!   swapped): `overlap`. Contours that meet without crossing are `touching`; an edge that
+//!   carries pieces of both is `overlapping_segments` (of one contour twice: `[i, i]`).
+//! * Contour `i` lies *inside* `j` when they do not cross and an edge drawn by `i` and not by
+//!   `j` has a non-zero winding number of `j`; the depth of `i` is the number of contours it
+//!   lies inside. Outer contours (even depth) run in the outer direction, holes (odd) the other
+//!   way; the orientation is the sign of the contour's exact signed area.
+
+use super::exact::{ExactValue, segment_area};
+use super::{Finding, Glyph, Kind, LintOptions, SharedPiece};
+use crate::error::Result;
+use crate::format::close_for_fill;
+use crate::intersect::ClosedPath;
+use crate::num::scalar::rat;
+use crate::poly::algebraic::RealAlgebraic;
+use crate::shape::{Arrangement, Direction, Shape};
+use std::cmp::Ordering;
+
+/// A piece's parameter at a vertex: (input, segment index in its contour, parameter).
+type Record = (usize, usize, RealAlgebraic);
+
+pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
+    let mut out = vec![];
+    let mut inputs = vec![];
+    let mut contour_of = vec![];
+    let mut areas = vec![];
+    for (ci, c) in g.contours.iter().enumerate() {
+        let segs = close_for_fill(c)?;
+        if segs.iter().all(|s| s.points().iter().all(|p| *p == s.points()[0])) {
+            continue;
+        }
+        areas.push(segs.iter().map(|s| segment_area(s.points())).fold(rat(0), |a, b| a + b));
+        inputs.push(Shape::new(ClosedPath::from_polynomial(vec![segs])?));
+        contour_of.push(ci);
+    }
+    let n = inputs.len();
+    if n == 0 {
+        return Ok(out);
+    }
+    let arr = Arrangement::new_within(&inputs, &o.budget)?;
+    let seg_of = |k: usize| &arr.segs[k];
+
+    // per vertex, the records of the pieces meeting there
+    let mut records: Vec<Vec<Record>> = vec![vec![]; arr.vertex_at.len()];
+    let mut add = |v: usize, r: Record| {
+        if !records[v].iter().any(|q| q.0 == r.0 && q.1 == r.1 && q.2 == r.2) {
+            records[v].push(r);
+        }
+    };
+    for e in &arr.edges {
+        for (k, lo, hi, fwd) in &e.carriers {
+            let s = seg_of(*k);
+            let (at_from, at_to) = if *fwd { (lo, hi) } else { (hi, lo) };
+            add(e.from, (s.input, s.index, at_from.clone()));
+            add(e.to, (s.input, s.index, at_to.clone()));
+        }
+    }
+    // the next non-degenerate segment of each segment of each input's one contour
+    let mut next_live: Vec<std::collections::HashMap<usize, usize>> = vec![Default::default(); n];
+    for (i, cs) in arr.contours.iter().enumerate() {
+        for c in cs {
+            let live: Vec<usize> = c.iter().copied().filter(|&k| !arr.segs[k].degenerate).collect();
+            for (p, &k) in live.iter().enumerate() {
+                next_live[i].insert(arr.segs[k].index, arr.segs[live[(p + 1) % live.len()]].index);
+            }
+        }
+    }
+    let (zero, one) = (RealAlgebraic::from(rat(0)), RealAlgebraic::from(rat(1)));
+    let passes = |rs: &[&Record], i: usize| -> usize {
+        let joints = rs
+            .iter()
+            .filter(|(_, s, t)| {
+                *t == one && next_live[i].get(s).is_some_and(|nx| rs.iter().any(|(_, s2, t2)| s2 == nx && *t2 == zero))
+            })
+            .count();
+        rs.len() - joints
+    };
+    let vertex_point = |v: usize| -> [ExactValue; 2] {
+        let (k, t) = &arr.vertex_at[v];
+        arr.segs[*k].point_at_algebraic(t).map(ExactValue::from)
+    };
+
+    // self-intersections
+    if o.wants(Kind::SelfIntersection) {
+        for (v, rs) in records.iter().enumerate() {
+            for i in 0..n {
+                let mine: Vec<&Record> = rs.iter().filter(|r| r.0 == i).collect();
+                if mine.len() < 2 || passes(&mine, i) < 2 {
+                    continue;
+                }
+                let at = vertex_point(v);
+                let list: Vec<String> = mine.iter().map(|(_, s, t)| format!("segment {s} at t = {t}")).collect();
+                let message =
+                    format!("contour {} meets itself at ({}, {}): {}", contour_of[i], at[0], at[1], list.join(", "));
+                let mut f = Finding::new(Kind::SelfIntersection, message).point_at(at);
+                f.contour = Some(contour_of[i]);
+                f.index = Some(mine[0].1);
+                f.parameters = vec![ExactValue::from(mine[0].2.clone())];
+                out.push(f);
+            }
+        }
+    }
+
+    // per pair (and per contour with itself): shared edges; per ordered pair: what each sees
+    let inputs_on = |e: &crate::shape::arrangement::EdgeData| -> Vec<usize> {
+        let mut v: Vec<usize> = e.carriers.iter().map(|c| arr.segs[c.0].input).collect();
+        v.sort_unstable();
+        v
+    };
+    // sees[i][j] = (some edge of i off j outside j, some inside j)
+    let mut sees = vec![vec![(false, false); n]; n];
+    for e in &arr.edges {
+        let on = inputs_on(e);
+        for &i in &on {
+            for j in 0..n {
+                if j == i || on.contains(&j) {
+                    continue;
+                }
+                if e.left[j] == 0 {
+                    sees[i][j].0 = true;
+                } else {
+                    sees[i][j].1 = true;
+                }
+            }
+        }
+    }
+    let crosses = |i: usize, j: usize| (sees[i][j].0 && sees[i][j].1) || (sees[j][i].0 && sees[j][i].1);
+    let inside = |i: usize, j: usize| !crosses(i, j) && sees[i][j].1;
+
+    for i in 0..n {
+        for j in i..n {
+            // shared edges
+            if o.wants(Kind::OverlappingSegments) {
+                for e in &arr.edges {
+                    let pieces: Vec<&(usize, RealAlgebraic, RealAlgebraic, bool)> =
+                        e.carriers.iter().filter(|c| arr.segs[c.0].input == i || arr.segs[c.0].input == j).collect();
+                    let (ni, nj) = (
+                        pieces.iter().filter(|c| arr.segs[c.0].input == i).count(),
+                        pieces.iter().filter(|c| arr.segs[c.0].input == j).count(),
+                    );
+                    let shared = if i == j { ni >= 2 } else { ni >= 1 && nj >= 1 };
+                    if !shared {
+                        continue;
+                    }
+                    let (a, b) = (vertex_point(e.from), vertex_point(e.to));
+                    let message = format!(
+                        "contours {} and {} both draw the piece from ({}, {}) to ({}, {})",
+                        contour_of[i], contour_of[j], a[0], a[1], b[0], b[1]
+                    );
+                    let mut f = Finding::new(Kind::OverlappingSegments, message).point_at(a).point_at(b);
+                    f.contours = Some([contour_of[i], contour_of[j]]);
+                    f.shared = pieces
+                        .iter()
+                        .map(|(k, lo, hi, fwd)| {
+                            let s = &arr.segs[*k];
+                            let (from, to) = if *fwd { (lo, hi) } else { (hi, lo) };
+                            SharedPiece {
+                                contour: contour_of[s.input],
+                                segment: s.index,
+                                from: ExactValue::from(from.clone()),
+                                to: ExactValue::from(to.clone()),
+                            }
+                        })
+                        .collect();
+                    out.push(f);
+                }
+            }
+            if i == j || !(o.wants(Kind::Overlap) || o.wants(Kind::Touching)) {
+                continue;
+            }
+            let contacts: Vec<usize> = (0..records.len())
+                .filter(|&v| records[v].iter().any(|r| r.0 == i) && records[v].iter().any(|r| r.0 == j))
+                .collect();
+            if contacts.is_empty() {
+                continue;
+            }
+            let kind = if crosses(i, j) { Kind::Overlap } else { Kind::Touching };
+            if !o.wants(kind) {
+                continue;
+            }
+            let points: Vec<[ExactValue; 2]> = contacts.iter().map(|&v| vertex_point(v)).collect();
+            let list: Vec<String> = points.iter().take(4).map(|p| format!("({}, {})", p[0], p[1])).collect();
+            let more = if points.len() > 4 { format!(" and {} more", points.len() - 4) } else { String::new() };
+            let message = match kind {
+                Kind::Overlap => format!(
+                    "contours {} and {} cross; they meet at {}{more}",
+                    contour_of[i],
+                    contour_of[j],
+                    list.join(", ")
+                ),
+                _ => format!(
+                    "contours {} and {} touch without crossing at {}{more}",
+                    contour_of[i],
+                    contour_of[j],
+                    list.join(", ")
+                ),
+            };
+            let mut f = Finding::new(kind, message);
+            for p in points {
+                f = f.point_at(p);
+            }
+            f.contours = Some([contour_of[i], contour_of[j]]);
+            out.push(f);
+        }
+    }
+
+    if o.wants(Kind::Direction) {
+        for i in 0..n {
+            let area = &areas[i];
+            let found = match area.cmp(&rat(0)) {
+                Ordering::Greater => Direction::Ccw,
+                Ordering::Less => Direction::Cw,
+                Ordering::Equal => continue,
+            };
+            let depth = (0..n).filter(|&j| j != i && inside(i, j)).count();
+            let expected = if depth % 2 == 0 { o.outer } else { o.outer.reversed() };
+            if found == expected {
+                continue;
+            }
+            let name = |d: Direction| if d == Direction::Ccw { "counter-clockwise" } else { "clockwise" };
+            let role = if depth % 2 == 0 { "an outer contour" } else { "a hole" };
+            let start = start_point(g, contour_of[i]);
+            let message = format!(
+                "contour {} runs {} (signed area {}) but is {role} (inside {depth} other contour{}), which should run {}",
+                contour_of[i],
+                name(found),
+                area,
+                if depth == 1 { "" } else { "s" },
+                name(expected)
+            );
+            let mut f = Finding::new(Kind::Direction, message);
+            if let Some(p) = start {
+                f = f.point_at(p);
+            }
+            f.contour = Some(contour_of[i]);
+            f.area = Some(area.clone());
+            f.depth = Some(depth);
+            f.expected = Some(expected);
+            out.push(f);
+        }
+    }
+    Ok(out)
+}
+
+fn start_point(g: &Glyph, ci: usize) -> Option<[ExactValue; 2]> {
+    g.contours[ci].segments.iter().find_map(|s| match s {
+        crate::format::Segment::Bezier(ps) => {
+            Some([ExactValue::from(ps[0].coords[0].clone()), ExactValue::from(ps[0].coords[1].clone())])
+        }
+        crate::format::Segment::Skipped { .. } => None,
+    })
+}

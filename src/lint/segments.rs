@@ -1,0 +1,303 @@
+//! The checks of one segment (`zero_length_segment`, `zero_length_handle`, `degenerate_curve`,
+//! `missing_extremum`, `cusp`, `loop`) and of the glyph's boxes (`bbox`).
+
+use super::exact::{ExactValue, strictly_inside};
+use super::{Finding, Glyph, Kind, LintOptions};
+use crate::classify::classify;
+use crate::curve::BezierCurve;
+use crate::format::Segment;
+use crate::num::point::Point;
+use crate::num::quadratic_field::QuadraticExt;
+use crate::num::scalar::{Scalar, rat};
+use crate::poly::algebraic::RealAlgebraic;
+use num_rational::BigRational;
+use num_traits::Signed;
+use std::cmp::Ordering;
+
+type P = Point<BigRational>;
+
+/// The power coefficients `c_k = C(n, k) Δ^k P0` of coordinate `axis`.
+pub(super) fn power(ps: &[P], axis: usize) -> Vec<BigRational> {
+    let mut diff: Vec<BigRational> = ps.iter().map(|p| p.coords[axis].clone()).collect();
+    let n = diff.len() - 1;
+    let mut out = Vec::with_capacity(n + 1);
+    let mut binom = rat(1);
+    for k in 0..=n {
+        out.push(&binom * &diff[0]);
+        binom = binom * rat((n - k) as i64) / rat(k as i64 + 1);
+        for i in 0..n - k {
+            diff[i] = &diff[i + 1] - &diff[i];
+        }
+    }
+    out
+}
+
+fn derivative(p: &[BigRational]) -> Vec<BigRational> {
+    p.iter().enumerate().skip(1).map(|(k, c)| c * rat(k as i64)).collect()
+}
+
+fn trimmed(mut p: Vec<BigRational>) -> Vec<BigRational> {
+    while p.last().is_some_and(|c| *c == rat(0)) {
+        p.pop();
+    }
+    p
+}
+
+fn exact_point(ps: &[P], t: &RealAlgebraic) -> [ExactValue; 2] {
+    [0, 1].map(|a| ExactValue::from(t.map_rational(&power(ps, a), &[rat(1)])))
+}
+
+fn quadratic_point(ps: &[P], t: &QuadraticExt<BigRational>) -> [ExactValue; 2] {
+    [0, 1].map(|a| {
+        let c = power(ps, a);
+        let v = c.iter().rev().fold(QuadraticExt::zero(), |acc, k| acc * t + &QuadraticExt::from_base(k.clone()));
+        ExactValue::from(v)
+    })
+}
+
+/// The simple real roots of `p` (degree ≤ 2, power form) strictly inside `(0, 1)`: where the
+/// polynomial changes sign. A double root (zero discriminant) is no sign change.
+fn sign_changes(p: &[BigRational]) -> Vec<RealAlgebraic> {
+    let p = trimmed(p.to_vec());
+    match p.len() {
+        0 | 1 => vec![],
+        2 => {
+            let t = -&p[0] / &p[1];
+            if strictly_inside(&t) { vec![t.into()] } else { vec![] }
+        }
+        _ => {
+            let disc = &p[1] * &p[1] - rat(4) * &p[2] * &p[0];
+            if disc <= rat(0) {
+                return vec![];
+            }
+            RealAlgebraic::roots_in(&p, &rat(0), &rat(1))
+                .into_iter()
+                .filter(|t| t.sign() == Ordering::Greater && t.to_rational() != Some(&rat(1)))
+                .collect()
+        }
+    }
+}
+
+/// The findings of one segment with control points `ps`.
+pub(super) fn check(ps: &[P], o: &LintOptions) -> Vec<Finding> {
+    let mut out = vec![];
+    let n = ps.len() - 1;
+    if ps.iter().all(|p| *p == ps[0]) {
+        if o.wants(Kind::ZeroLengthSegment) {
+            let what = if n == 1 { "line" } else { "curve" };
+            out.push(
+                Finding::new(Kind::ZeroLengthSegment, format!("a {what} of length zero at {}", ps[0]))
+                    .point_at(point(&ps[0])),
+            );
+        }
+        return out;
+    }
+    if n >= 2 && o.wants(Kind::ZeroLengthHandle) {
+        for (h, end, name) in [(1, 0, "first"), (n - 1, n, "last")] {
+            if ps[h] == ps[end] {
+                out.push(
+                    Finding::new(Kind::ZeroLengthHandle, format!("the {name} handle has length zero (on {})", ps[end]))
+                        .point_at(point(&ps[end])),
+                );
+            }
+        }
+    }
+    let powers = [power(ps, 0), power(ps, 1)];
+    if n >= 2 && o.wants(Kind::DegenerateCurve) {
+        let real = (0..=n).rev().find(|&k| powers[0][k] != rat(0) || powers[1][k] != rat(0)).unwrap_or(0);
+        if real < n {
+            let what = ["a point", "a line", "a quadratic"][real];
+            out.push(Finding::new(
+                Kind::DegenerateCurve,
+                format!("written with degree {n}, the curve is {what} (its power form has degree {real})"),
+            ));
+        }
+    }
+    if n >= 2 && o.wants(Kind::MissingExtremum) {
+        out.extend(extrema(ps, &powers, o));
+    }
+    let collinear = {
+        let d = |i: usize| [&ps[i].coords[0] - &ps[0].coords[0], &ps[i].coords[1] - &ps[0].coords[1]];
+        (1..=n).all(|i| (1..=n).all(|j| super::exact::cross(&d(i), &d(j)) == rat(0)))
+    };
+    if (n == 3 || (n == 2 && collinear)) && (o.wants(Kind::Cusp) || o.wants(Kind::Loop)) {
+        out.extend(cusps_and_loops(ps, o));
+    }
+    out
+}
+
+fn point(p: &P) -> [ExactValue; 2] {
+    [ExactValue::from(p.coords[0].clone()), ExactValue::from(p.coords[1].clone())]
+}
+
+/// `missing_extremum`: where a coordinate's derivative changes sign strictly inside the segment
+/// (and the other does not vanish there: that is a cusp).
+fn extrema(ps: &[P], powers: &[Vec<BigRational>; 2], o: &LintOptions) -> Vec<Finding> {
+    let mut out = vec![];
+    let n = ps.len() - 1;
+    for axis in 0..2 {
+        let d = derivative(&powers[axis]);
+        let other = derivative(&powers[1 - axis]);
+        for t in sign_changes(&d) {
+            if t.sign_of(&other) == Ordering::Equal {
+                continue;
+            }
+            let (e0, e1) = (&ps[0].coords[axis], &ps[n].coords[axis]);
+            let (lo, hi) = if e0 <= e1 { (e0, e1) } else { (e1, e0) };
+            let shifted = |c: &BigRational, sign: i64| -> Vec<BigRational> {
+                let mut p: Vec<BigRational> = powers[axis].iter().map(|x| x * rat(sign)).collect();
+                p[0] -= c * rat(sign);
+                p
+            };
+            let above = t.map_rational(&shifted(hi, 1), &[rat(1)]);
+            let below = t.map_rational(&shifted(lo, -1), &[rat(1)]);
+            let extent = if above >= below { above } else { below };
+            if let Some(m) = &o.extremum_min
+                && extent < RealAlgebraic::from(m.clone())
+            {
+                continue;
+            }
+            let half = rat(1) / rat(2);
+            let near = |e: &BigRational| {
+                let mut p = shifted(e, 1);
+                let p0 = p[0].clone();
+                p[0] = &p0 - &half;
+                let below_upper = t.sign_of(&p) == Ordering::Less;
+                p[0] = p0 + &half;
+                below_upper && t.sign_of(&p) == Ordering::Greater
+            };
+            let rounding = near(e0) || near(e1);
+            let at = exact_point(ps, &t);
+            let (name, tangent) = if axis == 0 { ("x", "vertical") } else { ("y", "horizontal") };
+            let extent = ExactValue::from(extent);
+            let message = format!(
+                "{tangent} tangent at t = {t}: {name} = {} is an extremum inside the segment, not a node ({} beyond its end points{})",
+                at[axis],
+                extent,
+                if rounding { "; within half a unit of an end point's coordinate" } else { "" }
+            );
+            let mut f = Finding::new(Kind::MissingExtremum, message).point_at(at).rounded(rounding);
+            f.parameters.push(ExactValue::from(t));
+            f.axis = Some(name);
+            f.extent = Some(extent);
+            out.push(f);
+        }
+    }
+    out
+}
+
+/// `cusp` (strictly inside) and `loop` from the exact classification.
+fn cusps_and_loops(ps: &[P], o: &LintOptions) -> Vec<Finding> {
+    let mut out = vec![];
+    let Ok(k) = BezierCurve::new(ps.to_vec()).and_then(|c| classify(&c)) else { return out };
+    if o.wants(Kind::Cusp) {
+        for t in k.cusp_parameters.iter().filter(|t| strictly_inside(*t)) {
+            let at = quadratic_point(ps, t);
+            let message = format!("the tangent vanishes and the curve turns back at t = {t}, ({}, {})", at[0], at[1]);
+            let mut f = Finding::new(Kind::Cusp, message).point_at(at);
+            f.parameters.push(ExactValue::from(t.clone()));
+            out.push(f);
+        }
+    }
+    if o.wants(Kind::Loop) && k.segment.has_loop {
+        let ts: Vec<ExactValue> = k.double_point_parameters.iter().map(|t| ExactValue::from(t.clone())).collect();
+        let at = match &k.double_point {
+            Some(p) => point(p),
+            None => quadratic_point(ps, &k.double_point_parameters[0]),
+        };
+        let message = format!(
+            "the segment crosses itself at ({}, {}), t = {}",
+            at[0],
+            at[1],
+            ts.iter().map(|t| t.to_string()).collect::<Vec<_>>().join(" and ")
+        );
+        let mut f = Finding::new(Kind::Loop, message).point_at(at);
+        f.parameters = ts;
+        out.push(f);
+    }
+    out
+}
+
+/// `bbox`: the stored `glyf` box against the box of the points, and the exact outline against
+/// the font's `head` box.
+pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
+    let mut out = vec![];
+    let segments: Vec<&Vec<P>> = g
+        .contours
+        .iter()
+        .flat_map(|c| &c.segments)
+        .filter_map(|s| match s {
+            Segment::Bezier(ps) => Some(ps),
+            Segment::Skipped { .. } => None,
+        })
+        .collect();
+    if segments.is_empty() {
+        return out;
+    }
+    let side = |b: &[BigRational; 4]| b.iter().cloned().map(ExactValue::from).collect::<Vec<_>>();
+    if let Some(stored) = &g.stored_box {
+        let mut b = [0, 1, 0, 1].map(|a| segments[0][0].coords[a].clone());
+        for p in segments.iter().flat_map(|s| s.iter()) {
+            for a in 0..2 {
+                if p.coords[a] < b[a] {
+                    b[a] = p.coords[a].clone();
+                }
+                if p.coords[a] > b[a + 2] {
+                    b[a + 2] = p.coords[a].clone();
+                }
+            }
+        }
+        if b != *stored {
+            let rounding = (0..4).all(|i| (&b[i] - &stored[i]).abs() < rat(1));
+            let message = format!(
+                "the glyph header stores the box [{}] but its points span [{}]",
+                stored.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", "),
+                b.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+            );
+            let mut f = Finding::new(Kind::Bbox, message).rounded(rounding);
+            f.stored = side(stored);
+            f.computed = side(&b);
+            out.push(f);
+        }
+    }
+    if let Some(font) = &g.font_box {
+        // the exact outline's extreme coordinates: end points and interior extrema
+        let mut worst: [Option<RealAlgebraic>; 4] = [None, None, None, None];
+        for ps in &segments {
+            for axis in 0..2 {
+                let c = power(ps, axis);
+                let mut values: Vec<RealAlgebraic> =
+                    [&ps[0], &ps[ps.len() - 1]].iter().map(|p| RealAlgebraic::from(p.coords[axis].clone())).collect();
+                if ps.len() > 2 {
+                    values.extend(sign_changes(&derivative(&c)).iter().map(|t| t.map_rational(&c, &[rat(1)])));
+                }
+                for v in values {
+                    if worst[axis].as_ref().is_none_or(|w| v < *w) {
+                        worst[axis] = Some(v.clone());
+                    }
+                    if worst[axis + 2].as_ref().is_none_or(|w| v > *w) {
+                        worst[axis + 2] = Some(v);
+                    }
+                }
+            }
+        }
+        let worst = worst.map(|w| w.expect("a segment"));
+        let outside = (0..2).any(|a| worst[a] < RealAlgebraic::from(font[a].clone()))
+            || (2..4).any(|a| worst[a] > RealAlgebraic::from(font[a].clone()));
+        if outside {
+            let beyond_one = (0..2).any(|a| worst[a] <= RealAlgebraic::from(&font[a] - rat(1)))
+                || (2..4).any(|a| worst[a] >= RealAlgebraic::from(&font[a] + rat(1)));
+            let computed: Vec<ExactValue> = worst.iter().cloned().map(ExactValue::from).collect();
+            let message = format!(
+                "the exact outline spans [{}], outside the font's head box [{}]",
+                computed.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", "),
+                font.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+            );
+            let mut f = Finding::new(Kind::Bbox, message).rounded(!beyond_one);
+            f.stored = side(font);
+            f.computed = computed;
+            out.push(f);
+        }
+    }
+    out
+}
