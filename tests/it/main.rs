@@ -19,6 +19,8 @@ mod cli_shapes;
 mod cli_spline;
 #[cfg(feature = "cli")]
 mod exactness_regressions;
+#[cfg(feature = "fonts")]
+mod font_builder;
 #[cfg(all(feature = "fonts", feature = "svg"))]
 mod formats;
 #[cfg(feature = "cli")]
