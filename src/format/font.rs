@@ -208,7 +208,7 @@ impl<'a> Font<'a> {
             return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
         }
         match &self.outlines {
-            Outlines::Glyf { .. } => Ok(self.outline_numbered(gid)?.0),
+            Outlines::Glyf { .. } => Ok(self.outline_numbered(gid)?.contours),
             Outlines::Cff(cff) => {
                 let fd = cff.subfont_index(GlyphId::new(gid)).unwrap_or(0);
                 let sub = cff.subfont(fd, &self.coords).map_err(|e| fail(format!("glyph {gid}: CFF: {e}")))?;
@@ -226,11 +226,12 @@ impl<'a> Font<'a> {
     /// contour's own points, off-curve points counted, `None` for an implied on-curve midpoint;
     /// for CFF, the start point is 0 and every later control and end point takes the next
     /// number (the closing line, and a last segment ending on the start point, end at 0), as
-    /// [`super::point_numbers`] gives.
+    /// [`super::point_numbers`] gives. Contours of one point (anchors some `glyf` fonts keep
+    /// in their outlines) have no segment; their points are listed apart.
     ///
     /// # Errors
     /// As [`Self::outline`].
-    pub fn outline_numbered(&self, gid: u32) -> Result<(Vec<Contour>, Vec<super::PointNumbers>)> {
+    pub fn outline_numbered(&self, gid: u32) -> Result<super::NumberedOutline> {
         if gid >= self.num_glyphs {
             return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
         }
@@ -238,12 +239,14 @@ impl<'a> Font<'a> {
             Outlines::Glyf { glyf, loca } => {
                 let mut raw = vec![];
                 glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut raw)?;
-                Ok(raw.iter().map(quadratic_contour).unzip())
+                let lone_points = raw.iter().filter(|c| c.len() == 1).map(|c| c[0].0.clone()).collect();
+                let (contours, numbers) = raw.iter().map(quadratic_contour).unzip();
+                Ok(super::NumberedOutline { contours, numbers, lone_points })
             }
             Outlines::Cff(_) => {
                 let contours = self.outline(gid)?;
                 let numbers = contours.iter().map(super::point_numbers).collect();
-                Ok((contours, numbers))
+                Ok(super::NumberedOutline { contours, numbers, lone_points: vec![] })
             }
         }
     }

@@ -27,6 +27,18 @@ pub use svg_path::{MAX_PATH_BYTES, close_for_fill, fill_path, parse_path};
 /// between two off-curve points).
 pub type PointNumbers = Vec<Vec<Option<usize>>>;
 
+/// A glyph's contours with the numbering of their stored points ([`PointNumbers`], one per
+/// contour) and the points of its one-point contours, which draw nothing.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct NumberedOutline {
+    /// The contours.
+    pub contours: Vec<Contour>,
+    /// Per contour, the stored point numbers of every control point.
+    pub numbers: Vec<PointNumbers>,
+    /// The points of contours of one point.
+    pub lone_points: Vec<Point<BigRational>>,
+}
+
 /// The numbering of a contour whose points are all stored, in drawing order: the first
 /// segment's start is 0, every later control and end point takes the next number, and a closed
 /// contour's last segment ends at 0 when it ends on the start point (CFF charstrings, SVG path

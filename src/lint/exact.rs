@@ -139,3 +139,29 @@ pub(crate) fn segment_area(ps: &[Point<BigRational>]) -> BigRational {
 pub(crate) fn strictly_inside<K: Exact>(x: &K) -> bool {
     x.sign() == Ordering::Greater && (K::one() - x).sign() == Ordering::Greater
 }
+
+/// Largest doubled coordinate the word-sized screens take: products of two differences and
+/// their squares stay far inside `i128`.
+const SMALL: i64 = 1 << 40;
+
+/// `2p` when both coordinates are integers or halves (font units: `glyf` points and their
+/// implied midpoints, integral CFF points) of magnitude below 2^39: the word-sized screens of
+/// the checks work on these exactly.
+pub(crate) fn doubled(p: &Point<BigRational>) -> Option<[i64; 2]> {
+    use num_traits::ToPrimitive;
+    let one = |c: &BigRational| -> Option<i64> {
+        let n = c.numer().to_i64()?;
+        let v = match c.denom().to_i64()? {
+            1 => n.checked_mul(2)?,
+            2 => n,
+            _ => return None,
+        };
+        (v.abs() < SMALL).then_some(v)
+    };
+    Some([one(&p.coords[0])?, one(&p.coords[1])?])
+}
+
+/// The doubled control points of a segment, when every one is small ([`doubled`]).
+pub(crate) fn doubled_all(ps: &[Point<BigRational>]) -> Option<Vec<[i64; 2]>> {
+    ps.iter().map(doubled).collect()
+}

@@ -383,6 +383,9 @@ pub struct Glyph {
     /// Per contour, the stored point numbers of every control point ([`point_numbers`] by
     /// default).
     pub numbers: Vec<PointNumbers>,
+    /// Stored points on no segment (contours of one point): they count for the box of the
+    /// points.
+    pub lone_points: Vec<crate::num::point::Point<BigRational>>,
     /// The box stored in the glyph's header (`glyf`), `[x_min, y_min, x_max, y_max]`.
     pub stored_box: Option<[BigRational; 4]>,
     /// The font's box (`head`): the exact outline must stay inside it.
@@ -399,7 +402,7 @@ impl Glyph {
     /// ```
     pub fn new(contours: Vec<Contour>) -> Self {
         let numbers = contours.iter().map(point_numbers).collect();
-        Glyph { contours, numbers, stored_box: None, font_box: None }
+        Glyph { contours, numbers, lone_points: vec![], stored_box: None, font_box: None }
     }
 }
 

@@ -78,10 +78,48 @@ fn sign_changes(p: &[BigRational]) -> Vec<RealAlgebraic> {
     }
 }
 
+/// A word-sized screen (doubled coordinates, exact): `true` when the segment surely has no
+/// finding of the kinds asked for — it is not a point, has no zero-length handle, has its
+/// written degree, and its control polygon is monotone in x and in y. Then `x′` (or `y′`) keeps
+/// one strict sign inside `(0, 1)` (a Bernstein sum of same-signed differences vanishes inside
+/// only when they are all zero), so there is no interior extremum, cusp or loop.
+fn clean(q: &[[i64; 2]], o: &LintOptions) -> bool {
+    let n = q.len() - 1;
+    if q.iter().all(|p| *p == q[0]) {
+        return false;
+    }
+    if n == 1 {
+        return true;
+    }
+    if o.wants(Kind::ZeroLengthHandle) && (q[1] == q[0] || q[n - 1] == q[n]) {
+        return false;
+    }
+    if o.wants(Kind::DegenerateCurve) {
+        // the leading power coefficient Δ^n P0 (times C(n, n) = 1)
+        let lead = |a: usize| -> i128 {
+            let v: Vec<i128> = q.iter().map(|p| p[a] as i128).collect();
+            if n == 2 { v[0] - 2 * v[1] + v[2] } else { v[3] - 3 * v[2] + 3 * v[1] - v[0] }
+        };
+        if lead(0) == 0 && lead(1) == 0 {
+            return false;
+        }
+    }
+    let monotone = |a: usize| {
+        let d: Vec<i64> = q.windows(2).map(|w| w[1][a] - w[0][a]).collect();
+        d.iter().all(|&x| x >= 0) || d.iter().all(|&x| x <= 0)
+    };
+    !(o.wants(Kind::MissingExtremum) || o.wants(Kind::Cusp) || o.wants(Kind::Loop)) || (monotone(0) && monotone(1))
+}
+
 /// The findings of one segment with control points `ps`.
 pub(super) fn check(ps: &[P], o: &LintOptions) -> Vec<Finding> {
     let mut out = vec![];
     let n = ps.len() - 1;
+    if let Some(q) = super::exact::doubled_all(ps)
+        && clean(&q, o)
+    {
+        return out;
+    }
     if ps.iter().all(|p| *p == ps[0]) {
         if o.wants(Kind::ZeroLengthSegment) {
             let what = if n == 1 { "line" } else { "curve" };
@@ -237,7 +275,7 @@ pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
     let side = |b: &[BigRational; 4]| b.iter().cloned().map(ExactValue::from).collect::<Vec<_>>();
     if let Some(stored) = &g.stored_box {
         let mut b = [0, 1, 0, 1].map(|a| segments[0][0].coords[a].clone());
-        for p in segments.iter().flat_map(|s| s.iter()) {
+        for p in segments.iter().flat_map(|s| s.iter()).chain(&g.lone_points) {
             for a in 0..2 {
                 if p.coords[a] < b[a] {
                     b[a] = p.coords[a].clone();

@@ -343,9 +343,10 @@ impl Arrangement {
             .iter()
             .map(|&k| crate::work::intersection(segs[k].degree(), segs[k].degree(), est(&segs[k])))
             .sum::<f64>();
-        // one ray per edge at most, each over every segment
+        // one ray per edge at most, each over every segment (each input's winding number from
+        // its own segments: the inputs share the ray, they do not multiply it)
         let rays: f64 = segs.iter().map(|s| crate::work::winding_segment(s.degree(), est(s))).sum();
-        estimate += rays * (segs.len() + 2 * general.len()) as f64 * inputs.len().max(1) as f64 / 8.0;
+        estimate += rays * (segs.len() + 2 * general.len()) as f64 / 8.0;
         budget.check(
             format!("the arrangement of {} segments ({} pairs to solve)", segs.len(), general.len()),
             estimate,

@@ -1175,14 +1175,12 @@ fn check_lint(data: &[u8], clean: &[u8], planted: &[Planted], file: &str) {
 
 #[cfg(feature = "cli")]
 #[test]
-#[ignore = "needs casteljau lint"]
 fn lint_planted_truetype_finds_each_defect() {
     check_lint(&planted_truetype().0, &clean_truetype(), PLANTED_TT, "planted.ttf");
 }
 
 #[cfg(feature = "cli")]
 #[test]
-#[ignore = "needs casteljau lint"]
 fn lint_planted_cff_finds_each_defect() {
     check_lint(&planted_cff().0, &clean_cff(), PLANTED_CFF, "planted.otf");
 }

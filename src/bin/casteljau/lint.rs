@@ -368,11 +368,12 @@ fn lint_font(
                             ..Default::default()
                         };
                         match f.outline_numbered(gid) {
-                            Ok((contours, numbers)) => {
-                                let empty = contours.iter().all(|c| c.segments.is_empty());
+                            Ok(outline) => {
+                                let empty = outline.contours.iter().all(|c| c.segments.is_empty());
                                 let glyph = Glyph {
-                                    contours,
-                                    numbers,
+                                    contours: outline.contours,
+                                    numbers: outline.numbers,
+                                    lone_points: outline.lone_points,
                                     stored_box: if empty { None } else { f.stored_glyph_box(gid).map(rat4) },
                                     font_box: font_box.clone(),
                                 };
