@@ -21,7 +21,7 @@
 //! | `degenerate_curve` | warning | a curve whose power form has lower degree than written |
 //! | `cusp` | warning | the tangent vanishes and the curve turns back strictly inside a segment |
 //! | `loop` | error | a segment crosses itself |
-//! | `bbox` | error | the glyph's stored bounding box is not the box of its points, or the exact outline leaves the font's box |
+//! | `bbox` | warning / error | the glyph's stored bounding box is not the box of its points (warning), or the exact outline leaves the font's `head` box (error) |
 //!
 //! The arrangement kinds (`direction` to `overlapping_segments`) come from one exact
 //! [`crate::shape::Arrangement`] of the glyph with each contour as its own input, so every

@@ -30,6 +30,7 @@ mod golden;
 mod identity_8;
 #[cfg(feature = "cli")]
 mod intersect;
+mod lint;
 #[cfg(feature = "cli")]
 mod oracle;
 mod parse_fuzz;
