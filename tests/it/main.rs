@@ -14,6 +14,8 @@ mod classify;
 #[cfg(feature = "cli")]
 mod cli;
 #[cfg(feature = "cli")]
+mod cli_lint;
+#[cfg(feature = "cli")]
 mod cli_shapes;
 #[cfg(feature = "cli")]
 mod cli_spline;
