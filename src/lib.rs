@@ -22,7 +22,7 @@
 //!   canonical forms, rational cubics.
 //! * [`intersect`](mod@intersect), [`shape`]: exact intersections, winding numbers, arrangements
 //!   of closed paths and boolean operations.
-//! * [`format`]: fonts, SVG and path data read exactly (the edge of the library).
+//! * [`format`](mod@format): fonts, SVG and path data read exactly (the edge of the library).
 //! * [`lint`]: outline QA findings decided exactly, from the shapes and curves below.
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
