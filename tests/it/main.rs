@@ -31,6 +31,8 @@ mod identity_8;
 #[cfg(feature = "cli")]
 mod intersect;
 #[cfg(feature = "cli")]
+mod lint_report;
+#[cfg(feature = "cli")]
 mod oracle;
 mod parse_fuzz;
 mod parse_numbers;
