@@ -34,6 +34,8 @@ mod identity_8;
 mod intersect;
 mod lint;
 #[cfg(feature = "cli")]
+mod lint_report;
+#[cfg(feature = "cli")]
 mod oracle;
 mod parse_fuzz;
 mod parse_numbers;

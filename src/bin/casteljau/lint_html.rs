@@ -1,15 +1,1140 @@
-//! The `--html` report of `casteljau lint` (placeholder: replaced by the full report).
+//! The `--html` report of `casteljau lint`: one self-contained HTML file.
+//!
+//! No scripts, no network (a Content-Security-Policy says so: inline styles only), system fonts.
+//! Per file: a summary table per kind (findings, findings explained by rounding, denied or not),
+//! a table per glyph (counts per kind, linking to the drawings), then one card per glyph to
+//! look at, drawn as inline SVG at a readable size: the outline filled (nonzero) and stroked,
+//! on-curve nodes (squares at corners, circles at smooth nodes, exactly decided; smaller dots
+//! for implied on-curve points), off-curve handles with their lines, and every finding not
+//! explained by rounding marked in its kind's colour with a numbered badge (a ring at crossings,
+//! contacts and nodes, a tangent tick at a missing extremum, an arrow along a contour of the
+//! wrong direction from its start, the shared piece of overlapping segments, the stored and
+//! computed boxes), listed beside the drawing with its exact evidence.
+//!
+//! A glyph is drawn when it has a finding rounding does not explain, or could not be checked;
+//! glyphs whose findings rounding explains are in the table only. At most [`MAX_DRAWN`]
+//! glyphs are drawn per file, so that a large font gives a report of a few megabytes; the rest
+//! are counted. The same findings give the same bytes: numbers are formatted with a fixed
+//! number of decimals chosen from the drawing's size, and nothing depends on time or hashing.
+//!
+//! Hooks for tests: every count cell of a kind table has `data-kind` and `data-count` (the
+//! rounding column `data-kind` and `data-rounding`), each file section `data-file`, each card
+//! `data-glyph-id` (fonts) or `data-element` (SVG), and each drawing is `<svg class="glyph">`
+//! with explicit `width` and `height`.
 
-use crate::lint::FileReport;
-use casteljau::lint::Kind;
+use crate::lint::{FileReport, Unit};
+use casteljau::format::{Element, Segment};
+use casteljau::lint::{ExactValue, Finding, Kind, Severity};
+use casteljau::num::Point;
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+use std::fmt::Write as _;
+
+/// Glyphs drawn per file at most (the others are listed in the glyph table and counted).
+pub const MAX_DRAWN: usize = 2000;
+
+/// Links to the glyphs with errors listed at most, per file.
+const MAX_JUMPS: usize = 300;
+
+/// The height of a drawing in CSS pixels (its width follows the outline's aspect, padded to
+/// between [`MIN_ASPECT`] and [`MAX_ASPECT`]).
+const HEIGHT: f64 = 440.0;
+const MIN_ASPECT: f64 = 0.45;
+const MAX_ASPECT: f64 = 1.9;
+
+/// The colour of each kind's marks.
+fn colour(k: Kind) -> &'static str {
+    match k {
+        Kind::Direction => "#e03131",
+        Kind::SelfIntersection => "#a61e4d",
+        Kind::Overlap => "#f76707",
+        Kind::Touching => "#1c7ed6",
+        Kind::OverlappingSegments => "#7048e8",
+        Kind::MissingExtremum => "#0ca678",
+        Kind::Kink => "#d6336c",
+        Kind::CollinearPoints => "#66a80f",
+        Kind::ZeroLengthSegment => "#862e9c",
+        Kind::ZeroLengthHandle => "#b08800",
+        Kind::DegenerateCurve => "#364fc7",
+        Kind::Cusp => "#0b7285",
+        Kind::Loop => "#8f5a2e",
+        Kind::Bbox => "#495057",
+    }
+}
+
+/// What a kind means, for the kind table.
+fn meaning(k: Kind) -> &'static str {
+    match k {
+        Kind::Direction => "a contour runs the wrong way for its nesting depth",
+        Kind::SelfIntersection => "a contour meets itself",
+        Kind::Overlap => "two contours cross",
+        Kind::Touching => "two contours meet without crossing",
+        Kind::OverlappingSegments => "a piece of outline is drawn twice",
+        Kind::MissingExtremum => "a horizontal or vertical tangent inside a segment",
+        Kind::Kink => "a node almost, but not exactly, smooth",
+        Kind::CollinearPoints => "a redundant node between two lines on one line",
+        Kind::ZeroLengthSegment => "a segment of length zero",
+        Kind::ZeroLengthHandle => "a curve's handle of length zero",
+        Kind::DegenerateCurve => "a curve of lower degree than written",
+        Kind::Cusp => "a cusp inside a segment",
+        Kind::Loop => "a segment crossing itself",
+        Kind::Bbox => "a wrong stored bounding box",
+    }
+}
+
+const STYLE: &str = r#"
+:root{--ink:#1d2129;--muted:#6b7280;--line:#e5e7eb;--bg:#f6f7f9;--card:#fff;--accent:#2f5bd3}
+*{box-sizing:border-box}
+body{margin:0;background:var(--bg);color:var(--ink);font:14px/1.45 system-ui,-apple-system,"Segoe UI",Roboto,"Helvetica Neue",Arial,sans-serif}
+main{max-width:1280px;margin:0 auto;padding:28px 32px 48px}
+h1{font-size:26px;margin:0 0 4px;letter-spacing:-.01em}
+h2{font-size:21px;margin:36px 0 10px;padding-top:8px;border-top:2px solid var(--ink);overflow-wrap:anywhere}
+h3{font-size:15px;margin:22px 0 8px;text-transform:uppercase;letter-spacing:.06em;color:var(--muted)}
+a{color:var(--accent);text-decoration:none}a:hover{text-decoration:underline}
+code,.mono{font-family:ui-monospace,SFMono-Regular,Menlo,Consolas,"Liberation Mono",monospace;font-size:12.5px}
+.lede{color:var(--muted);margin:0 0 14px;max-width:900px}
+.stats{display:flex;flex-wrap:wrap;gap:10px;margin:10px 0 6px}
+.stat{background:var(--card);border:1px solid var(--line);border-radius:10px;padding:8px 14px;min-width:110px}
+.stat b{display:block;font-size:22px;font-variant-numeric:tabular-nums}
+.stat span{color:var(--muted);font-size:12px}
+.stat.bad b{color:#c92a2a}.stat.warn b{color:#b35c00}
+.verdict{display:inline-block;border-radius:999px;padding:2px 12px;font-weight:600;font-size:13px}
+.verdict.pass{background:#d3f9d8;color:#2b8a3e}.verdict.fail{background:#ffe3e3;color:#c92a2a}
+table{border-collapse:collapse;background:var(--card);border:1px solid var(--line);border-radius:10px;overflow:hidden}
+th,td{padding:5px 10px;border-bottom:1px solid var(--line);text-align:left;vertical-align:top}
+th{background:#f1f3f5;font-size:12px;font-weight:600;color:#495057}
+td.n,th.n{text-align:right;font-variant-numeric:tabular-nums}
+tr:last-child td{border-bottom:0}
+tr.total td{font-weight:600;background:#f8f9fa}
+.glyphs th.k{font-size:11px;max-width:84px;white-space:normal;line-height:1.2}
+.glyphs td{padding:3px 10px}
+.glyphs tr.quiet td{color:var(--muted)}
+.r{color:var(--muted);font-size:11.5px}
+.sw{display:inline-block;width:10px;height:10px;border-radius:3px;background:var(--k);margin-right:7px;vertical-align:-1px}
+.sev{display:inline-block;border-radius:5px;padding:0 6px;font-size:11.5px;font-weight:600}
+.sev.error{background:#ffe3e3;color:#c92a2a}.sev.warning{background:#fff3bf;color:#a35200}.sev.info{background:#e9ecef;color:#495057}
+.yes{font-weight:600;color:#c92a2a}.no{color:var(--muted)}
+details>summary{cursor:pointer;color:var(--accent);margin:4px 0}
+.note{color:var(--muted);margin:8px 0}
+.jump{margin:12px 0;line-height:2}
+.jump a{display:inline-block;background:#fff5f5;border:1px solid #ffc9c9;border-radius:6px;padding:0 8px;margin-right:4px;line-height:1.6;color:#c92a2a}
+.legend{display:flex;flex-wrap:wrap;gap:6px 18px;align-items:center;color:var(--muted);font-size:12.5px;margin:6px 0 14px}
+.legend span{display:inline-flex;align-items:center;gap:6px}
+.cards{display:flex;flex-direction:column;gap:18px}
+.card{background:var(--card);border:1px solid var(--line);border-radius:12px;padding:14px 16px;box-shadow:0 1px 2px rgba(0,0,0,.04)}
+.card header{display:flex;flex-wrap:wrap;align-items:baseline;gap:4px 12px;margin-bottom:10px}
+.card h4{margin:0;font-size:17px;overflow-wrap:anywhere}
+.card .meta{color:var(--muted);font-size:12.5px}
+.body{display:flex;flex-wrap:wrap;gap:16px;align-items:flex-start}
+svg.glyph{flex:none;background:#fff;border:1px solid var(--line);border-radius:8px}
+.findings{flex:1 1 360px;min-width:300px;margin:0;padding:0;list-style:none}
+.findings>li{padding:8px 0;border-bottom:1px solid var(--line)}
+.findings>li:last-child{border-bottom:0}
+.num{display:inline-block;min-width:20px;height:20px;border-radius:10px;background:var(--k);color:#fff;font-size:11.5px;font-weight:700;text-align:center;line-height:20px;padding:0 5px;margin-right:6px}
+.kind{font-weight:600;color:var(--k)}
+.loc{color:var(--muted);font-size:12.5px;margin-left:6px}
+.msg{margin:3px 0 4px}
+dl.ev{display:grid;grid-template-columns:max-content 1fr;gap:2px 10px;margin:0;font-size:12.5px}
+dl.ev dt{color:var(--muted)}
+dl.ev dd{margin:0;overflow-wrap:anywhere}
+.err{background:#fff5f5;border:1px solid #ffc9c9;color:#c92a2a;border-radius:8px;padding:8px 12px;margin:0 0 10px;overflow-wrap:anywhere}
+footer{color:var(--muted);font-size:12px;margin-top:40px}
+svg .fill{fill:#e9ecef;fill-rule:nonzero;stroke:none}
+svg .ol{fill:none;stroke:#1d2129;stroke-width:1.4px;vector-effect:non-scaling-stroke;stroke-linejoin:round}
+svg .skip{fill:none;stroke:#c92a2a;stroke-width:1.4px;stroke-dasharray:4 3;vector-effect:non-scaling-stroke}
+svg .base{fill:none;stroke:#ced4da;stroke-width:1px;stroke-dasharray:6 4;vector-effect:non-scaling-stroke}
+svg .hd{fill:none;stroke:#adb5bd;stroke-width:1px;vector-effect:non-scaling-stroke}
+svg .off{fill:#fff;stroke:#868e96;stroke-width:1px;vector-effect:non-scaling-stroke}
+svg .on{fill:#fff;stroke:#1d2129;stroke-width:1.3px;vector-effect:non-scaling-stroke}
+svg .imp{fill:#868e96;stroke:none}
+svg .m path,svg .m circle,svg .m rect{fill:none;stroke:var(--k);stroke-width:2px;vector-effect:non-scaling-stroke;stroke-linecap:round;stroke-linejoin:round}
+svg .m .dot,svg .m .ah{fill:var(--k);stroke:none}
+svg .m .hl{stroke-width:8px;stroke-opacity:.4}
+svg .m .thin{stroke-width:5px;stroke-opacity:.3}
+.findings.rounding>li{padding:3px 0;font-size:12.5px}
+svg .m .st{stroke-dasharray:6 4}
+svg .m .cp{stroke-width:1.2px}
+svg .b circle{fill:var(--k);stroke:#fff;stroke-width:1.5px;vector-effect:non-scaling-stroke}
+svg .b text{fill:#fff;font-weight:700;text-anchor:middle;dominant-baseline:central;font-family:system-ui,-apple-system,"Segoe UI",Roboto,Arial,sans-serif}
+"#;
 
 /// The report's bytes.
-pub fn render(files: &[FileReport], _deny: &[Kind]) -> String {
-    let mut s =
-        String::from("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>casteljau lint</title></head><body>");
-    for f in files {
-        s.push_str(&format!("<h2>{}</h2><p>{} checked</p>", f.file, f.tally.units));
+pub fn render(files: &[FileReport], deny: &[Kind]) -> String {
+    let mut s = String::with_capacity(1 << 16);
+    let names: Vec<&str> = files.iter().map(|f| f.file.as_str()).collect();
+    let _ = write!(
+        s,
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <meta name=\"generator\" content=\"casteljau {}\">\n<title>casteljau lint: {}</title>\n<style>{}",
+        env!("CARGO_PKG_VERSION"),
+        esc(&names.join(", ")),
+        STYLE.trim_start()
+    );
+    for k in Kind::ALL {
+        let _ = write!(s, ".k-{}{{--k:{}}}", k.as_str(), colour(k));
     }
-    s.push_str("</body></html>\n");
+    s.push_str("\n</style>\n</head>\n<body>\n<main>\n<h1>casteljau lint</h1>\n");
+    s.push_str(
+        "<p class=\"lede\">Outline QA decided in exact arithmetic: every finding is an exact statement about the \
+         control points as the file stores them, with its exact evidence. Findings explained by rounding to the \
+         font's integer grid are counted apart and never fail a run.</p>\n",
+    );
+    let denied: Vec<&str> = deny.iter().map(|k| k.as_str()).collect();
+    let _ = writeln!(
+        s,
+        "<p class=\"note\">Denied kinds (fail the run): {}.</p>",
+        if denied.is_empty() {
+            "none".to_string()
+        } else {
+            denied.iter().map(|d| format!("<code>{d}</code>")).collect::<Vec<_>>().join(", ")
+        }
+    );
+    if files.len() > 1 {
+        s.push_str("<ul>\n");
+        for (i, f) in files.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "<li><a href=\"#f{i}\">{}</a>: {} checked, {} flagged</li>",
+                esc(&f.file),
+                f.tally.units,
+                f.tally.flagged
+            );
+        }
+        s.push_str("</ul>\n");
+    }
+    for (i, f) in files.iter().enumerate() {
+        file_section(&mut s, i, f, deny);
+    }
+    let _ = write!(
+        s,
+        "<footer>casteljau {} · lint report · glyphs drawn per file at most {MAX_DRAWN}</footer>\n</main>\n</body>\n</html>\n",
+        env!("CARGO_PKG_VERSION")
+    );
     s
+}
+
+/// Whether a unit gets a drawing: a finding rounding does not explain, or an error.
+fn wants_drawing(u: &Unit) -> bool {
+    u.error.is_some() || u.findings.iter().any(|f| !f.rounding)
+}
+
+fn is_font(u: &Unit) -> bool {
+    u.at.glyph_id.is_some()
+}
+
+fn file_section(s: &mut String, i: usize, f: &FileReport, deny: &[Kind]) {
+    let t = &f.tally;
+    let _ = writeln!(s, "<section class=\"file\" id=\"f{i}\" data-file=\"{}\">", esc(&f.file));
+    let _ = writeln!(s, "<h2>{}</h2>", esc(&f.file));
+    let font = f.units.iter().any(is_font);
+    let unit_word = if font { "glyphs" } else { "elements" };
+    let sev = |v: Severity| t.by_severity.get(&v).copied().unwrap_or(0);
+    let denied_count: usize = t.by_kind.iter().filter(|(k, _)| deny.contains(k)).map(|(_, (n, _))| n).sum();
+    let rounding_total: usize = t.by_kind.values().map(|(_, r)| r).sum();
+    s.push_str("<div class=\"stats\">\n");
+    let stat = |s: &mut String, class: &str, n: usize, what: &str| {
+        let _ = writeln!(s, "<div class=\"stat{class}\"><b>{n}</b><span>{what}</span></div>");
+    };
+    stat(s, "", t.units, &format!("{unit_word} checked"));
+    stat(s, if t.flagged > 0 { " warn" } else { "" }, t.flagged, "flagged");
+    stat(s, if sev(Severity::Error) > 0 { " bad" } else { "" }, sev(Severity::Error), "errors");
+    stat(s, if sev(Severity::Warning) > 0 { " warn" } else { "" }, sev(Severity::Warning), "warnings");
+    stat(s, "", sev(Severity::Info), "info");
+    stat(s, "", rounding_total, "explained by rounding");
+    if t.errors > 0 {
+        stat(s, " bad", t.errors, "could not be checked");
+    }
+    s.push_str("</div>\n");
+    let verdict = if t.errors > 0 {
+        format!("<span class=\"verdict fail\">{} could not be checked</span>", t.errors)
+    } else if denied_count > 0 {
+        format!("<span class=\"verdict fail\">fails: {denied_count} denied finding{}</span>", plural(denied_count))
+    } else {
+        "<span class=\"verdict pass\">passes: no denied finding</span>".to_string()
+    };
+    let _ = writeln!(s, "<p>{verdict}</p>");
+
+    // the kind table
+    let _ = writeln!(s, "<h3 id=\"f{i}-kinds\">Findings by kind</h3>");
+    if t.by_kind.is_empty() {
+        s.push_str("<p class=\"note\">No findings.</p>\n");
+    } else {
+        s.push_str(
+            "<table class=\"kinds\">\n<tr><th>Kind</th><th>Severity</th><th class=\"n\">Findings</th>\
+             <th class=\"n\">Explained by rounding</th><th>Denied</th><th>Meaning</th></tr>\n",
+        );
+        for (k, (n, r)) in &t.by_kind {
+            let name = k.as_str();
+            let den = deny.contains(k);
+            let _ = writeln!(
+                s,
+                "<tr class=\"k-{name}\"><td><span class=\"sw\"></span><code>{name}</code></td>\
+                 <td><span class=\"sev {sev}\">{sev}</span></td>\
+                 <td class=\"n\" data-kind=\"{name}\" data-count=\"{n}\">{n}</td>\
+                 <td class=\"n\" data-kind=\"{name}\" data-rounding=\"{r}\">{r}</td>\
+                 <td class=\"{yn}\">{yn}</td><td>{}</td></tr>",
+                meaning(*k),
+                sev = k.severity().as_str(),
+                yn = if den { "yes" } else { "no" },
+            );
+        }
+        let total: usize = t.by_kind.values().map(|(n, _)| n).sum();
+        let _ = writeln!(
+            s,
+            "<tr class=\"total\"><td>Total</td><td></td><td class=\"n\">{total}</td><td class=\"n\">{rounding_total}</td>\
+             <td></td><td></td></tr>\n</table>"
+        );
+    }
+
+    // which units are drawn
+    let drawable: Vec<bool> = f.units.iter().map(wants_drawing).collect();
+    let mut drawn = vec![false; f.units.len()];
+    let mut left = MAX_DRAWN;
+    for (k, d) in drawable.iter().enumerate() {
+        if *d && left > 0 {
+            drawn[k] = true;
+            left -= 1;
+        }
+    }
+    let wanted = drawable.iter().filter(|d| **d).count();
+    let n_drawn = drawn.iter().filter(|d| **d).count();
+    let rounding_only = f.units.len() - wanted;
+
+    // the drawn units with an error, first to look at
+    let severe: Vec<(usize, &Unit)> = f
+        .units
+        .iter()
+        .enumerate()
+        .filter(|(k, u)| {
+            drawn[*k] && (u.error.is_some() || u.findings.iter().any(|f| !f.rounding && f.severity == Severity::Error))
+        })
+        .collect();
+    if !severe.is_empty() {
+        let _ = write!(s, "<p class=\"jump\"><b>{} with errors:</b> ", capitalised(unit_word));
+        let links: Vec<String> = severe
+            .iter()
+            .take(MAX_JUMPS)
+            .map(|(k, u)| format!("<a href=\"#f{i}-u{k}\">{}</a>", esc(&u.label)))
+            .collect();
+        s.push_str(&links.join(" "));
+        if severe.len() > MAX_JUMPS {
+            let _ = write!(s, " <span class=\"r\">and {} more</span>", severe.len() - MAX_JUMPS);
+        }
+        s.push_str("</p>\n");
+    }
+
+    // the glyph table
+    let _ = writeln!(s, "<h3 id=\"f{i}-glyphs\">{} with findings</h3>", capitalised(unit_word));
+    if f.units.is_empty() {
+        s.push_str("<p class=\"note\">None.</p>\n");
+    } else {
+        let kinds: Vec<Kind> = t.by_kind.keys().copied().collect();
+        let open = if f.units.len() <= 400 { " open" } else { "" };
+        let _ = writeln!(
+            s,
+            "<details{open}><summary>{} ({} drawn below, {rounding_only} with findings rounding explains only)</summary>",
+            counted(f.units.len(), unit_word),
+            n_drawn
+        );
+        s.push_str("<table class=\"glyphs\">\n<tr><th>");
+        s.push_str(if font { "Glyph</th><th class=\"n\">ID</th>" } else { "Element</th><th>Tag</th>" });
+        for k in &kinds {
+            let _ = write!(
+                s,
+                "<th class=\"k n\"><span class=\"k-{0} sw\"></span>{1}</th>",
+                k.as_str(),
+                k.as_str().replace('_', " ")
+            );
+        }
+        if t.errors > 0 {
+            s.push_str("<th>Error</th>");
+        }
+        s.push_str("</tr>\n");
+        for (k, u) in f.units.iter().enumerate() {
+            let quiet = if drawable[k] { "" } else { " class=\"quiet\"" };
+            let label = esc(&u.label);
+            let name = if drawn[k] {
+                format!("<a href=\"#f{i}-u{k}\">{label}</a>")
+            } else if drawable[k] {
+                format!("{label} <span class=\"r\">(not drawn: over {MAX_DRAWN})</span>")
+            } else {
+                label
+            };
+            let id = match (&u.at.glyph_id, &u.at.tag) {
+                (Some(g), _) => g.to_string(),
+                (None, Some(tag)) => esc(tag),
+                _ => String::new(),
+            };
+            let _ = write!(s, "<tr{quiet}><td>{name}</td><td class=\"{}\">{id}</td>", if font { "n" } else { "" });
+            for kind in &kinds {
+                let n = u.findings.iter().filter(|f| f.kind == *kind && !f.rounding).count();
+                let r = u.findings.iter().filter(|f| f.kind == *kind && f.rounding).count();
+                s.push_str("<td class=\"n\">");
+                if n > 0 {
+                    let _ = write!(s, "{n}");
+                }
+                if r > 0 {
+                    let _ = write!(s, " <span class=\"r\">+{r}</span>");
+                }
+                s.push_str("</td>");
+            }
+            if t.errors > 0 {
+                let _ = write!(s, "<td>{}</td>", if u.error.is_some() { "yes" } else { "" });
+            }
+            s.push_str("</tr>\n");
+        }
+        s.push_str("</table>\n<p class=\"note\">Counts of findings not explained by rounding; <span class=\"r\">+n</span>: findings rounding explains.</p>\n</details>\n");
+    }
+
+    // the drawings
+    let _ = writeln!(s, "<h3>Drawings</h3>");
+    let _ = writeln!(
+        s,
+        "<p class=\"note\">{} drawn: each with a finding not explained by rounding, or an error. \
+         {} whose findings rounding explains {} listed above but not drawn; in a drawing, \
+         findings rounding explains are listed but not marked.{}</p>",
+        counted(n_drawn, unit_word),
+        counted(rounding_only, unit_word),
+        if rounding_only == 1 { "is" } else { "are" },
+        if wanted > n_drawn {
+            format!(" {} more not drawn: at most {MAX_DRAWN} drawings per file.", wanted - n_drawn)
+        } else {
+            String::new()
+        }
+    );
+    if n_drawn > 0 {
+        legend(s, font);
+    }
+    s.push_str("<div class=\"cards\">\n");
+    for (k, u) in f.units.iter().enumerate() {
+        if drawn[k] {
+            card(s, &format!("f{i}-u{k}"), u);
+        }
+    }
+    s.push_str("</div>\n</section>\n");
+}
+
+fn plural(n: usize) -> &'static str {
+    if n == 1 { "" } else { "s" }
+}
+
+/// `n glyphs`, `1 glyph`.
+fn counted(n: usize, plural_word: &str) -> String {
+    if n == 1 { format!("1 {}", plural_word.trim_end_matches('s')) } else { format!("{n} {plural_word}") }
+}
+
+fn capitalised(w: &str) -> String {
+    let mut c = w.chars();
+    match c.next() {
+        Some(f) => f.to_uppercase().chain(c).collect(),
+        None => String::new(),
+    }
+}
+
+/// The key to the drawings.
+fn legend(s: &mut String, font: bool) {
+    s.push_str("<div class=\"legend\">");
+    let item = |s: &mut String, svg: &str, what: &str| {
+        let _ = write!(s, "<span><svg width=\"22\" height=\"16\" viewBox=\"0 0 22 16\">{svg}</svg>{what}</span>");
+    };
+    item(
+        s,
+        "<path class=\"fill\" d=\"M2 14L11 2L20 14Z\"/><path class=\"ol\" d=\"M2 14L11 2L20 14Z\"/>",
+        "outline (nonzero fill)",
+    );
+    item(s, "<path class=\"on\" d=\"M7.5 4.5h7v7h-7z\"/>", "corner node");
+    item(s, "<circle class=\"on\" cx=\"11\" cy=\"8\" r=\"3.6\"/>", "smooth node");
+    item(s, "<path class=\"hd\" d=\"M2 12L14 5\"/><circle class=\"off\" cx=\"14\" cy=\"5\" r=\"2.6\"/>", "handle");
+    if font {
+        item(s, "<circle class=\"imp\" cx=\"11\" cy=\"8\" r=\"2\"/>", "implied on-curve point");
+        item(s, "<path class=\"base\" d=\"M0 8H22\"/>", "baseline");
+    }
+    item(
+        s,
+        "<g class=\"b k-kink\"><circle cx=\"11\" cy=\"8\" r=\"7\"/><text x=\"11\" y=\"8\" font-size=\"9\">1</text></g>",
+        "finding (numbered, coloured by kind)",
+    );
+    item(
+        s,
+        "<g class=\"m k-direction\"><path d=\"M2 8H15\"/><path class=\"ah\" d=\"M20 8L13 4.5L13 11.5Z\"/></g>",
+        "direction at the contour's start",
+    );
+    s.push_str("</div>\n");
+}
+
+/// `&`, `<`, `>`, `"` and `'` as references; controls HTML forbids as U+FFFD.
+fn esc(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            '\t' | '\n' => out.push(c),
+            c if c.is_control() || c == '\u{FFFE}' || c == '\u{FFFF}' => out.push('\u{FFFD}'),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+type P = (f64, f64);
+
+/// One segment for drawing, in screen coordinates (y flipped for fonts).
+struct Seg {
+    pts: Vec<P>,
+    numbers: Vec<Option<usize>>,
+    skipped: bool,
+    /// Exact tangent directions at the start and at the end (`None`: the segment has none).
+    out: Option<[BigRational; 2]>,
+    into: Option<[BigRational; 2]>,
+}
+
+struct Outline {
+    contours: Vec<(Vec<Seg>, bool)>,
+    /// Stored points on no segment (contours of one point).
+    lone: Vec<P>,
+    flip: bool,
+}
+
+fn xy(p: &Point<BigRational>) -> [&BigRational; 2] {
+    [&p.coords[0], &p.coords[1]]
+}
+
+fn diff(a: &Point<BigRational>, b: &Point<BigRational>) -> [BigRational; 2] {
+    [&a.coords[0] - &b.coords[0], &a.coords[1] - &b.coords[1]]
+}
+
+impl Outline {
+    fn new(u: &Unit) -> Outline {
+        let flip = is_font(u);
+        let f = |p: &Point<BigRational>| {
+            let [x, y] = xy(p).map(casteljau::num::ratio_to_f64);
+            (x, if flip { -y } else { y })
+        };
+        let contours = u
+            .glyph
+            .contours
+            .iter()
+            .enumerate()
+            .map(|(ci, c)| {
+                let segs = c
+                    .segments
+                    .iter()
+                    .enumerate()
+                    .map(|(si, seg)| {
+                        let numbers = u.glyph.numbers.get(ci).and_then(|n| n.get(si)).cloned().unwrap_or_default();
+                        match seg {
+                            Segment::Bezier(ps) => {
+                                let out = ps.iter().skip(1).find(|p| *p != &ps[0]).map(|p| diff(p, &ps[0]));
+                                let last = &ps[ps.len() - 1];
+                                let into = ps.iter().rev().skip(1).find(|p| *p != last).map(|p| diff(last, p));
+                                Seg { pts: ps.iter().map(f).collect(), numbers, skipped: false, out, into }
+                            }
+                            Segment::Skipped { from, to, .. } => {
+                                Seg { pts: vec![f(from), f(to)], numbers, skipped: true, out: None, into: None }
+                            }
+                        }
+                    })
+                    .collect();
+                (segs, c.closed)
+            })
+            .collect();
+        let lone = u.glyph.lone_points.iter().map(f).collect();
+        Outline { contours, lone, flip }
+    }
+
+    fn point(&self, p: [f64; 2]) -> P {
+        (p[0], if self.flip { -p[1] } else { p[1] })
+    }
+
+    fn segment(&self, contour: Option<usize>, index: Option<usize>) -> Option<&Seg> {
+        self.contours.get(contour?)?.0.get(index?)
+    }
+}
+
+/// `v` with at most `dec` decimals, trailing zeros dropped, no `-0`.
+fn fmt(v: f64, dec: usize) -> String {
+    let mut s = format!("{v:.dec$}");
+    if s.contains('.') {
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') {
+            s.pop();
+        }
+    }
+    if s == "-0" { "0".into() } else { s }
+}
+
+fn eval(pts: &[P], t: f64) -> P {
+    let mut q = pts.to_vec();
+    for k in (1..q.len()).rev() {
+        for j in 0..k {
+            q[j] = (q[j].0 + t * (q[j + 1].0 - q[j].0), q[j].1 + t * (q[j + 1].1 - q[j].1));
+        }
+    }
+    q[0]
+}
+
+/// The control points of the piece `[a, b]` of a Bézier curve.
+fn piece(pts: &[P], a: f64, b: f64) -> Vec<P> {
+    let (a, b) = if a <= b { (a, b) } else { (b, a) };
+    // the blossom: control point j of the piece is the curve's blossom at (a, ..., a, b, ..., b)
+    let n = pts.len() - 1;
+    (0..=n)
+        .map(|j| {
+            let mut q = pts.to_vec();
+            for (step, k) in (1..=n).rev().enumerate() {
+                let t = if step < n - j { a } else { b };
+                for i in 0..k {
+                    q[i] = (q[i].0 + t * (q[i + 1].0 - q[i].0), q[i].1 + t * (q[i + 1].1 - q[i].1));
+                }
+            }
+            q[0]
+        })
+        .collect()
+}
+
+/// A drawing's scale: user units per CSS pixel and the decimals of its numbers.
+struct Pen {
+    u: f64,
+    dec: usize,
+}
+
+impl Pen {
+    fn n(&self, v: f64) -> String {
+        fmt(v, self.dec)
+    }
+    fn p(&self, p: P) -> String {
+        format!("{} {}", self.n(p.0), self.n(p.1))
+    }
+    /// Path data of a Bézier segment continuing from its first point.
+    fn seg(&self, pts: &[P], d: &mut String) {
+        let cmd = match pts.len() {
+            3 => 'Q',
+            4 => 'C',
+            _ => 'L',
+        };
+        d.push(cmd);
+        let rest: Vec<String> = pts[1..].iter().map(|p| self.p(*p)).collect();
+        d.push_str(&rest.join(" "));
+    }
+    fn circle(&self, class: &str, c: P, r_px: f64) -> String {
+        let cls = if class.is_empty() { String::new() } else { format!(" class=\"{class}\"") };
+        format!("<circle{cls} cx=\"{}\" cy=\"{}\" r=\"{}\"/>", self.n(c.0), self.n(c.1), self.n(r_px * self.u))
+    }
+}
+
+fn finite(p: P) -> bool {
+    p.0.is_finite() && p.1.is_finite()
+}
+
+/// The stored and computed boxes of a `bbox` finding, in screen coordinates.
+fn boxes(f: &Finding, o: &Outline) -> Vec<(P, P)> {
+    [&f.stored, &f.computed]
+        .into_iter()
+        .filter(|b| b.len() == 4)
+        .map(|b| {
+            let v: Vec<f64> = b.iter().map(ExactValue::to_f64).collect();
+            let (p, q) = (o.point([v[0], v[1]]), o.point([v[2], v[3]]));
+            ((p.0.min(q.0), p.1.min(q.1)), (p.0.max(q.0), p.1.max(q.1)))
+        })
+        .collect()
+}
+
+/// The view box `(x, y, w, h)` and the size in pixels, or `None` when nothing finite is drawn.
+fn view(o: &Outline, marked: &[&Finding]) -> Option<([f64; 4], [f64; 2])> {
+    let mut pts: Vec<P> = o.contours.iter().flat_map(|(c, _)| c.iter().flat_map(|s| s.pts.iter().copied())).collect();
+    pts.extend(&o.lone);
+    for f in marked {
+        pts.extend(f.at_float.iter().map(|p| o.point(*p)));
+        for (a, b) in boxes(f, o) {
+            pts.extend([a, b]);
+        }
+    }
+    let pts: Vec<P> = pts.into_iter().filter(|p| finite(*p)).collect();
+    if pts.is_empty() {
+        return None;
+    }
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for (x, y) in pts {
+        (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
+    }
+    let size = (x1 - x0).max(y1 - y0).max(1e-9);
+    let (mut w, mut h) = ((x1 - x0).max(size * 0.02), (y1 - y0).max(size * 0.02));
+    let m = 0.08 * size;
+    (w, h) = (w + 2.0 * m, h + 2.0 * m);
+    let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+    if w / h < MIN_ASPECT {
+        w = h * MIN_ASPECT;
+    } else if w / h > MAX_ASPECT {
+        h = w / MAX_ASPECT;
+    }
+    let v = [cx - w / 2.0, cy - h / 2.0, w, h];
+    if !v.iter().all(|x| x.is_finite()) || w <= 0.0 || h <= 0.0 {
+        return None;
+    }
+    let px = [(HEIGHT * w / h).round(), HEIGHT];
+    Some((v, px))
+}
+
+/// Whether the node between tangents `into` and `out` is smooth: the tangents point the same way
+/// (decided exactly).
+fn smooth(into: &Option<[BigRational; 2]>, out: &Option<[BigRational; 2]>) -> bool {
+    match (into, out) {
+        (Some([a, b]), Some([c, d])) => (a * d - b * c).is_zero() && (a * c + b * d).is_positive(),
+        _ => false,
+    }
+}
+
+/// The SVG drawing of a unit, with its marks.
+fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> {
+    let o = Outline::new(u);
+    let fs: Vec<&Finding> = marked.iter().map(|(_, f)| *f).collect();
+    let (v, px) = view(&o, &fs)?;
+    let upx = v[3] / px[1];
+    // enough decimals for a tenth of a pixel
+    let dec = (-(upx / 10.0).log10()).ceil().clamp(0.0, 9.0) as usize;
+    let pen = Pen { u: upx, dec };
+    let mut s = String::new();
+    let _ = write!(
+        s,
+        "<svg class=\"glyph\" width=\"{}\" height=\"{}\" viewBox=\"{} {} {} {}\" role=\"img\" aria-label=\"{}\">",
+        px[0],
+        px[1],
+        pen.n(v[0]),
+        pen.n(v[1]),
+        pen.n(v[2]),
+        pen.n(v[3]),
+        esc(&u.label)
+    );
+    if o.flip && v[1] < 0.0 && v[1] + v[3] > 0.0 {
+        let _ = write!(s, "<path class=\"base\" d=\"M{} 0H{}\"/>", pen.n(v[0]), pen.n(v[0] + v[2]));
+    }
+    // the outline
+    let mut d = String::new();
+    let mut skipped = String::new();
+    for (segs, closed) in &o.contours {
+        let Some(first) = segs.first() else { continue };
+        if !finite(first.pts[0]) {
+            continue;
+        }
+        let _ = write!(d, "M{}", pen.p(first.pts[0]));
+        for sg in segs {
+            if sg.pts.iter().all(|p| finite(*p)) {
+                pen.seg(&sg.pts, &mut d);
+                if sg.skipped {
+                    let _ = write!(skipped, "M{}L{}", pen.p(sg.pts[0]), pen.p(sg.pts[1]));
+                }
+            }
+        }
+        if *closed {
+            d.push('Z');
+        }
+    }
+    if !d.is_empty() {
+        let _ = write!(s, "<path class=\"fill\" d=\"{d}\"/><path class=\"ol\" d=\"{d}\"/>");
+    }
+    if !skipped.is_empty() {
+        let _ = write!(s, "<path class=\"skip\" d=\"{skipped}\"/>");
+    }
+    // handles, off-curve points, nodes
+    let (mut handles, mut offs, mut corners, mut rounds, mut implied) =
+        (String::new(), String::new(), String::new(), String::new(), String::new());
+    let r_off = 2.6 * pen.u;
+    let r_on = 3.6 * pen.u;
+    let a = 3.5 * pen.u;
+    let r_imp = 2.0 * pen.u;
+    let ring = |d: &mut String, c: P, r: f64| {
+        let _ = write!(
+            d,
+            "M{} {}a{r} {r} 0 1 0 {} 0a{r} {r} 0 1 0 {} 0",
+            pen.n(c.0 - r),
+            pen.n(c.1),
+            pen.n(2.0 * r),
+            pen.n(-2.0 * r),
+            r = pen.n(r)
+        );
+    };
+    let square = |d: &mut String, c: P| {
+        let _ = write!(
+            d,
+            "M{} {}h{}v{}h{}z",
+            pen.n(c.0 - a),
+            pen.n(c.1 - a),
+            pen.n(2.0 * a),
+            pen.n(2.0 * a),
+            pen.n(-2.0 * a)
+        );
+    };
+    for (segs, closed) in &o.contours {
+        let count = segs.len();
+        for (si, sg) in segs.iter().enumerate() {
+            if !sg.pts.iter().all(|p| finite(*p)) {
+                continue;
+            }
+            if sg.pts.len() > 2 && !sg.skipped {
+                let last = sg.pts.len() - 1;
+                let _ = write!(handles, "M{}L{}", pen.p(sg.pts[0]), pen.p(sg.pts[1]));
+                let _ = write!(handles, "M{}L{}", pen.p(sg.pts[last]), pen.p(sg.pts[last - 1]));
+                for p in &sg.pts[1..last] {
+                    ring(&mut offs, *p, r_off);
+                }
+            }
+            // the node at the segment's start; an open contour's last end too
+            let prev = if si > 0 {
+                Some(&segs[si - 1])
+            } else if *closed {
+                segs.last()
+            } else {
+                None
+            };
+            let mut nodes = vec![(sg.pts[0], sg.numbers.first().copied().flatten(), prev.map(|p| &p.into), &sg.out)];
+            if !closed && si + 1 == count {
+                nodes.push((sg.pts[sg.pts.len() - 1], sg.numbers.last().copied().flatten(), Some(&sg.into), &None));
+            }
+            for (at, number, into, out) in nodes {
+                let stored = sg.numbers.is_empty() || number.is_some();
+                if !stored {
+                    ring(&mut implied, at, r_imp);
+                } else if into.is_some_and(|i| smooth(i, out)) {
+                    ring(&mut rounds, at, r_on);
+                } else {
+                    square(&mut corners, at);
+                }
+            }
+        }
+    }
+    for at in o.lone.iter().filter(|p| finite(**p)) {
+        square(&mut corners, *at);
+    }
+    for (class, d) in [("hd", &handles), ("off", &offs), ("imp", &implied), ("on", &corners), ("on", &rounds)] {
+        if !d.is_empty() {
+            let _ = write!(s, "<path class=\"{class}\" d=\"{d}\"/>");
+        }
+    }
+    // the marks, then their badges on top
+    let mut badges: Vec<(P, usize, Kind)> = vec![];
+    for (n, f) in marked {
+        if let Some(at) = mark(&mut s, &pen, &o, f) {
+            let mut b = (at.0 + 11.0 * pen.u, at.1 - 11.0 * pen.u);
+            for _ in 0..8 {
+                let near = badges.iter().any(|(q, _, _)| (q.0 - b.0).hypot(q.1 - b.1) < 15.0 * pen.u);
+                if !near {
+                    break;
+                }
+                b.0 += 16.0 * pen.u;
+            }
+            badges.push((b, *n, f.kind));
+        }
+    }
+    if !badges.is_empty() {
+        let _ = write!(s, "<g font-size=\"{}\">", pen.n(10.0 * pen.u));
+        for (b, n, k) in badges {
+            let r = if n >= 10 { 8.5 } else { 7.5 };
+            let _ = write!(
+                s,
+                "<g class=\"b k-{}\">{}<text x=\"{}\" y=\"{}\">{n}</text></g>",
+                k.as_str(),
+                pen.circle("", b, r),
+                pen.n(b.0),
+                pen.n(b.1)
+            );
+        }
+        s.push_str("</g>");
+    }
+    s.push_str("</svg>");
+    Some(s)
+}
+
+/// Draws the mark of one finding; returns where its badge goes.
+fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
+    let pts: Vec<P> = f.at_float.iter().map(|p| o.point(*p)).filter(|p| finite(*p)).collect();
+    let mut m = String::new();
+    let mut badge = pts.first().copied();
+    match f.kind {
+        Kind::Direction => {
+            let segs = &o.contours.get(f.contour?)?.0;
+            let start = segs.first()?.pts[0];
+            // the first point away from the start gives the contour's direction there
+            let next = segs.iter().flat_map(|sg| sg.pts.iter()).find(|p| **p != start && finite(**p));
+            // the contour itself, then a ring at its start
+            let mut d = format!("M{}", pen.p(start));
+            for sg in segs.iter().filter(|sg| sg.pts.iter().all(|p| finite(*p))) {
+                pen.seg(&sg.pts, &mut d);
+            }
+            let _ = write!(m, "<path class=\"hl thin\" d=\"{d}\"/>");
+            m.push_str(&pen.circle("", start, 5.0));
+            if let Some(next) = next {
+                let (dx, dy) = (next.0 - start.0, next.1 - start.1);
+                let len = dx.hypot(dy);
+                let (ux, uy) = (dx / len, dy / len);
+                let l = 34.0 * pen.u;
+                let tip = (start.0 + ux * l, start.1 + uy * l);
+                let (hx, hy) = (tip.0 - ux * 10.0 * pen.u, tip.1 - uy * 10.0 * pen.u);
+                let (nx, ny) = (-uy * 5.0 * pen.u, ux * 5.0 * pen.u);
+                let _ = write!(m, "<path d=\"M{}L{}\"/>", pen.p(start), pen.p((hx, hy)));
+                let _ = write!(
+                    m,
+                    "<path class=\"ah\" d=\"M{}L{}L{}Z\"/>",
+                    pen.p(tip),
+                    pen.p((hx + nx, hy + ny)),
+                    pen.p((hx - nx, hy - ny))
+                );
+            }
+            badge = Some(start);
+        }
+        Kind::MissingExtremum => {
+            let p = *pts.first()?;
+            let l = 14.0 * pen.u;
+            if f.axis == Some("x") {
+                let _ = write!(m, "<path d=\"M{}V{}\"/>", pen.p((p.0, p.1 - l)), pen.n(p.1 + l));
+            } else {
+                let _ = write!(m, "<path d=\"M{}H{}\"/>", pen.p((p.0 - l, p.1)), pen.n(p.0 + l));
+            }
+            m.push_str(&pen.circle("dot", p, 3.2));
+        }
+        Kind::OverlappingSegments => {
+            let mut d = String::new();
+            for sh in &f.shared {
+                if let Some(sg) = o.segment(Some(sh.contour), Some(sh.segment)) {
+                    let pc = piece(&sg.pts, sh.from.to_f64(), sh.to.to_f64());
+                    if pc.iter().all(|p| finite(*p)) {
+                        let _ = write!(d, "M{}", pen.p(pc[0]));
+                        pen.seg(&pc, &mut d);
+                    }
+                }
+            }
+            if !d.is_empty() {
+                let _ = write!(m, "<path class=\"hl\" d=\"{d}\"/>");
+            }
+            for p in &pts {
+                m.push_str(&pen.circle("dot", *p, 3.0));
+            }
+        }
+        Kind::DegenerateCurve => {
+            let sg = o.segment(f.contour, f.index)?;
+            if !sg.pts.iter().all(|p| finite(*p)) {
+                return None;
+            }
+            let mut d = format!("M{}", pen.p(sg.pts[0]));
+            pen.seg(&sg.pts, &mut d);
+            let _ = write!(m, "<path class=\"hl\" d=\"{d}\"/>");
+            badge = Some(eval(&sg.pts, 0.5));
+        }
+        Kind::Bbox => {
+            let bx = boxes(f, o);
+            for (k, (a, b)) in bx.iter().enumerate() {
+                let _ = write!(
+                    m,
+                    "<rect class=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>",
+                    if k == 0 { "st" } else { "cp" },
+                    pen.n(a.0),
+                    pen.n(a.1),
+                    pen.n(b.0 - a.0),
+                    pen.n(b.1 - a.1)
+                );
+            }
+            badge = bx.first().map(|(a, _)| *a);
+        }
+        _ => {
+            for p in &pts {
+                m.push_str(&pen.circle("", *p, 7.0));
+            }
+            if pts.is_empty() {
+                // no point: the segment's middle
+                let sg = o.segment(f.contour, f.index)?;
+                badge = Some(eval(&sg.pts, 0.5)).filter(|p| finite(*p));
+            }
+        }
+    }
+    if !m.is_empty() {
+        let _ = write!(s, "<g class=\"m k-{}\">{m}</g>", f.kind.as_str());
+    }
+    badge
+}
+
+/// Where a finding is, in words.
+fn place(f: &Finding) -> String {
+    let mut p = vec![];
+    if let Some(c) = f.contour {
+        p.push(format!("contour {c}"));
+    }
+    if let Some([a, b]) = f.contours {
+        p.push(if a == b { format!("contour {a} (twice)") } else { format!("contours {a} and {b}") });
+    }
+    if let Some(i) = f.index {
+        p.push(format!("segment {i}"));
+    }
+    if let Some(n) = f.point {
+        p.push(format!("point {n}"));
+    }
+    p.join(" · ")
+}
+
+fn code(v: &impl std::fmt::Display) -> String {
+    format!("<code>{}</code>", esc(&v.to_string()))
+}
+
+/// The exact evidence of a finding as `<dt>`/`<dd>` pairs.
+fn evidence(f: &Finding) -> String {
+    let mut rows: Vec<(&str, String)> = vec![];
+    if !f.at.is_empty() {
+        let pts: Vec<String> = f.at.iter().map(|[x, y]| code(&format!("({x}, {y})"))).collect();
+        rows.push((if f.at.len() == 1 { "at" } else { "points" }, pts.join("<br>")));
+    }
+    if !f.parameters.is_empty() {
+        let ts: Vec<String> = f.parameters.iter().map(code).collect();
+        rows.push(("t", ts.join(", ")));
+    }
+    if let Some(a) = &f.area {
+        rows.push(("signed area", code(a)));
+    }
+    if let Some(d) = f.depth {
+        rows.push(("depth", d.to_string()));
+    }
+    if let Some(e) = f.expected {
+        rows.push((
+            "expected",
+            if e == casteljau::shape::Direction::Cw { "clockwise" } else { "counter-clockwise" }.into(),
+        ));
+    }
+    if let Some(a) = f.axis {
+        rows.push(("tangent", if a == "x" { "vertical (x extreme)" } else { "horizontal (y extreme)" }.into()));
+    }
+    if let Some(e) = &f.extent {
+        rows.push(("extent", code(e)));
+    }
+    if let Some(t) = f.turn_degrees_float {
+        rows.push(("turn", format!("≈ {t:.3}°")));
+    }
+    for sh in &f.shared {
+        rows.push((
+            "shared",
+            format!("contour {} segment {}, t from {} to {}", sh.contour, sh.segment, code(&sh.from), code(&sh.to)),
+        ));
+    }
+    let four =
+        |v: &[ExactValue]| code(&format!("[{}]", v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")));
+    if !f.stored.is_empty() {
+        rows.push(("stored box", four(&f.stored)));
+    }
+    if !f.computed.is_empty() {
+        rows.push(("exact box", four(&f.computed)));
+    }
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from("<dl class=\"ev\">");
+    for (k, v) in rows {
+        let _ = write!(s, "<dt>{k}</dt><dd>{v}</dd>");
+    }
+    s.push_str("</dl>");
+    s
+}
+
+/// A finding rounding explains, on one line (its message carries the exact values).
+fn rounding_item(s: &mut String, f: &Finding) {
+    let k = f.kind.as_str();
+    let _ = writeln!(
+        s,
+        "<li class=\"k-{k}\"><span class=\"kind\">{k}</span><span class=\"loc\">{}</span> <span class=\"r\">{}</span></li>",
+        place(f),
+        esc(&f.message)
+    );
+}
+
+fn finding_item(s: &mut String, n: usize, f: &Finding) {
+    let k = f.kind.as_str();
+    let num = format!("<span class=\"num\">{n}</span>");
+    let sev = f.severity.as_str();
+    let _ = writeln!(
+        s,
+        "<li class=\"k-{k}\">{num}<span class=\"kind\">{k}</span> <span class=\"sev {sev}\">{sev}</span><span class=\"loc\">{}</span>\
+         <div class=\"msg\">{}</div>{}</li>",
+        place(f),
+        esc(&f.message),
+        evidence(f)
+    );
+}
+
+fn card(s: &mut String, id: &str, u: &Unit) {
+    let mut attrs = String::new();
+    if let Some(g) = u.at.glyph_id {
+        let _ = write!(attrs, " data-glyph-id=\"{g}\"");
+    }
+    if let Some(face) = u.at.face {
+        let _ = write!(attrs, " data-face=\"{face}\"");
+    }
+    match &u.at.element {
+        Some(Element::Id(e)) => {
+            let _ = write!(attrs, " data-element=\"{}\"", esc(e));
+        }
+        Some(Element::Index(i)) => {
+            let _ = write!(attrs, " data-element=\"{i}\"");
+        }
+        None => {}
+    }
+    let _ = writeln!(s, "<article class=\"card\" id=\"{id}\"{attrs}>");
+    let mut meta = vec![];
+    if let Some(g) = u.at.glyph_id {
+        meta.push(format!("glyph id {g}"));
+    }
+    if let Some(face) = u.at.face {
+        meta.push(format!("face {face}"));
+    }
+    if let Some(tag) = &u.at.tag {
+        meta.push(format!("&lt;{}&gt;", esc(tag)));
+    }
+    let real: Vec<&Finding> = u.findings.iter().filter(|f| !f.rounding).collect();
+    let rounding: Vec<&Finding> = u.findings.iter().filter(|f| f.rounding).collect();
+    let mut by_sev = vec![];
+    for sev in [Severity::Error, Severity::Warning, Severity::Info] {
+        let n = real.iter().filter(|f| f.severity == sev).count();
+        if n > 0 {
+            by_sev.push(format!("{n} {}{}", sev.as_str(), plural(n)));
+        }
+    }
+    if !rounding.is_empty() {
+        by_sev.push(format!("{} explained by rounding", rounding.len()));
+    }
+    meta.extend(by_sev);
+    let _ = writeln!(
+        s,
+        "<header><h4><a href=\"#{id}\">{}</a></h4><span class=\"meta\">{}</span></header>",
+        esc(&u.label),
+        meta.join(" · ")
+    );
+    if let Some(e) = &u.error {
+        let _ = writeln!(s, "<p class=\"err\">Could not be checked: {}</p>", esc(e));
+    }
+    s.push_str("<div class=\"body\">\n");
+    let marked: Vec<(usize, &Finding)> = real.iter().enumerate().map(|(k, f)| (k + 1, *f)).collect();
+    if let Some(svg) = drawing(u, &marked) {
+        s.push_str(&svg);
+        s.push('\n');
+    }
+    s.push_str("<ol class=\"findings\">\n");
+    for (n, f) in &marked {
+        finding_item(s, *n, f);
+    }
+    s.push_str("</ol>\n</div>\n");
+    if !rounding.is_empty() {
+        let _ = writeln!(
+            s,
+            "<details><summary>{} finding{} explained by rounding (not marked)</summary><ol class=\"findings rounding\">",
+            rounding.len(),
+            plural(rounding.len())
+        );
+        for f in rounding {
+            rounding_item(s, f);
+        }
+        s.push_str("</ol></details>\n");
+    }
+    s.push_str("</article>\n");
 }
