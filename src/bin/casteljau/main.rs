@@ -24,6 +24,7 @@ mod glyphs;
 mod input;
 mod intersect;
 mod lint;
+mod lint_draw;
 mod lint_html;
 mod options;
 mod pipeline;
