@@ -64,9 +64,21 @@ fn lint_font(c: &mut Criterion) {
     };
     let font = Font::open(&data, 0).expect("a font");
     let outer = if font.is_cff() { Direction::Ccw } else { Direction::Cw };
+    // as the command line builds them: with the stored glyph box and the font's head box
+    let r4 = |b: [i16; 4]| b.map(|x| num_rational::BigRational::from_integer(x.into()));
     let glyphs: Vec<Glyph> = (0..font.num_glyphs())
-        .filter_map(|g| font.outline_numbered(g).ok())
-        .map(|o| Glyph { contours: o.contours, numbers: o.numbers, lone_points: o.lone_points, ..Default::default() })
+        .filter_map(|g| font.outline_numbered(g).ok().map(|o| (g, o)))
+        .map(|(g, o)| Glyph {
+            stored_box: if o.contours.iter().all(|c| c.segments.is_empty()) {
+                None
+            } else {
+                font.stored_glyph_box(g).map(r4)
+            },
+            font_box: font.head_box().map(r4),
+            contours: o.contours,
+            numbers: o.numbers,
+            lone_points: o.lone_points,
+        })
         .collect();
     let floats: Vec<Vec<Vec<kurbo::PathSeg>>> = glyphs
         .iter()

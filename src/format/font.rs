@@ -314,6 +314,9 @@ fn glyf_points(
     match glyph {
         None => Ok(()),
         Some(Glyph::Simple(g)) => {
+            // a glyph's own points, not a component's: no map to apply (exact arithmetic on
+            // every coordinate is most of the time of reading a font)
+            let identity = *m == Affine::identity();
             let mut points = g.points();
             let mut start = 0usize;
             for end in g.end_pts_of_contours() {
@@ -324,7 +327,8 @@ fn glyf_points(
                 let mut c = Vec::with_capacity(end + 1 - start);
                 for _ in start..=end {
                     let p = points.next().ok_or_else(|| fail(format!("glyph {gid}: too few points")))?;
-                    c.push((m.apply(&Point::new(vec![int(p.x), int(p.y)])), p.on_curve));
+                    let q = Point::new(vec![int(p.x), int(p.y)]);
+                    c.push((if identity { q } else { m.apply(&q) }, p.on_curve));
                 }
                 out.push(c);
                 start = end + 1;

@@ -12,8 +12,9 @@
 //!   carries pieces of both is `overlapping_segments` (of one contour twice: `[i, i]`).
 //! * Contour `i` lies *inside* `j` when they do not cross and an edge drawn by `i` and not by
 //!   `j` has a non-zero winding number of `j`; the depth of `i` is the number of contours it
-//!   lies inside. Outer contours (even depth) run in the outer direction, holes (odd) the other
-//!   way; the orientation is the sign of the contour's exact signed area.
+//!   lies inside, a contour drawn twice (every edge of each an edge of the other) counted once.
+//!   Outer contours (even depth) run in the outer direction, holes (odd) the other way; the
+//!   orientation is the sign of the contour's exact signed area.
 
 use super::exact::{ExactValue, segment_area};
 use super::{Finding, Glyph, Kind, LintOptions, SharedPiece};
@@ -135,75 +136,75 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
     }
     let crosses = |i: usize, j: usize| (sees[i][j].0 && sees[i][j].1) || (sees[j][i].0 && sees[j][i].1);
     let inside = |i: usize, j: usize| !crosses(i, j) && sees[i][j].1;
+    // every edge of each is an edge of the other: a contour drawn twice
+    let coincident = |i: usize, j: usize| i != j && sees[i][j] == (false, false) && sees[j][i] == (false, false);
 
-    for i in 0..n {
-        for j in i..n {
-            // shared edges
-            if o.wants(Kind::OverlappingSegments) {
-                for e in &arr.edges {
-                    let pieces: Vec<&(usize, RealAlgebraic, RealAlgebraic, bool)> =
-                        e.carriers.iter().filter(|c| arr.segs[c.0].input == i || arr.segs[c.0].input == j).collect();
-                    let (ni, nj) = (
-                        pieces.iter().filter(|c| arr.segs[c.0].input == i).count(),
-                        pieces.iter().filter(|c| arr.segs[c.0].input == j).count(),
-                    );
-                    let shared = if i == j { ni >= 2 } else { ni >= 1 && nj >= 1 };
-                    if !shared {
-                        continue;
+    // shared edges: every pair of inputs (or an input twice) an edge carries
+    if o.wants(Kind::OverlappingSegments) {
+        for e in arr.edges.iter().filter(|e| e.carriers.len() >= 2) {
+            let on = inputs_on(e);
+            let mut pairs: Vec<(usize, usize)> = vec![];
+            for (x, &i) in on.iter().enumerate() {
+                for &j in &on[x + 1..] {
+                    if !pairs.contains(&(i, j)) {
+                        pairs.push((i, j));
                     }
-                    let (a, b) = (vertex_point(e.from), vertex_point(e.to));
-                    let message = format!(
-                        "contours {} and {} both draw the piece from ({}, {}) to ({}, {})",
-                        contour_of[i], contour_of[j], a[0], a[1], b[0], b[1]
-                    );
-                    let mut f = Finding::new(Kind::OverlappingSegments, message).point_at(a).point_at(b);
-                    f.contours = Some([contour_of[i], contour_of[j]]);
-                    f.shared = pieces
-                        .iter()
-                        .map(|(k, lo, hi, fwd)| {
-                            let s = &arr.segs[*k];
-                            let (from, to) = if *fwd { (lo, hi) } else { (hi, lo) };
-                            SharedPiece {
-                                contour: contour_of[s.input],
-                                segment: s.index,
-                                from: ExactValue::from(from.clone()),
-                                to: ExactValue::from(to.clone()),
-                            }
-                        })
-                        .collect();
-                    out.push(f);
                 }
             }
-            if i == j || !(o.wants(Kind::Overlap) || o.wants(Kind::Touching)) {
-                continue;
+            for (i, j) in pairs {
+                let pieces: Vec<&(usize, RealAlgebraic, RealAlgebraic, bool)> =
+                    e.carriers.iter().filter(|c| arr.segs[c.0].input == i || arr.segs[c.0].input == j).collect();
+                let (a, b) = (vertex_point(e.from), vertex_point(e.to));
+                let whom = if i == j {
+                    format!("contour {} draws", contour_of[i])
+                } else {
+                    format!("contours {} and {} both draw", contour_of[i], contour_of[j])
+                };
+                let twice = if i == j { " twice" } else { "" };
+                let message = format!("{whom} the piece from ({}, {}) to ({}, {}){twice}", a[0], a[1], b[0], b[1]);
+                let mut f = Finding::new(Kind::OverlappingSegments, message).point_at(a).point_at(b);
+                f.contours = Some([contour_of[i], contour_of[j]]);
+                f.shared = pieces
+                    .iter()
+                    .map(|(k, lo, hi, fwd)| {
+                        let s = &arr.segs[*k];
+                        let (from, to) = if *fwd { (lo, hi) } else { (hi, lo) };
+                        SharedPiece {
+                            contour: contour_of[s.input],
+                            segment: s.index,
+                            from: ExactValue::from(from.clone()),
+                            to: ExactValue::from(to.clone()),
+                        }
+                    })
+                    .collect();
+                out.push(f);
             }
-            let contacts: Vec<usize> = (0..records.len())
-                .filter(|&v| records[v].iter().any(|r| r.0 == i) && records[v].iter().any(|r| r.0 == j))
-                .collect();
-            if contacts.is_empty() {
-                continue;
+        }
+    }
+    // contacts between two contours: the vertices where both have a record
+    if o.wants(Kind::Overlap) || o.wants(Kind::Touching) {
+        let mut contacts: std::collections::BTreeMap<(usize, usize), Vec<usize>> = Default::default();
+        for (v, rs) in records.iter().enumerate() {
+            let mut here: Vec<usize> = rs.iter().map(|r| r.0).collect();
+            here.sort_unstable();
+            here.dedup();
+            for (x, &i) in here.iter().enumerate() {
+                for &j in &here[x + 1..] {
+                    contacts.entry((i, j)).or_default().push(v);
+                }
             }
+        }
+        for ((i, j), vs) in contacts {
             let kind = if crosses(i, j) { Kind::Overlap } else { Kind::Touching };
             if !o.wants(kind) {
                 continue;
             }
-            let points: Vec<[ExactValue; 2]> = contacts.iter().map(|&v| vertex_point(v)).collect();
+            let points: Vec<[ExactValue; 2]> = vs.iter().map(|&v| vertex_point(v)).collect();
             let list: Vec<String> = points.iter().take(4).map(|p| format!("({}, {})", p[0], p[1])).collect();
             let more = if points.len() > 4 { format!(" and {} more", points.len() - 4) } else { String::new() };
-            let message = match kind {
-                Kind::Overlap => format!(
-                    "contours {} and {} cross; they meet at {}{more}",
-                    contour_of[i],
-                    contour_of[j],
-                    list.join(", ")
-                ),
-                _ => format!(
-                    "contours {} and {} touch without crossing at {}{more}",
-                    contour_of[i],
-                    contour_of[j],
-                    list.join(", ")
-                ),
-            };
+            let verb = if kind == Kind::Overlap { "cross; they meet" } else { "touch without crossing" };
+            let message =
+                format!("contours {} and {} {verb} at {}{more}", contour_of[i], contour_of[j], list.join(", "));
             let mut f = Finding::new(kind, message);
             for p in points {
                 f = f.point_at(p);
@@ -221,7 +222,13 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
                 Ordering::Less => Direction::Cw,
                 Ordering::Equal => continue,
             };
-            let depth = (0..n).filter(|&j| j != i && inside(i, j)).count();
+            // contours drawn twice count once (their duplicate is overlapping_segments)
+            let containers: Vec<usize> = (0..n).filter(|&j| j != i && inside(i, j)).collect();
+            let depth = containers
+                .iter()
+                .enumerate()
+                .filter(|&(x, &j)| !containers[..x].iter().any(|&k| coincident(k, j)))
+                .count();
             let expected = if depth % 2 == 0 { o.outer } else { o.outer.reversed() };
             if found == expected {
                 continue;

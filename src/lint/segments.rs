@@ -301,7 +301,15 @@ pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
             out.push(f);
         }
     }
-    if let Some(font) = &g.font_box {
+    // a segment lies in the hull of its control points: only a control point outside the
+    // font's box can take the outline out of it
+    let outside_hull = |font: &[BigRational; 4]| {
+        segments
+            .iter()
+            .flat_map(|s| s.iter())
+            .any(|p| (0..2).any(|a| p.coords[a] < font[a] || p.coords[a] > font[a + 2]))
+    };
+    if let Some(font) = g.font_box.as_ref().filter(|f| outside_hull(f)) {
         // the exact outline's extreme coordinates: end points and interior extrema
         let mut worst: [Option<RealAlgebraic>; 4] = [None, None, None, None];
         for ps in &segments {

@@ -125,6 +125,12 @@ fn lint_contours_cross_touch_share_and_nest() {
     assert_eq!(kinds(&fs), [Kind::Direction]);
     assert_eq!((fs[0].contour, fs[0].depth, fs[0].expected), (Some(1), Some(1), Some(Direction::Cw)));
     assert_eq!(fs[0].area, Some(rat(36)));
+    // a glyph drawn twice (a duplicated component): its hole lies in two copies of one outer
+    // contour, depth 1 not 2; the duplicate is what is reported
+    let fs = findings("M0 0 H10 V10 H0 Z M2 2 V8 H8 V2 Z M0 0 H10 V10 H0 Z M2 2 V8 H8 V2 Z");
+    assert!(fs.iter().all(|f| f.kind != Kind::Direction), "{:?}", kinds(&fs));
+    assert!(fs.iter().any(|f| f.kind == Kind::OverlappingSegments && f.contours == Some([0, 2])));
+    assert!(fs.iter().any(|f| f.kind == Kind::OverlappingSegments && f.contours == Some([1, 3])));
     // a contour drawing an edge twice (a slit): overlapping_segments of [0, 0]
     let fs = findings("M0 0 H10 V10 H5 V2 V10 H0 Z");
     assert!(fs.iter().any(|f| f.kind == Kind::OverlappingSegments && f.contours == Some([0, 0])));
