@@ -28,7 +28,17 @@ pub use svg_path::{MAX_PATH_BYTES, close_for_fill, fill_path, parse_path};
 pub type PointNumbers = Vec<Vec<Option<usize>>>;
 
 /// A glyph's contours with the numbering of their stored points ([`PointNumbers`], one per
-/// contour) and the points of its one-point contours, which draw nothing.
+/// contour) and the points of its one-point contours, which draw nothing (`Font::outline_numbered`,
+/// feature `fonts`).
+///
+/// # Example
+/// ```
+/// use casteljau::format::{NumberedOutline, parse_path, point_numbers};
+/// let contours = parse_path("M0 0 H2 V2 Z", casteljau::num::NumberMode::Exact).unwrap();
+/// let numbers = contours.iter().map(point_numbers).collect();
+/// let o = NumberedOutline { contours, numbers, lone_points: vec![] };
+/// assert_eq!(o.numbers[0][2], [Some(2), Some(0)]); // the closing line ends on point 0
+/// ```
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct NumberedOutline {
     /// The contours.
