@@ -2,8 +2,7 @@
 //! as inline SVG in screen coordinates (y flipped for fonts), its nodes and handles, and the
 //! marks of its findings.
 
-use crate::lint::Unit;
-use crate::lint_html::{esc, is_font};
+use crate::lint_units::Unit;
 use casteljau::format::Segment;
 use casteljau::lint::{ExactValue, Finding, Kind};
 use casteljau::num::Point;
@@ -46,7 +45,7 @@ fn diff(a: &Point<BigRational>, b: &Point<BigRational>) -> [BigRational; 2] {
 
 impl Outline {
     fn new(u: &Unit) -> Outline {
-        let flip = is_font(u);
+        let flip = u.is_font();
         let f = |p: &Point<BigRational>| {
             let [x, y] = xy(p).map(casteljau::num::ratio_to_f64);
             (x, if flip { -y } else { y })
@@ -492,4 +491,22 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
         let _ = write!(s, "<g class=\"m k-{}\">{m}</g>", f.kind.as_str());
     }
     badge
+}
+
+/// `&`, `<`, `>`, `"` and `'` as references; controls HTML forbids as U+FFFD.
+pub(crate) fn esc(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            '\t' | '\n' => out.push(c),
+            c if c.is_control() || c == '\u{FFFE}' || c == '\u{FFFF}' => out.push('\u{FFFD}'),
+            c => out.push(c),
+        }
+    }
+    out
 }

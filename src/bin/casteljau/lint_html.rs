@@ -22,12 +22,12 @@
 //! `data-glyph-id` (fonts) or `data-element` (SVG), and each drawing is `<svg class="glyph">`
 //! with explicit `width` and `height`.
 
-use crate::lint::{FileReport, Unit};
+use crate::lint_units::{FileReport, Unit};
 use casteljau::format::Element;
 use casteljau::lint::{ExactValue, Finding, Kind, Severity};
 use std::fmt::Write as _;
 
-use crate::lint_draw::drawing;
+use crate::lint_draw::{drawing, esc};
 
 /// Glyphs drawn per file at most (the others are listed in the glyph table and counted).
 pub const MAX_DRAWN: usize = 2000;
@@ -213,15 +213,11 @@ fn wants_drawing(u: &Unit) -> bool {
     u.error.is_some() || u.findings.iter().any(|f| !f.rounding)
 }
 
-pub(crate) fn is_font(u: &Unit) -> bool {
-    u.at.glyph_id.is_some()
-}
-
 fn file_section(s: &mut String, i: usize, f: &FileReport, deny: &[Kind]) {
     let t = &f.tally;
     let _ = writeln!(s, "<section class=\"file\" id=\"f{i}\" data-file=\"{}\">", esc(&f.file));
     let _ = writeln!(s, "<h2>{}</h2>", esc(&f.file));
-    let font = f.units.iter().any(is_font);
+    let font = f.units.iter().any(Unit::is_font);
     let unit_word = if font { "glyphs" } else { "elements" };
     let sev = |v: Severity| t.by_severity.get(&v).copied().unwrap_or(0);
     let denied_count: usize = t.by_kind.iter().filter(|(k, _)| deny.contains(k)).map(|(_, (n, _))| n).sum();
@@ -455,24 +451,6 @@ fn legend(s: &mut String, font: bool) {
         "direction at the contour's start",
     );
     s.push_str("</div>\n");
-}
-
-/// `&`, `<`, `>`, `"` and `'` as references; controls HTML forbids as U+FFFD.
-pub(crate) fn esc(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            '\t' | '\n' => out.push(c),
-            c if c.is_control() || c == '\u{FFFE}' || c == '\u{FFFF}' => out.push('\u{FFFD}'),
-            c => out.push(c),
-        }
-    }
-    out
 }
 
 /// Where a finding is, in words.

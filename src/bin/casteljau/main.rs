@@ -26,6 +26,7 @@ mod intersect;
 mod lint;
 mod lint_draw;
 mod lint_html;
+mod lint_units;
 mod options;
 mod pipeline;
 mod render;
