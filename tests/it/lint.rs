@@ -111,6 +111,22 @@ fn lint_degenerate_handles_cusps_and_loops() {
 }
 
 #[test]
+fn lint_a_contour_of_one_closed_cubic_is_no_loop() {
+    // a teardrop of one cubic: its ends meet at (0, 0) (t = 0 and 1), where the contour joins
+    // the segment to itself; the segment does not cross itself
+    for d in ["M0 0 C100 100 -100 100 0 0 Z", "M0 0 C-100 100 100 100 0 0 Z"] {
+        let fs = findings(d);
+        assert!(!kinds(&fs).contains(&Kind::Loop), "{d}: {:?}", kinds(&fs));
+        assert!(!kinds(&fs).contains(&Kind::SelfIntersection), "{d}: {:?}", kinds(&fs));
+    }
+    // the start point passed again inside the segment (t = 0 and 3/5) is still a loop
+    let fs = findings("M10 10 C10 40 30 10 -30 -30 Z");
+    let l = fs.iter().find(|f| f.kind == Kind::Loop).unwrap();
+    assert_eq!(l.parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>(), ["0", "3/5"]);
+    assert_eq!(strings(&l.at[0]), ["10", "10"]);
+}
+
+#[test]
 fn lint_contours_cross_touch_share_and_nest() {
     let fs = findings("M0 0 H10 V10 H0 Z M5 5 H15 V15 H5 Z");
     assert_eq!(kinds(&fs), [Kind::Overlap]);
