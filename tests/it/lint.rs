@@ -127,6 +127,22 @@ fn lint_a_contour_of_one_closed_cubic_is_no_loop() {
 }
 
 #[test]
+fn lint_a_quartic_segment_is_refused() {
+    // the checks are for degrees 1 to 3: a quartic (a made-up contour, no reader gives one) is
+    // an error, not wrong findings (its extremum at t = 1/2 was missed) or a panic
+    let p = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
+    let quartic = vec![p(0, 0), p(10, 10), p(20, 10), p(30, 10), p(40, 0)];
+    for pts in [quartic, vec![]] {
+        let g = Glyph {
+            contours: vec![Contour { segments: vec![Segment::Bezier(pts)], closed: true }],
+            ..Default::default()
+        };
+        let e = lint(&g, &LintOptions::new(Direction::Ccw)).unwrap_err();
+        assert!(e.to_string().contains("degrees 1 to 3"), "{e}");
+    }
+}
+
+#[test]
 fn lint_contours_cross_touch_share_and_nest() {
     let fs = findings("M0 0 H10 V10 H0 Z M5 5 H15 V15 H5 Z");
     assert_eq!(kinds(&fs), [Kind::Overlap]);
