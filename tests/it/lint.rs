@@ -143,6 +143,18 @@ fn lint_a_quartic_segment_is_refused() {
 }
 
 #[test]
+fn lint_self_intersection_of_an_open_contour_names_a_stored_segment() {
+    // contour 1 is an open subpath, closed for fill by the line (10, 20) → (30, 20) that
+    // crosses segment 2 at (25, 20): the finding's segment is one of the contour's four (not
+    // the closing line, 4), with its parameter
+    let fs = findings("M40 20 L40 20 L20 20 M30 20 L40 20 L40 40 L10 0 L10 20");
+    let f = fs.iter().find(|f| f.kind == Kind::SelfIntersection && f.contour == Some(1)).unwrap();
+    assert_eq!(f.index, Some(2));
+    assert_eq!(f.parameters[0].to_string(), "1/2");
+    assert_eq!(strings(&f.at[0]), ["25", "20"]);
+}
+
+#[test]
 fn lint_contours_cross_touch_share_and_nest() {
     let fs = findings("M0 0 H10 V10 H0 Z M5 5 H15 V15 H5 Z");
     assert_eq!(kinds(&fs), [Kind::Overlap]);
