@@ -18,7 +18,7 @@ use std::fmt;
 /// # Example
 /// ```
 /// use casteljau::lint::ExactValue;
-/// use casteljau::num::quadratic_field::QuadraticExt;
+/// use casteljau::QuadraticExt;
 /// use casteljau::rat;
 /// let half = ExactValue::from(QuadraticExt::from_base(rat(1) / rat(2)));
 /// assert_eq!(half, ExactValue::Rational(rat(1) / rat(2)));

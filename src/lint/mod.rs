@@ -457,6 +457,7 @@ impl LintOptions {
     ///
     /// # Example
     /// ```
+    /// use num_traits::Signed;
     /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw).with_kink_angle(45.0).unwrap();
     /// assert!((o.kink_tangent.clone() - casteljau::rat(1)).abs() < casteljau::rat(1) / casteljau::rat(1 << 40));
     /// assert!(casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw).with_kink_angle(90.0).is_err());
