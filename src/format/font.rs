@@ -415,7 +415,8 @@ fn quadratic_contour(points: &RawContour) -> (Contour, super::PointNumbers) {
     let mut segments = vec![];
     let mut numbers = vec![];
     let n = points.len();
-    if n == 0 {
+    // a contour of one point (on- or off-curve) draws nothing: its point is listed apart
+    if n <= 1 {
         return (Contour { segments, closed: true }, numbers);
     }
     let first_on = points.iter().position(|(_, on)| *on);

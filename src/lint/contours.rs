@@ -104,8 +104,11 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
                     format!("contour {} meets itself at ({}, {}): {}", contour_of[i], at[0], at[1], list.join(", "));
                 let mut f = Finding::new(Kind::SelfIntersection, message).point_at(at);
                 f.contour = Some(contour_of[i]);
-                f.index = Some(mine[0].1);
-                f.parameters = vec![ExactValue::from(mine[0].2.clone())];
+                // a segment of the contour, not the line that closes an open one for fill
+                let stored = g.contours[contour_of[i]].segments.len();
+                let first = mine.iter().find(|r| r.1 < stored).unwrap_or(&mine[0]);
+                f.index = Some(first.1);
+                f.parameters = vec![ExactValue::from(first.2.clone())];
                 out.push(f);
             }
         }

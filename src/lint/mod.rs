@@ -479,6 +479,7 @@ impl LintOptions {
     ///
     /// # Example
     /// ```
+    /// use num_traits::Signed;
     /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw).with_kink_angle(45.0).unwrap();
     /// let (one, tiny) = (casteljau::rat(1), casteljau::rat(1) / casteljau::rat(1 << 40));
     /// assert!(o.kink_tangent > &one - &tiny && o.kink_tangent < one + tiny); // tan 45° within 2^-40
@@ -508,7 +509,7 @@ impl LintOptions {
 /// [`Error::WorkLimit`] when the glyph's arrangement is estimated above `options.budget`; the
 /// errors of [`crate::shape::Arrangement::new_within`]; [`Error::InvalidArgument`] for a
 /// contour with a piece that is no polynomial Bézier curve (an SVG arc) when an arrangement
-/// kind is asked for.
+/// kind is asked for, and for a Bézier segment of degree above 3 (or without control points).
 ///
 /// # Example
 /// ```
@@ -522,6 +523,21 @@ impl LintOptions {
 /// assert_eq!(f[1].shared.len(), 2);
 /// ```
 pub fn lint(glyph: &Glyph, options: &LintOptions) -> Result<Vec<Finding>> {
+    // the checks are written for lines, quadratics and cubics (what fonts and SVG hold)
+    for (ci, c) in glyph.contours.iter().enumerate() {
+        for (si, s) in c.segments.iter().enumerate() {
+            if let Segment::Bezier(ps) = s
+                && !(1..=4).contains(&ps.len())
+            {
+                return Err(Error::InvalidArgument {
+                    message: format!(
+                        "contour {ci}, segment {si}: a Bézier segment of {} control points (lint checks degrees 1 to 3)",
+                        ps.len()
+                    ),
+                });
+            }
+        }
+    }
     let mut out = vec![];
     for (ci, c) in glyph.contours.iter().enumerate() {
         let numbers = glyph.numbers.get(ci);

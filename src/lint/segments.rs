@@ -237,7 +237,10 @@ fn cusps_and_loops(ps: &[P], o: &LintOptions) -> Vec<Finding> {
             out.push(f);
         }
     }
-    if o.wants(Kind::Loop) && k.segment.has_loop {
+    // a double point at t = 0 and 1 only is the segment's two ends meeting (a closed segment,
+    // such as a contour of one cubic): the segment does not cross itself there
+    let crossing = k.double_point_parameters.iter().any(strictly_inside);
+    if o.wants(Kind::Loop) && k.segment.has_loop && crossing {
         let ts: Vec<ExactValue> = k.double_point_parameters.iter().map(|t| ExactValue::from(t.clone())).collect();
         let at = match &k.double_point {
             Some(p) => point(p),

@@ -137,3 +137,29 @@ fn lint_refuses_bad_input_with_exit_2() {
     let v = json_lines(&stdout(&o));
     assert!(v[0]["error"].as_str().unwrap().contains("--max-work"), "{v:?}");
 }
+
+fn lint_font_json(data: &[u8], extra: &[&str]) -> (Option<i32>, Vec<Value>) {
+    let dir = TempDir::new("cli-lint-font");
+    let path = dir.join("f.ttf");
+    std::fs::write(&path, data).unwrap();
+    let o = run(&[&["lint", "--json", path.to_str().unwrap()][..], extra].concat(), None);
+    (o.status.code(), json_lines(&stdout(&o)))
+}
+
+#[test]
+fn lint_one_point_off_curve_contour_draws_nothing() {
+    // a contour of one point draws nothing, whether the point is on or off the curve: no
+    // zero-length segment, and the point stays out of the head box check of the outline
+    use crate::font_builder::{TtGlyph, off, on, truetype_with_head_bbox};
+    let square = vec![on(100, 100), on(100, 500), on(500, 500), on(500, 100)];
+    let glyphs = [
+        TtGlyph::new("anchor_on", vec![vec![on(50, 50)], square.clone()]),
+        TtGlyph::new("anchor_off", vec![vec![off(50, 50)], square.clone()]),
+        TtGlyph::new("anchor_off_only", vec![vec![off(50, 50)]]),
+    ];
+    let (code, v) = lint_font_json(&truetype_with_head_bbox(&glyphs, Some([50, 50, 500, 500])), &[]);
+    assert_eq!(code, Some(0), "{v:?}");
+    assert!(v.is_empty(), "{v:?}");
+    let (_, v) = lint_font_json(&truetype_with_head_bbox(&glyphs, Some([100, 100, 500, 500])), &["--only", "bbox"]);
+    assert!(v.is_empty(), "{v:?}");
+}

@@ -111,6 +111,50 @@ fn lint_degenerate_handles_cusps_and_loops() {
 }
 
 #[test]
+fn lint_a_contour_of_one_closed_cubic_is_no_loop() {
+    // a teardrop of one cubic: its ends meet at (0, 0) (t = 0 and 1), where the contour joins
+    // the segment to itself; the segment does not cross itself
+    for d in ["M0 0 C100 100 -100 100 0 0 Z", "M0 0 C-100 100 100 100 0 0 Z"] {
+        let fs = findings(d);
+        assert!(!kinds(&fs).contains(&Kind::Loop), "{d}: {:?}", kinds(&fs));
+        assert!(!kinds(&fs).contains(&Kind::SelfIntersection), "{d}: {:?}", kinds(&fs));
+    }
+    // the start point passed again inside the segment (t = 0 and 3/5) is still a loop
+    let fs = findings("M10 10 C10 40 30 10 -30 -30 Z");
+    let l = fs.iter().find(|f| f.kind == Kind::Loop).unwrap();
+    assert_eq!(l.parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>(), ["0", "3/5"]);
+    assert_eq!(strings(&l.at[0]), ["10", "10"]);
+}
+
+#[test]
+fn lint_a_quartic_segment_is_refused() {
+    // the checks are for degrees 1 to 3: a quartic (a made-up contour, no reader gives one) is
+    // an error, not wrong findings (its extremum at t = 1/2 was missed) or a panic
+    let p = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
+    let quartic = vec![p(0, 0), p(10, 10), p(20, 10), p(30, 10), p(40, 0)];
+    for pts in [quartic, vec![]] {
+        let g = Glyph {
+            contours: vec![Contour { segments: vec![Segment::Bezier(pts)], closed: true }],
+            ..Default::default()
+        };
+        let e = lint(&g, &LintOptions::new(Direction::Ccw)).unwrap_err();
+        assert!(e.to_string().contains("degrees 1 to 3"), "{e}");
+    }
+}
+
+#[test]
+fn lint_self_intersection_of_an_open_contour_names_a_stored_segment() {
+    // contour 1 is an open subpath, closed for fill by the line (10, 20) → (30, 20) that
+    // crosses segment 2 at (25, 20): the finding's segment is one of the contour's four (not
+    // the closing line, 4), with its parameter
+    let fs = findings("M40 20 L40 20 L20 20 M30 20 L40 20 L40 40 L10 0 L10 20");
+    let f = fs.iter().find(|f| f.kind == Kind::SelfIntersection && f.contour == Some(1)).unwrap();
+    assert_eq!(f.index, Some(2));
+    assert_eq!(f.parameters[0].to_string(), "1/2");
+    assert_eq!(strings(&f.at[0]), ["25", "20"]);
+}
+
+#[test]
 fn lint_contours_cross_touch_share_and_nest() {
     let fs = findings("M0 0 H10 V10 H0 Z M5 5 H15 V15 H5 Z");
     assert_eq!(kinds(&fs), [Kind::Overlap]);
