@@ -15,6 +15,10 @@
 //!   lies inside, a contour drawn twice (every edge of each an edge of the other) counted once.
 //!   Outer contours (even depth) run in the outer direction, holes (odd) the other way; the
 //!   orientation is the sign of the contour's exact signed area.
+//!
+//! An open subpath takes part closed by a line, as its fill is (its closing line is segment
+//! number `n` of a subpath of `n` segments in `shared`), unless it lies on one line: then it
+//! encloses nothing (a stroke, an SVG `<line>`) and is left out.
 
 use super::exact::{ExactValue, segment_area};
 use super::{Finding, Glyph, Kind, LintOptions, SharedPiece};
@@ -37,6 +41,11 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
     for (ci, c) in g.contours.iter().enumerate() {
         let segs = close_for_fill(c)?;
         if segs.iter().all(|s| s.points().iter().all(|p| *p == s.points()[0])) {
+            continue;
+        }
+        // an open subpath on one line (an SVG <line>, a stroke) encloses nothing: its fill
+        // outline would retrace it, which is no defect of an open path
+        if !c.closed && on_one_line(&segs) {
             continue;
         }
         areas.push(segs.iter().map(|s| segment_area(s.points())).fold(rat(0), |a, b| a + b));
@@ -259,6 +268,16 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
         }
     }
     Ok(out)
+}
+
+/// Every control point of every segment on one line.
+fn on_one_line(segs: &[crate::curve::BezierCurve<num_rational::BigRational>]) -> bool {
+    use super::exact::{cross, sub, v};
+    let ps: Vec<_> = segs.iter().flat_map(|s| s.points().iter().map(v)).collect();
+    let Some(a) = ps.first() else { return true };
+    let Some(b) = ps.iter().find(|p| *p != a) else { return true };
+    let d = sub(b, a);
+    ps.iter().all(|p| cross(&d, &sub(p, a)) == rat(0))
 }
 
 fn start_point(g: &Glyph, ci: usize) -> Option<[ExactValue; 2]> {

@@ -479,7 +479,6 @@ impl LintOptions {
     ///
     /// # Example
     /// ```
-    /// use num_traits::Signed;
     /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw).with_kink_angle(45.0).unwrap();
     /// let (one, tiny) = (casteljau::rat(1), casteljau::rat(1) / casteljau::rat(1 << 40));
     /// assert!(o.kink_tangent > &one - &tiny && o.kink_tangent < one + tiny); // tan 45° within 2^-40

@@ -163,3 +163,23 @@ fn lint_one_point_off_curve_contour_draws_nothing() {
     let (_, v) = lint_font_json(&truetype_with_head_bbox(&glyphs, Some([100, 100, 500, 500])), &["--only", "bbox"]);
     assert!(v.is_empty(), "{v:?}");
 }
+
+#[test]
+fn lint_svg_strokes_enclose_nothing_and_conics_are_listed_as_skipped() {
+    let dir = TempDir::new("cli-lint-svg-skip");
+    let svg = dir.write(
+        "s.svg",
+        r#"<svg xmlns="http://www.w3.org/2000/svg"><circle cx="5" cy="5" r="3"/><line x1="0" y1="0" x2="10" y2="0"/><path d="M0 0 L100 0 L50 0"/><polyline points="0 0 10 0 10 10"/></svg>"#,
+    );
+    let o = run(&["lint", "--json", svg.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    let v = json_lines(&stdout(&o));
+    // the circle is listed as skipped; the line and the open path on one line draw no fill, so
+    // their retraced fill outline is no overlapping_segments; the polyline's fill is a triangle
+    assert_eq!(v.len(), 1, "{v:?}");
+    assert_eq!((v[0]["tag"].as_str(), v[0]["skipped"].is_string()), (Some("circle"), true));
+    assert!(stderr(&o).contains("3 checked") && stderr(&o).contains("1 skipped"), "{}", stderr(&o));
+    // closed, the same path is a contour drawn twice over its piece from (50, 0) to (100, 0)
+    let o = run(&["lint", "--json", "--path", "M0 0 L100 0 L50 0 Z"], None);
+    assert!(json_lines(&stdout(&o)).iter().any(|f| f["kind"] == "overlapping_segments"));
+}

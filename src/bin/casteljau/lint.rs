@@ -5,7 +5,8 @@
 //! (one line per finding, then a summary per file) or `--json` (one JSON object per finding:
 //! the location fields `file`, `face` (collections), `glyph`, `glyph_id` or `element`, `tag`,
 //! then the fields of `casteljau::lint::Finding`; a glyph that could not be checked is a line
-//! with `error`). `--html` also writes the report of `lint_html`.
+//! with `error`; an SVG element that is no Bézier outline (a circle, an ellipse) a line with
+//! `skipped`, counted apart). `--html` also writes the report of `lint_html`.
 //!
 //! Exit code: 2 when a file, a glyph or an element could not be read or checked; else 1 when a
 //! finding of a denied kind is not explained by rounding; else 0.
@@ -46,8 +47,8 @@ impl Linter {
 
     fn check(&self, at: Source<'static>, label: String, glyph: Glyph, outer: Direction) -> Unit {
         match lint(&glyph, &self.options(outer)) {
-            Ok(findings) => Unit { at, label, glyph, findings, error: None },
-            Err(e) => Unit { at, label, glyph, findings: vec![], error: Some(e.to_string()) },
+            Ok(findings) => Unit { at, label, glyph, findings, error: None, skipped: None },
+            Err(e) => Unit { at, label, glyph, findings: vec![], error: Some(e.to_string()), skipped: None },
         }
     }
 
@@ -60,6 +61,12 @@ impl Linter {
             finding: &'a Finding,
         }
         #[derive(Serialize)]
+        struct SkippedLine<'a> {
+            #[serde(flatten)]
+            at: &'a Source<'a>,
+            skipped: &'a str,
+        }
+        #[derive(Serialize)]
         struct ErrorLine<'a> {
             #[serde(flatten)]
             at: &'a Source<'a>,
@@ -68,6 +75,10 @@ impl Linter {
         if self.json {
             if let Some(e) = &u.error {
                 serde_json::to_writer(&mut *out, &ErrorLine { at: &u.at, error: e }).expect("strings serialize");
+                out.push(b'\n');
+            }
+            if let Some(why) = &u.skipped {
+                serde_json::to_writer(&mut *out, &SkippedLine { at: &u.at, skipped: why }).expect("strings serialize");
                 out.push(b'\n');
             }
             for f in &u.findings {
@@ -79,6 +90,9 @@ impl Linter {
         let file = u.at.file;
         if let Some(e) = &u.error {
             let _ = writeln!(out, "{file}: {}: error: {e}", u.label);
+        }
+        if let Some(why) = &u.skipped {
+            let _ = writeln!(out, "{file}: {}: skipped: {why}", u.label);
         }
         for f in &u.findings {
             let mut place = vec![];
@@ -204,9 +218,14 @@ fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
         let at = Source { element: Some(Element::Index(0)), ..Source::new("<path>") };
         let unit = match parse_path(d, linter.mode) {
             Ok(contours) => linter.check(at, "path".into(), Glyph::new(contours), Direction::Ccw),
-            Err(e) => {
-                Unit { at, label: "path".into(), glyph: Glyph::default(), findings: vec![], error: Some(e.to_string()) }
-            }
+            Err(e) => Unit {
+                at,
+                label: "path".into(),
+                glyph: Glyph::default(),
+                findings: vec![],
+                error: Some(e.to_string()),
+                skipped: None,
+            },
         };
         if !finish("<path>", vec![unit], &mut tally, &mut kept, out) {
             return Ok(2);
@@ -260,14 +279,15 @@ fn summary(file: &str, t: &Tally) -> String {
         .collect();
     let sev = |s: Severity| t.by_severity.get(&s).copied().unwrap_or(0);
     format!(
-        "{file}: {} checked, {} flagged; {} errors, {} warnings, {} info; {}{}",
+        "{file}: {} checked, {} flagged; {} errors, {} warnings, {} info; {}{}{}",
         t.units,
         t.flagged,
         sev(Severity::Error),
         sev(Severity::Warning),
         sev(Severity::Info),
         if kinds.is_empty() { "no findings".into() } else { kinds.join(", ") },
-        if t.errors > 0 { format!("; {} could not be checked", t.errors) } else { String::new() }
+        if t.errors > 0 { format!("; {} could not be checked", t.errors) } else { String::new() },
+        if t.skipped > 0 { format!("; {} skipped (no Bézier outline)", t.skipped) } else { String::new() }
     )
 }
 
@@ -325,6 +345,7 @@ fn lint_font(
                                 glyph: Glyph::default(),
                                 findings: vec![],
                                 error: Some(e.to_string()),
+                                skipped: None,
                             },
                         }
                     })
@@ -351,7 +372,6 @@ fn lint_svg(
         let units: Vec<Unit> = pool.install(|| {
             chunk
                 .par_iter()
-                .filter(|s| !matches!(&s.contours, Err(e) if e.is_skipped()))
                 .map(|s| {
                     let element = match &s.id {
                         Some(id) => Element::Id(id.clone()),
@@ -364,12 +384,22 @@ fn lint_svg(
                     let at = Source { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
                     match &s.contours {
                         Ok(contours) => linter.check(at, label, Glyph::new(contours.clone()), Direction::Ccw),
+                        // not an error of the file: listed as skipped, as scan lists it
+                        Err(e) if e.is_skipped() => Unit {
+                            at,
+                            label,
+                            glyph: Glyph::default(),
+                            findings: vec![],
+                            error: None,
+                            skipped: Some(e.to_string()),
+                        },
                         Err(e) => Unit {
                             at,
                             label,
                             glyph: Glyph::default(),
                             findings: vec![],
                             error: Some(format!("line {}: {e}", s.line)),
+                            skipped: None,
                         },
                     }
                 })

@@ -17,6 +17,9 @@ pub struct Unit {
     pub findings: Vec<Finding>,
     /// Why it could not be checked.
     pub error: Option<String>,
+    /// Why it was not checked: an SVG element that is no Bézier outline (a circle, an
+    /// ellipse), as `scan` skips it.
+    pub skipped: Option<String>,
 }
 
 /// Counts of one file.
@@ -32,10 +35,16 @@ pub struct Tally {
     pub by_severity: BTreeMap<Severity, usize>,
     /// Glyphs that could not be checked.
     pub errors: usize,
+    /// SVG elements skipped (no Bézier outline).
+    pub skipped: usize,
 }
 
 impl Tally {
     pub fn add(&mut self, u: &Unit) {
+        if u.skipped.is_some() {
+            self.skipped += 1;
+            return;
+        }
         self.units += 1;
         if u.error.is_some() {
             self.errors += 1;
