@@ -33,6 +33,8 @@ mod identity_8;
 #[cfg(feature = "cli")]
 mod intersect;
 mod lint;
+#[cfg(feature = "fonts")]
+mod lint_fonts;
 #[cfg(feature = "cli")]
 mod lint_report;
 #[cfg(feature = "cli")]
