@@ -63,9 +63,10 @@ pub struct NumberedOutline {
 /// ```
 pub fn point_numbers(c: &Contour) -> PointNumbers {
     let mut next = 0usize;
-    let start = c.segments.first().map(|s| match s {
-        Segment::Bezier(ps) => ps[0].clone(),
-        Segment::Skipped { from, .. } => from.clone(),
+    // (a segment without points, which no reader makes, numbers as none)
+    let start = c.segments.first().and_then(|s| match s {
+        Segment::Bezier(ps) => ps.first().cloned(),
+        Segment::Skipped { from, .. } => Some(from.clone()),
     });
     let last = c.segments.len().saturating_sub(1);
     c.segments

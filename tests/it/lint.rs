@@ -134,11 +134,14 @@ fn lint_a_quartic_segment_is_refused() {
     let quartic = vec![p(0, 0), p(10, 10), p(20, 10), p(30, 10), p(40, 0)];
     for pts in [quartic, vec![]] {
         let g = Glyph {
-            contours: vec![Contour { segments: vec![Segment::Bezier(pts)], closed: true }],
+            contours: vec![Contour { segments: vec![Segment::Bezier(pts.clone())], closed: true }],
             ..Default::default()
         };
         let e = lint(&g, &LintOptions::new(Direction::Ccw)).unwrap_err();
         assert!(e.to_string().contains("degrees 1 to 3"), "{e}");
+        // numbered by Glyph::new too: refused the same way, no panic
+        let g = Glyph::new(vec![Contour { segments: vec![Segment::Bezier(pts)], closed: true }]);
+        assert!(lint(&g, &LintOptions::new(Direction::Ccw)).is_err());
     }
 }
 
