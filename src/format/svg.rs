@@ -51,6 +51,25 @@ pub struct SvgShape {
     pub contours: std::result::Result<Vec<Contour>, ShapeProblem>,
 }
 
+impl SvgShape {
+    /// How records name the element: its `id`, or its index among the shape elements.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::format::{Element, read_svg};
+    /// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 H1 V1 Z"/><rect id="r" width="1" height="1"/></svg>"#;
+    /// let shapes = read_svg(svg, casteljau::num::NumberMode::Exact).unwrap();
+    /// assert_eq!(shapes[0].element(), Element::Index(0));
+    /// assert_eq!(shapes[1].element(), Element::Id("r".into()));
+    /// ```
+    pub fn element(&self) -> super::Element {
+        match &self.id {
+            Some(id) => super::Element::Id(id.clone()),
+            None => super::Element::Index(self.index),
+        }
+    }
+}
+
 /// Why a shape element gives no contours.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ShapeProblem {

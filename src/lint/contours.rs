@@ -48,7 +48,9 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
         if !c.closed && on_one_line(&segs) {
             continue;
         }
-        areas.push(segs.iter().map(|s| segment_area(s.points())).fold(rat(0), |a, b| a + b));
+        if o.wants(Kind::Direction) {
+            areas.push(segs.iter().map(|s| segment_area(s.points())).fold(rat(0), |a, b| a + b));
+        }
         inputs.push(Shape::new(ClosedPath::from_polynomial(vec![segs])?));
         contour_of.push(ci);
     }

@@ -373,10 +373,7 @@ fn lint_svg(
             chunk
                 .par_iter()
                 .map(|s| {
-                    let element = match &s.id {
-                        Some(id) => Element::Id(id.clone()),
-                        None => Element::Index(s.index),
-                    };
+                    let element = s.element();
                     let label = match &s.id {
                         Some(id) => format!("{} #{id}", s.tag),
                         None => format!("{} [{}]", s.tag, s.index),

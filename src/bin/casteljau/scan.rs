@@ -295,10 +295,7 @@ fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<
             chunk
                 .par_iter()
                 .map(|s| {
-                    let element = match &s.id {
-                        Some(id) => Element::Id(id.clone()),
-                        None => Element::Index(s.index),
-                    };
+                    let element = s.element();
                     let at =
                         Provenance { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
                     match &s.contours {
