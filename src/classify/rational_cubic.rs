@@ -25,7 +25,7 @@ use crate::poly::bernstein::to_power;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
-use crate::poly::polynomial::{Poly, center_plus_minus_sqrt, gcd, trim};
+use crate::poly::polynomial::{Poly, center_plus_minus_sqrt};
 
 /// What [`classify_rational`] finds.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -136,15 +136,15 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
         has_cusp: false,
     };
     let power = to_power(h); // X(t), Y(t), W(t) coefficients
-    let coord = |c: usize| -> Poly { trim(power.iter().map(|p| p.coords[c].clone()).collect()) };
+    let coord = |c: usize| -> Poly<BigRational> { Poly::new(power.iter().map(|p| p.coords[c].clone()).collect()) };
     let (x, y, w) = (coord(0), coord(1), coord(2));
     // rank of the control points: all on one projective line ⟺ every triple determinant vanishes
     let det = |a: &Point<BigRational>, b: &Point<BigRational>, c: &Point<BigRational>| a.dot(&b.cross(c).expect("3D"));
     let rank_le_2 =
         [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)].iter().all(|&(i, j, k)| det(&h[i], &h[j], &h[k]).is_zero());
-    let common = gcd(gcd(x.clone(), y.clone()), w.clone());
-    let max_deg = [&x, &y, &w].iter().map(|p| p.len()).max().unwrap_or(0).saturating_sub(1);
-    let real_deg = max_deg.saturating_sub(common.len().saturating_sub(1));
+    let common = x.gcd(&y).gcd(&w);
+    let max_deg = [&x, &y, &w].iter().filter_map(|p| p.degree()).max().unwrap_or(0);
+    let real_deg = max_deg.saturating_sub(common.degree().unwrap_or(0));
     if rank_le_2 {
         out.class = if real_deg == 0 { "point" } else { "line" };
         out.reason = "all homogeneous control points lie on one projective line".into();
@@ -152,8 +152,10 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
     }
     if real_deg < 3 {
         out.class = if real_deg == 2 { "reduces_to_conic" } else { "reduces_to_line" };
-        out.reason =
-            format!("X(t), Y(t), W(t) share a factor of degree {}: the curve has degree {real_deg}", common.len() - 1);
+        out.reason = format!(
+            "X(t), Y(t), W(t) share a factor of degree {}: the curve has degree {real_deg}",
+            common.degree().unwrap_or(0)
+        );
         return Ok(out);
     }
     // Q_i = C(3, i) H_i: the seed's moving lines accept homogeneous input through a curve whose
@@ -166,25 +168,17 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
         return Ok(out);
     }
     // R(t) × D, componentwise cubic polynomials
-    let cross_poly = |a: &Poly, b: &Poly, da: &BigRational, db: &BigRational| -> Poly {
-        let n = a.len().max(b.len());
-        trim(
-            (0..n)
-                .map(|k| {
-                    a.get(k).cloned().unwrap_or_else(|| rat(0)) * db - b.get(k).cloned().unwrap_or_else(|| rat(0)) * da
-                })
-                .collect(),
-        )
-    };
+    let cross_poly =
+        |a: &Poly<BigRational>, b: &Poly<BigRational>, da: &BigRational, db: &BigRational| &a.scale(db) - &b.scale(da);
     let (dx, dy, dw) = (&d.coords[0], &d.coords[1], &d.coords[2]);
-    let g = gcd(gcd(cross_poly(&y, &w, dy, dw), cross_poly(&w, &x, dw, dx)), cross_poly(&x, &y, dx, dy));
+    let g = cross_poly(&y, &w, dy, dw).gcd(&cross_poly(&w, &x, dw, dx)).gcd(&cross_poly(&x, &y, dx, dy));
     out.at_infinity = dw.is_zero();
     out.double_point = d.from_homogeneous();
     out.double_point_homogeneous = Some(d);
-    match g.len() {
-        3 => {
+    match g.degree() {
+        Some(2) => {
             // t² + b t + c
-            let (c, b) = (g[0].clone(), g[1].clone());
+            let (c, b) = (g.coeff(0), g.coeff(1));
             let disc = b.clone() * &b - rat(4) * &c;
             let center = -b / rat(2);
             let node = match disc.sign() {
@@ -206,14 +200,14 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
                 _ => {}
             }
         }
-        2 => {
+        Some(1) => {
             // one finite parameter, the other at t = ∞ (a crunode through R(∞)), or a cusp at ∞
             out.parameter_at_infinity = true;
-            let t = Parameter::from_ratio(&(-g[0].clone()));
+            let t = Parameter::from_ratio(&(-g.coeff(0)));
             out.node_type = Some(NodeType::Crunode);
             out.double_point_parameters = vec![t];
         }
-        1 => {
+        Some(0) => {
             out.parameter_at_infinity = true;
             out.node_type = Some(NodeType::Cusp); // both branches at t = ∞
         }
@@ -224,9 +218,9 @@ pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassificat
     out.reason = format!(
         "double point {} from the moving lines; R(t) × D = 0 has {}",
         out.double_point_homogeneous.as_ref().expect("set"),
-        match g.len() {
-            3 => "two roots (a quadratic factor)",
-            2 => "one finite root (the other at t = ∞)",
+        match g.degree() {
+            Some(2) => "two roots (a quadratic factor)",
+            Some(1) => "one finite root (the other at t = ∞)",
             _ => "no finite root (a cusp at t = ∞)",
         }
     );

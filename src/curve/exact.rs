@@ -19,15 +19,14 @@ use crate::curve::casteljau::{DeCasteljauTriangle, subdivision_intervals};
 use crate::curve::fraction_free;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
-use crate::num::scalar::{Exact, Scalar};
+use crate::num::scalar::Scalar;
 use crate::num::serial;
+use crate::poly::Poly;
 use crate::work::{self, Budget};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::One;
 use serde::Serialize;
 use serde::ser::{SerializeStruct, Serializer};
-use std::cmp::Ordering;
 
 /// Largest degree whose Bernstein-to-power matrix [`BezierCurve::power_form_within`] includes.
 pub const MAX_MATRIX_DEGREE: usize = 30;
@@ -137,7 +136,7 @@ pub struct PowerForm {
 }
 
 impl PowerForm {
-    /// Coordinate `k` as a polynomial in `var` ([`polynomial_text`]).
+    /// Coordinate `k` as a polynomial in `var` (ascending powers, [`Poly::text`]).
     ///
     /// ```
     /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
@@ -146,8 +145,7 @@ impl PowerForm {
     /// assert_eq!(p.coordinate_text(1, "t"), "4t - 4t^2");
     /// ```
     pub fn coordinate_text(&self, k: usize, var: &str) -> String {
-        let coeffs: Vec<BigRational> = self.coefficients.iter().map(|p| p.coords[k].clone()).collect();
-        polynomial_text(&coeffs, var)
+        Poly::new(self.coefficients.iter().map(|p| p.coords[k].clone()).collect()).text(var).to_string()
     }
 }
 
@@ -377,45 +375,4 @@ impl BezierCurve<BigRational> {
         let curve = fraction_free::reduce_degree(self);
         Ok(DegreeReduction { written_degree: n, real_degree: curve.degree(), curve })
     }
-}
-
-/// `c0 + c1 t + c2 t^2 …` with exact coefficients in ascending powers of `var`: zero terms
-/// omitted, a coefficient 1 left out, `*` only after a fraction (`1/2*t`, `3t`), `0` for the
-/// zero polynomial.
-///
-/// ```
-/// use casteljau::{curve::polynomial_text, rat, ratio};
-/// assert_eq!(polynomial_text(&[rat(1), rat(0), ratio(-1, 2), rat(3)], "t"), "1 - 1/2*t^2 + 3t^3");
-/// assert_eq!(polynomial_text(&[rat(0), rat(-1)], "s"), "-s");
-/// assert_eq!(polynomial_text(&[], "t"), "0");
-/// ```
-pub fn polynomial_text(coeffs: &[BigRational], var: &str) -> String {
-    let mut s = String::new();
-    for (k, c) in coeffs.iter().enumerate() {
-        if Scalar::is_zero(c) {
-            continue;
-        }
-        let neg = Exact::sign(c) == Ordering::Less;
-        let mag = if neg { -c.clone() } else { c.clone() };
-        if s.is_empty() {
-            s.push_str(if neg { "-" } else { "" });
-        } else {
-            s.push_str(if neg { " - " } else { " + " });
-        }
-        if k == 0 {
-            s.push_str(&mag.to_string());
-            continue;
-        }
-        if !mag.is_one() {
-            s.push_str(&mag.to_string());
-            if !mag.is_integer() {
-                s.push('*');
-            }
-        }
-        s.push_str(var);
-        if k > 1 {
-            s.push_str(&format!("^{k}"));
-        }
-    }
-    if s.is_empty() { "0".into() } else { s }
 }

@@ -11,6 +11,7 @@ use crate::curve::fraction_free;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar};
+use crate::poly::Poly;
 use crate::poly::bernstein::{self, binomial_row};
 use num_rational::BigRational;
 use std::any::Any;
@@ -78,6 +79,22 @@ impl<S: Scalar> BezierCurve<S> {
         bernstein::to_power(&self.points)
     }
 
+    /// The power form of each coordinate, `[x(t), y(t), …]`: coordinate `c` of
+    /// [`BezierCurve::power_coefficients`] as a [`Poly`] (for a homogeneous curve of a rational
+    /// one, `[X, Y, W]`).
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{BezierCurve, num::parse_points};
+    /// let c = BezierCurve::new(parse_points("0 1, 4 2, 2 4, 1 0", 2, None).unwrap()).unwrap();
+    /// let [x, y]: [_; 2] = c.coordinate_polynomials().try_into().unwrap();
+    /// assert_eq!((x.to_string(), y.to_string()), ("12t - 18t^2 + 7t^3".into(), "1 + 3t + 3t^2 - 7t^3".into()));
+    /// ```
+    pub fn coordinate_polynomials(&self) -> Vec<Poly<S>> {
+        let c = self.power_coefficients();
+        (0..self.dim()).map(|k| Poly::new(c.iter().map(|p| p.coords[k].clone()).collect())).collect()
+    }
+
     /// The whole de Casteljau triangle at `t` (any `t`, not only `[0, 1]`): `rows[r][i] = b_i^r(t)`.
     ///
     /// # Example
@@ -112,6 +129,48 @@ impl<S: Scalar> BezierCurve<S> {
             return same(fraction_free::subdivide(c, t));
         }
         casteljau::subdivide(self, t0)
+    }
+
+    /// The piece of the curve for `t` from `a` to `b`, reparametrised to `[0, 1]`:
+    /// `piece(s) = b(a + (b − a)·s)`. Its control points are the blossom values
+    /// `P_i = b[a, …, a, b, …, b]` (`n − i` copies of `a`, `i` of `b`), found by two de Casteljau
+    /// splits (`O(n²)`, fraction-free over `BigRational`): `[0, b]` then its part from `a/b`
+    /// (or `[a, 1]` then its part up to `(b − a)/(1 − a)` when `b = 0`). `a > b` gives the
+    /// piece reversed; `a = b`, the point `b(a)` repeated. Any `a`, `b`, not only in `[0, 1]`.
+    ///
+    /// # Laws
+    /// `piece.eval(s) == self.eval(a + (b − a)·s)` for every `s` (exactly for exact scalars);
+    /// `self.subsegment(0, 1) == self`; `self.subsegment(b, a)` is `self.subsegment(a, b)`
+    /// reversed.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{BezierCurve, num::parse_points, ratio};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 3 2, 4 0", 2, None).unwrap()).unwrap();
+    /// let piece = c.subsegment(&ratio(1, 4), &ratio(3, 4));
+    /// assert_eq!(piece.to_string(), "29/32 9/8, 51/32 13/8, 77/32 13/8, 99/32 9/8");
+    /// assert_eq!(piece.eval(&ratio(1, 3)), c.eval(&ratio(5, 12)));
+    /// // in binary64 too, for drawings
+    /// let f = c.map(|x| casteljau::Scalar::to_f64(x)).subsegment(&0.25, &0.75);
+    /// assert_eq!(f.points()[0].coords, vec![0.90625, 1.125]);
+    /// ```
+    pub fn subsegment(&self, a: &S, b: &S) -> Self {
+        let n = self.degree();
+        if a == b {
+            return BezierCurve { points: vec![self.eval(a); n + 1] };
+        }
+        let one = S::one();
+        if !b.is_zero() {
+            let (to_b, _) = self.subdivide(b);
+            to_b.subdivide(&(a.clone() / b)).1
+        } else if *a != one {
+            // b = 0: [a, 1], then its part up to (b − a)/(1 − a)
+            let (_, from_a) = self.subdivide(a);
+            from_a.subdivide(&((b.clone() - a) / &(one - a))).0
+        } else {
+            // from 1 to 0: the curve reversed
+            BezierCurve { points: self.points.iter().rev().cloned().collect() }
+        }
     }
 
     /// Subdivides `depth` times, each piece at its own local parameter `t0`: `2^depth` pieces in

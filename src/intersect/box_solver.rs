@@ -32,7 +32,7 @@ pub(super) fn solved_in_boxes(
     (r, t_poly): (&[BigInt], &[BigInt]),
     boxes: &[[f64; 4]],
 ) -> Option<Intersections> {
-    use crate::poly::polynomial::derivative_integer;
+    use crate::poly::integer::derivative_integer;
     let zeros = filter::solve(sys, boxes)?;
     if zeros.is_empty() {
         return Some(Intersections { intersections: vec![], overlaps: vec![] });

@@ -340,7 +340,7 @@ mod tests {
             for _ in 0..m {
                 bezout = zv::mul(&bezout, &fa[2]);
             }
-            let pp = crate::poly::polynomial::primitive_part;
+            let pp = crate::poly::integer::primitive_part;
             assert_eq!(pp(sylvester), pp(bezout), "round {round}");
         }
     }

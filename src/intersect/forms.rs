@@ -3,6 +3,7 @@
 
 use crate::num::CheckedRing;
 use crate::num::point::Point;
+use crate::poly::Poly;
 use crate::poly::algebraic::{RealAlgebraic, zv};
 use crate::rational::RationalBezier;
 use num_bigint::BigInt;
@@ -77,8 +78,8 @@ fn forms_of_words(rows: &[[i64; 3]]) -> Option<[Vec<BigInt>; 3]> {
     Some(out)
 }
 
-pub(super) fn to_rational(p: &[BigInt]) -> Vec<BigRational> {
-    p.iter().map(|c| BigRational::from_integer(c.clone())).collect()
+pub(super) fn to_rational(p: &[BigInt]) -> Poly<BigRational> {
+    Poly::new(p.iter().map(|c| BigRational::from_integer(c.clone())).collect())
 }
 
 /// The coefficient of `t^k` (zero past the end).

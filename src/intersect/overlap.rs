@@ -36,8 +36,9 @@ use super::self_intersect::self_intersections_of_forms;
 use super::{Domain, Intersection, Intersections, Overlap};
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
-use crate::poly::algebraic::{RealAlgebraic, resultant_in_v, simplest_rational, value_at, zv};
-use crate::poly::polynomial::{derivative_integer, exact_quotient_integer, gcd_integer};
+use crate::poly::Poly;
+use crate::poly::algebraic::{RealAlgebraic, resultant_in_v, value_at, zv};
+use crate::poly::integer::{derivative_integer, exact_quotient_integer, gcd_integer};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -256,7 +257,8 @@ impl Pieces {
         let value = |x: &RealAlgebraic| x.map_rational(&uq, &wq);
         let mut pieces: Vec<Piece> = vec![];
         for pair in cuts.windows(2) {
-            let rising = crate::poly::algebraic::sign_at(&n, &between(&pair[0], &pair[1])) == Ordering::Greater;
+            let rising = crate::poly::algebraic::sign_at(&n, &RealAlgebraic::rational_between(&pair[0], &pair[1]))
+                == Ordering::Greater;
             match pieces.last_mut() {
                 // f′ touches zero without changing sign: one piece
                 Some(last) if last.rising == rising => {
@@ -280,12 +282,7 @@ impl Pieces {
         let poly: Vec<BigInt> = match e.to_rational() {
             Some(r) => {
                 let (ue, we) = (value_at(&other.u, r), value_at(&other.w, r));
-                let q = |p: &[BigInt], c: &BigRational| -> Vec<BigRational> {
-                    p.iter().map(|x| BigRational::from_integer(x.clone()) * c).collect()
-                };
-                let (a, b) = (q(&self.u, &we), q(&self.w, &ue));
-                let diff: Vec<BigRational> = (0..a.len().max(b.len())).map(|k| get(&a, k) - get(&b, k)).collect();
-                crate::poly::polynomial::to_integer(&diff)
+                (&to_rational(&self.u).scale(&we) - &to_rational(&self.w).scale(&ue)).to_integer()
             }
             None => {
                 let len = other.u.len().max(other.w.len());
@@ -311,26 +308,6 @@ impl Pieces {
             }
         }
         refuse("an overlap's end was not found (internal inconsistency)")
-    }
-}
-
-fn get(p: &[BigRational], k: usize) -> BigRational {
-    p.get(k).cloned().unwrap_or_else(|| rat(0))
-}
-
-/// A rational strictly between `x < y`.
-fn between(x: &RealAlgebraic, y: &RealAlgebraic) -> BigRational {
-    let (mut x, mut y) = (x.clone(), y.clone());
-    loop {
-        let (xh, yl) = (x.interval().1, y.interval().0);
-        if xh < yl {
-            // the simplest rational of the closed interval may be one of its ends (0 in [0, 1]),
-            // which is x or y itself when they are rational: strictly between, take the midpoint
-            let r = simplest_rational(&xh, &yl);
-            return if r == xh || r == yl { (xh + yl) / rat(2) } else { r };
-        }
-        x.bisect();
-        y.bisect();
     }
 }
 
@@ -528,7 +505,7 @@ impl Mobius {
     fn crossings(&self, fa: &Forms, fb: &Forms, domain: Domain) -> Result<Vec<Intersection>> {
         let in_domain = |x: &RealAlgebraic| domain == Domain::All || unit(x);
         let q = |x: &BigInt| BigRational::from_integer(x.clone());
-        let (num, den) = (vec![-q(&self.b), q(&self.d)], vec![q(&self.a), -q(&self.c)]);
+        let (num, den) = (Poly::new(vec![-q(&self.b), q(&self.d)]), Poly::new(vec![q(&self.a), -q(&self.c)]));
         let mut out = vec![];
         let finite = self_intersections(fa, Domain::All)?;
         for i in &finite.intersections {
@@ -556,7 +533,7 @@ impl Mobius {
                 for i in self_intersections(&rev, Domain::All)?.intersections {
                     for (u, other) in [(&i.s, &i.t), (&i.t, &i.s)] {
                         if *other == zero && *u != zero {
-                            let s = u.map_rational(&[rat(1)], &[rat(0), rat(1)]);
+                            let s = u.map_rational(&Poly::constant(rat(1)), &Poly::new(vec![rat(0), rat(1)]));
                             if in_domain(&s) {
                                 out.push(Intersection {
                                     s_float: s.to_f64(),

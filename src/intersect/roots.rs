@@ -9,8 +9,8 @@ use super::filter::divided_difference_enclosed;
 use super::forms::{is_point, point_at, point_at_rational, rational_point, to_rational};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::poly::polynomial::{derivative, trim};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use std::cmp::Ordering;
@@ -33,11 +33,11 @@ pub(super) fn roots(r: &[BigInt], domain: Domain) -> (Vec<RealAlgebraic>, bool) 
 /// was square-free already.
 pub(super) fn square_free_part(r: &[BigInt]) -> (Vec<BigInt>, bool) {
     // word-sized coefficients proved square-free modulo a prime: no big-integer gcds
-    if let Some(p) = crate::poly::polynomial::square_free_small(r) {
+    if let Some(p) = crate::poly::integer::square_free_small(r) {
         return (p, true);
     }
-    let p = crate::poly::polynomial::primitive_part(r.to_vec());
-    let sf = crate::poly::polynomial::square_free_integer(p.clone());
+    let p = crate::poly::integer::primitive_part(r.to_vec());
+    let sf = crate::poly::integer::square_free_integer(p.clone());
     let simple = sf.len() == p.len();
     (sf, simple)
 }
@@ -53,12 +53,12 @@ pub(super) fn finite_roots(roots: Vec<RealAlgebraic>, f: &[Vec<BigInt>; 3]) -> V
 }
 
 /// The multiplicity of `x` as a root of `r`.
-pub(super) fn multiplicity(r: &[BigRational], x: &RealAlgebraic) -> usize {
-    let mut p = r.to_vec();
+pub(super) fn multiplicity(r: &Poly<BigRational>, x: &RealAlgebraic) -> usize {
+    let mut p = r.clone();
     let mut k = 0;
-    while !trim(p.clone()).is_empty() && x.sign_of(&p) == Ordering::Equal {
+    while !p.is_zero() && x.sign_of(&p) == Ordering::Equal {
         k += 1;
-        p = derivative(&p);
+        p = p.derivative();
     }
     k
 }
@@ -163,7 +163,7 @@ mod tests {
         let b = |v: &[i64]| v.iter().map(|&c| BigInt::from(c)).collect::<Vec<_>>();
         let nodal = [b(&[-2, 0, 1]), b(&[0, -2, 0, 1]), b(&[1])];
         let side = Side::new(&nodal);
-        let sqrt2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
+        let sqrt2 = RealAlgebraic::real_roots(&crate::poly::Poly::new(vec![rat(-2), rat(0), rat(1)]))[1].clone();
         let narrow = filter::outward(&sqrt2.narrowed_with_f64().0);
         assert!(!filter::no_common_root(
             &divided_difference_enclosed(&nodal[0], &nodal[2]),
@@ -171,7 +171,7 @@ mod tests {
             narrow
         ));
         assert!(!side.irrational_at(&sqrt2, narrow));
-        let sqrt3 = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
+        let sqrt3 = RealAlgebraic::real_roots(&crate::poly::Poly::new(vec![rat(-3), rat(0), rat(1)]))[1].clone();
         assert!(side.irrational_at(&sqrt3, filter::outward(&sqrt3.narrowed_with_f64().0))); // (1, √3)
         let mut next = crate::num::symmetric(0x2545_F491_4F6C_DD1D);
         let mut proved = 0;

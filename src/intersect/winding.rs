@@ -27,8 +27,8 @@ use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::poly::polynomial::trim;
 use crate::rational::RationalBezier;
 use num_rational::BigRational;
 use serde::Serialize;
@@ -59,23 +59,6 @@ pub(crate) enum Event {
     Sign(Ordering),
     /// A point on the ray's line: is it right of `q`?
     Zero(bool),
-}
-
-/// A rational strictly between `a < b`: the intervals are refined until the upper end of `a`'s
-/// lies below the lower end of `b`'s (or equals it with both irrational: open intervals).
-pub(crate) fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> BigRational {
-    let (mut a, mut b) = (a.clone(), b.clone());
-    loop {
-        let ((_, ah), (bl, _)) = (a.interval(), b.interval());
-        if ah < bl {
-            return (ah + bl) / rat(2);
-        }
-        if ah == bl && a.interval().0 != ah && b.interval().1 != bl {
-            return ah; // a < ah = bl < b
-        }
-        a.bisect();
-        b.bisect();
-    }
 }
 
 /// [`winding_number_rational`] within a work budget ([`crate::work::winding_segment`] summed over
@@ -167,16 +150,12 @@ pub fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &Point<B
     let (qx, qy) = (&q.coords[0], &q.coords[1]);
     let mut events: Vec<Event> = vec![];
     for (i, s) in path.iter().enumerate() {
-        let h = s.homogeneous().power_coefficients();
-        let coord = |k: usize| -> Vec<BigRational> { h.iter().map(|p| p.coords[k].clone()).collect() };
-        let (x, y, w) = (coord(0), coord(1), coord(2));
-        let minus = |a: &[BigRational], c: &BigRational| -> Vec<BigRational> {
-            trim(a.iter().zip(&w).map(|(ai, wi)| ai.clone() - c.clone() * wi).collect())
-        };
-        let (fx, fy) = (minus(&x, qx), minus(&y, qy));
-        if fy.is_empty() {
+        let [x, y, w]: [Poly<BigRational>; 3] =
+            s.homogeneous().coordinate_polynomials().try_into().expect("planar: X, Y, W");
+        let (fx, fy) = (&x - &w.scale(qx), &y - &w.scale(qy));
+        if fy.is_zero() {
             // the whole segment lies on the ray's line
-            if !fx.is_empty() {
+            if !fx.is_zero() {
                 if let Some(t) = RealAlgebraic::roots_in(&fx, &rat(0), &rat(1)).into_iter().next() {
                     return Ok(Winding::OnBoundary { segment: i, t });
                 }
@@ -208,7 +187,7 @@ pub fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &Point<B
                 events.push(Event::Zero(side == Ordering::Greater));
             }
             if let Some(next) = breaks.get(k + 1) {
-                let mid = rational_between(t, next);
+                let mid = RealAlgebraic::rational_between(t, next);
                 let sign = RealAlgebraic::from(mid).sign_of(&fy);
                 events.push(Event::Sign(sign));
             }

@@ -8,7 +8,8 @@ use crate::curve::BezierCurve;
 use crate::format::Segment;
 use crate::num::point::Point;
 use crate::num::quadratic_field::QuadraticExt;
-use crate::num::scalar::{Scalar, rat};
+use crate::num::scalar::rat;
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;
 use num_traits::Signed;
@@ -16,61 +17,40 @@ use std::cmp::Ordering;
 
 type P = Point<BigRational>;
 
-/// The power coefficients `c_k = C(n, k) Δ^k P0` of coordinate `axis`.
-pub(super) fn power(ps: &[P], axis: usize) -> Vec<BigRational> {
-    let mut diff: Vec<BigRational> = ps.iter().map(|p| p.coords[axis].clone()).collect();
-    let n = diff.len() - 1;
-    let mut out = Vec::with_capacity(n + 1);
-    let mut binom = rat(1);
-    for k in 0..=n {
-        out.push(&binom * &diff[0]);
-        binom = binom * rat((n - k) as i64) / rat(k as i64 + 1);
-        for i in 0..n - k {
-            diff[i] = &diff[i + 1] - &diff[i];
-        }
-    }
-    out
+/// The power form of coordinate `axis` of the segment with control points `ps`.
+pub(super) fn power(ps: &[P], axis: usize) -> Poly<BigRational> {
+    Poly::new(crate::poly::bernstein::to_power(ps).into_iter().map(|c| c.coords[axis].clone()).collect())
 }
 
-fn derivative(p: &[BigRational]) -> Vec<BigRational> {
-    p.iter().enumerate().skip(1).map(|(k, c)| c * rat(k as i64)).collect()
-}
-
-fn trimmed(mut p: Vec<BigRational>) -> Vec<BigRational> {
-    while p.last().is_some_and(|c| *c == rat(0)) {
-        p.pop();
-    }
-    p
+/// `p(t)` for a polynomial `p` and an algebraic `t`, exactly.
+fn value(p: &Poly<BigRational>, t: &RealAlgebraic) -> RealAlgebraic {
+    t.map_rational(p, &Poly::constant(rat(1)))
 }
 
 fn exact_point(ps: &[P], t: &RealAlgebraic) -> [ExactValue; 2] {
-    [0, 1].map(|a| ExactValue::from(t.map_rational(&power(ps, a), &[rat(1)])))
+    [0, 1].map(|a| ExactValue::from(value(&power(ps, a), t)))
 }
 
 fn quadratic_point(ps: &[P], t: &QuadraticExt<BigRational>) -> [ExactValue; 2] {
-    [0, 1].map(|a| {
-        let c = power(ps, a);
-        let v = c.iter().rev().fold(QuadraticExt::zero(), |acc, k| acc * t + &QuadraticExt::from_base(k.clone()));
-        ExactValue::from(v)
-    })
+    [0, 1].map(|a| ExactValue::from(power(ps, a).map(|c| QuadraticExt::from_base(c.clone())).eval(t)))
 }
 
 /// The simple real roots of `p` (degree ≤ 2, power form) strictly inside `(0, 1)`: where the
 /// polynomial changes sign. A double root (zero discriminant) is no sign change.
-fn sign_changes(p: &[BigRational]) -> Vec<RealAlgebraic> {
-    let p = trimmed(p.to_vec());
-    match p.len() {
-        0 | 1 => vec![],
-        2 => {
-            let t = -&p[0] / &p[1];
+fn sign_changes(p: &Poly<BigRational>) -> Vec<RealAlgebraic> {
+    let c = |k: usize| p.coeff(k);
+    match p.degree() {
+        None | Some(0) => vec![],
+        Some(1) => {
+            let t = -c(0) / c(1);
             if strictly_inside(&t) { vec![t.into()] } else { vec![] }
         }
         _ => {
-            let disc = &p[1] * &p[1] - rat(4) * &p[2] * &p[0];
+            let disc = c(1) * c(1) - rat(4) * c(2) * c(0);
             if disc <= rat(0) {
                 return vec![];
             }
-            RealAlgebraic::roots_in(&p, &rat(0), &rat(1))
+            RealAlgebraic::roots_in(p, &rat(0), &rat(1))
                 .into_iter()
                 .filter(|t| t.sign() == Ordering::Greater && t.to_rational() != Some(&rat(1)))
                 .collect()
@@ -142,7 +122,7 @@ pub(super) fn check(ps: &[P], o: &LintOptions) -> Vec<Finding> {
     }
     let powers = [power(ps, 0), power(ps, 1)];
     if n >= 2 && o.wants(Kind::DegenerateCurve) {
-        let real = (0..=n).rev().find(|&k| powers[0][k] != rat(0) || powers[1][k] != rat(0)).unwrap_or(0);
+        let real = powers.iter().filter_map(Poly::degree).max().unwrap_or(0);
         if real < n {
             let what = ["a point", "a line", "a quadratic"][real];
             out.push(Finding::new(
@@ -170,25 +150,22 @@ fn point(p: &P) -> [ExactValue; 2] {
 
 /// `missing_extremum`: where a coordinate's derivative changes sign strictly inside the segment
 /// (and the other does not vanish there: that is a cusp).
-fn extrema(ps: &[P], powers: &[Vec<BigRational>; 2], o: &LintOptions) -> Vec<Finding> {
+fn extrema(ps: &[P], powers: &[Poly<BigRational>; 2], o: &LintOptions) -> Vec<Finding> {
     let mut out = vec![];
     let n = ps.len() - 1;
     for axis in 0..2 {
-        let d = derivative(&powers[axis]);
-        let other = derivative(&powers[1 - axis]);
+        let d = powers[axis].derivative();
+        let other = powers[1 - axis].derivative();
         for t in sign_changes(&d) {
             if t.sign_of(&other) == Ordering::Equal {
                 continue;
             }
             let (e0, e1) = (&ps[0].coords[axis], &ps[n].coords[axis]);
             let (lo, hi) = if e0 <= e1 { (e0, e1) } else { (e1, e0) };
-            let shifted = |c: &BigRational, sign: i64| -> Vec<BigRational> {
-                let mut p: Vec<BigRational> = powers[axis].iter().map(|x| x * rat(sign)).collect();
-                p[0] -= c * rat(sign);
-                p
-            };
-            let above = t.map_rational(&shifted(hi, 1), &[rat(1)]);
-            let below = t.map_rational(&shifted(lo, -1), &[rat(1)]);
+            // ±(x(t) − c)
+            let shifted = |c: &BigRational, sign: i64| (&powers[axis] - &Poly::constant(c.clone())).scale(&rat(sign));
+            let above = value(&shifted(hi, 1), &t);
+            let below = value(&shifted(lo, -1), &t);
             let extent = if above >= below { above } else { below };
             if let Some(m) = &o.extremum_min
                 && extent < RealAlgebraic::from(m.clone())
@@ -196,13 +173,11 @@ fn extrema(ps: &[P], powers: &[Vec<BigRational>; 2], o: &LintOptions) -> Vec<Fin
                 continue;
             }
             let half = rat(1) / rat(2);
+            // |x(t) − e| < 1/2
             let near = |e: &BigRational| {
-                let mut p = shifted(e, 1);
-                let p0 = p[0].clone();
-                p[0] = &p0 - &half;
-                let below_upper = t.sign_of(&p) == Ordering::Less;
-                p[0] = p0 + &half;
-                below_upper && t.sign_of(&p) == Ordering::Greater
+                let p = shifted(e, 1);
+                t.sign_of(&(&p - &Poly::constant(half.clone()))) == Ordering::Less
+                    && t.sign_of(&(&p + &Poly::constant(half.clone()))) == Ordering::Greater
             };
             let rounding = near(e0) || near(e1);
             let at = exact_point(ps, &t);
@@ -321,7 +296,7 @@ pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
                 let mut values: Vec<RealAlgebraic> =
                     [&ps[0], &ps[ps.len() - 1]].iter().map(|p| RealAlgebraic::from(p.coords[axis].clone())).collect();
                 if ps.len() > 2 {
-                    values.extend(sign_changes(&derivative(&c)).iter().map(|t| t.map_rational(&c, &[rat(1)])));
+                    values.extend(sign_changes(&c.derivative()).iter().map(|t| value(&c, t)));
                 }
                 for v in values {
                     if worst[axis].as_ref().is_none_or(|w| v < *w) {

@@ -8,6 +8,7 @@
 
 pub(crate) mod algebraic;
 pub(crate) mod bernstein;
+pub(crate) mod integer;
 pub(crate) mod modular;
 pub(crate) mod polynomial;
 pub(crate) mod resultant;
@@ -19,8 +20,5 @@ pub use bernstein::{
     eval_power, from_power, power_to_bernstein_matrix, split, split_integer, to_power,
 };
 pub use modular::min_factor_degree;
-pub use polynomial::{
-    Poly, center_plus_minus_sqrt, derivative, derivative_integer, div_rem, exact_quotient_integer, gcd, gcd_integer,
-    primitive_part, quadratic_roots, rem, square_free, square_free_integer, to_integer, trim,
-};
+pub use polynomial::{Poly, center_plus_minus_sqrt, quadratic_roots};
 pub use roots::{Root, isolate_bernstein, isolate_bernstein_within, isolate_in, isolate_in_within, restrict};

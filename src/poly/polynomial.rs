@@ -1,340 +1,425 @@
-//! Exact univariate polynomials in power form, `p(t) = Σ c_k t^k` stored lowest degree first
-//! with no trailing zeros (the zero polynomial is `[]`): the one home of polynomial
-//! arithmetic — trim, remainder, exact division, monic gcd, square-free part — and of the
-//! exact real roots of quadratics, `c ± √r` in `Q(√r)`.
+//! [`Poly`]: dense univariate polynomials in power form over any [`Scalar`], the one home of
+//! polynomial arithmetic in casteljau — product, Horner evaluation, derivative, composition and
+//! Taylor shift, truncated power series, division, gcd and square-free part over `Q`, and the
+//! one polynomial printer. Upper layers (curves, intersections, shapes, lint) build their
+//! power forms as `Poly` values and call these; they keep no private copy.
+//!
+//! Hand-written: the polynomial crates on crates.io either fix the coefficient type to
+//! floats or need traits our exact fields (`BigRational`, `Q(√d)`) do not implement, and
+//! none offers the exact square-free part and gcd over `Q` computed on integers
+//! (subresultants, [`super::integer`]) that root isolation needs.
 //!
 //! # Example
 //! ```
-//! use casteljau::{rat, poly::{gcd, square_free, quadratic_roots}};
-//! // (t − 1)²(t + 2) = t³ − 3t + 2 and its derivative 3t² − 3
-//! let p = vec![rat(2), rat(-3), rat(0), rat(1)];
-//! assert_eq!(gcd(p.clone(), vec![rat(-3), rat(0), rat(3)]), vec![rat(-1), rat(1)]); // t − 1
-//! assert_eq!(square_free(p), vec![rat(-2), rat(1), rat(1)]); // (t − 1)(t + 2)
-//! // 2 − 4t + t²: roots 2 ∓ √2, simple
-//! let r = quadratic_roots(&rat(2), &rat(-4), &rat(1));
-//! assert_eq!(r.iter().map(|(x, m)| (x.to_string(), *m)).collect::<Vec<_>>(),
-//!            vec![("2 - sqrt(2)".to_string(), 1), ("2 + sqrt(2)".to_string(), 1)]);
+//! use casteljau::{rat, ratio, poly::Poly};
+//! // (t − 1)²(t + 2) = 2 − 3t + t³ and its derivative
+//! let p = Poly::new(vec![rat(2), rat(-3), rat(0), rat(1)]);
+//! assert_eq!(p.to_string(), "2 - 3t + t^3");
+//! assert_eq!(p.derivative().to_string(), "-3 + 3t^2");
+//! assert_eq!(p.gcd(&p.derivative()).to_string(), "-1 + t"); // monic: t − 1
+//! assert_eq!(p.square_free().to_string(), "-2 + t + t^2"); // (t − 1)(t + 2)
+//! assert_eq!(p.eval(&ratio(1, 2)), ratio(5, 8));
+//! assert_eq!((&p * &p).degree(), Some(6));
 //! ```
 
 use crate::num::quadratic_field::{QuadraticExt, Radical};
-use crate::num::scalar::{Scalar, rat};
-use num_bigint::BigInt;
-use num_integer::Integer;
+use crate::num::scalar::{Exact, Scalar};
 use num_rational::BigRational;
-use num_traits::{One, Signed};
 use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
 
-/// A power-form polynomial, lowest degree first, no trailing zeros.
-pub type Poly = Vec<BigRational>;
-
-/// Drops trailing zero coefficients.
-pub fn trim(mut p: Poly) -> Poly {
-    while p.last().is_some_and(Scalar::is_zero) {
-        p.pop();
-    }
-    p
-}
-
-/// The remainder of `a` divided by `b` (`b` trimmed and non-zero).
+/// A polynomial `p(t) = Σ c_k t^k` with coefficients in `S`, stored lowest degree first with
+/// no trailing zeros (the zero polynomial has no coefficients).
 ///
-/// # Panics
-/// **Panics if `b` is the zero polynomial.**
-pub fn rem(a: Poly, b: &[BigRational]) -> Poly {
-    div_rem(a, b).1
-}
-
-/// Quotient and remainder of `a` by `b` (`b` trimmed and non-zero): `a = q·b + r`,
-/// `deg r < deg b`.
+/// # Invariants
+/// The last stored coefficient is not zero, so two polynomials are equal (`==`) exactly when
+/// their coefficients are, and [`Poly::degree`] is the true degree.
 ///
-/// # Panics
-/// **Panics if `b` is the zero polynomial.**
-pub fn div_rem(a: Poly, b: &[BigRational]) -> (Poly, Poly) {
-    let lb = b.last().expect("non-zero divisor").clone();
-    let mut a = trim(a);
-    let mut q = vec![rat(0); a.len().saturating_sub(b.len()) + 1];
-    while a.len() >= b.len() && !a.is_empty() {
-        let f = a.last().expect("non-empty").clone() / &lb;
-        let shift = a.len() - b.len();
-        for (i, c) in b.iter().enumerate() {
-            a[shift + i] = a[shift + i].clone() - f.clone() * c;
-        }
-        q[shift] = f;
-        a.pop(); // the leading coefficient is now exactly 0
-        a = trim(a);
-    }
-    (trim(q), a)
-}
-
-/// The monic greatest common divisor (`[]` for `gcd(0, 0)`).
+/// # Laws
+/// For exact scalars, for all `p, q` and `t`: `(p·q)(t) = p(t)·q(t)`, `(p + q)(t) = p(t) + q(t)`,
+/// `p.compose(q)(t) = p(q(t))`, `p.shift(a)(u) = p(a + u)`, and `p = q·(p / q) + p mod q` with
+/// `deg(p mod q) < deg q`.
 ///
-/// Computed on integers by the primitive remainder sequence ([`gcd_integer`]): Euclid over `Q`
-/// reduces a fraction at every step and its coefficients swell, which made a degree-40 gcd
-/// take seconds; the primitive sequence keeps every remainder's content divided out.
-pub fn gcd(a: Poly, b: Poly) -> Poly {
-    let g = gcd_integer(&to_integer(&trim(a)), &to_integer(&trim(b)));
-    match g.last().cloned() {
-        Some(l) => g.into_iter().map(|c| BigRational::new(c, l.clone())).collect(),
-        None => vec![],
+/// # Example
+/// ```
+/// use casteljau::{rat, poly::Poly};
+/// let p = Poly::new(vec![rat(1), rat(2), rat(0), rat(0)]); // trailing zeros are dropped
+/// assert_eq!(p.coeffs(), &[rat(1), rat(2)]);
+/// assert_eq!(p.shift(&rat(1)).to_string(), "3 + 2t"); // p(1 + u) = 3 + 2u
+/// assert_eq!(p.compose(&p).to_string(), "3 + 4t"); // 1 + 2(1 + 2t)
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Poly<S> {
+    coeffs: Vec<S>,
+}
+
+impl<S: Scalar> Default for Poly<S> {
+    fn default() -> Self {
+        Poly::zero()
     }
 }
 
-/// A positive multiple of `p` with integer coefficients (the denominators cleared).
-pub fn to_integer(p: &[BigRational]) -> Vec<BigInt> {
-    let d = p.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
-    p.iter().map(|x| x.numer() * (&d / x.denom())).collect()
-}
-
-/// `p` divided by the gcd of its coefficients, with a positive leading coefficient (`[]` for
-/// the zero polynomial).
-pub fn primitive_part(p: Vec<BigInt>) -> Vec<BigInt> {
-    let mut p = p;
-    while p.last().is_some_and(num_traits::Zero::is_zero) {
-        p.pop();
-    }
-    let Some(last) = p.last() else { return p };
-    let mut content = <BigInt as num_traits::Zero>::zero();
-    for x in &p {
-        content = crate::num::word::gcd_big(&content, x);
-        if content.is_one() {
-            break;
+impl<S: Scalar> Poly<S> {
+    /// The polynomial with coefficients `c_0, c_1, …` (lowest degree first); trailing zeros are
+    /// dropped.
+    pub fn new(mut coeffs: Vec<S>) -> Self {
+        while coeffs.last().is_some_and(Scalar::is_zero) {
+            coeffs.pop();
         }
+        Poly { coeffs }
     }
-    if last.is_negative() {
-        content = -content;
-    }
-    if content.is_one() { p } else { p.into_iter().map(|x| x / &content).collect() }
-}
 
-/// The pseudo-remainder `lc(b)^(deg a − deg b + 1)·a mod b`, on integers (`b` non-zero,
-/// trimmed, `deg a ≥ deg b`): exactly `deg a − deg b + 1` multiplications by `lc(b)`, even
-/// when a step finds a zero leading coefficient (the subresultant sequence divides by the
-/// factor this power predicts).
-fn pseudo_rem(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
-    let lb = b.last().expect("non-zero divisor");
-    let mut a = a;
-    if a.len() < b.len() {
-        return a;
+    /// The zero polynomial.
+    pub fn zero() -> Self {
+        Poly { coeffs: vec![] }
     }
-    let steps = a.len() - b.len() + 1;
-    for step in 0..steps {
-        let top = a.len() - 1 - step; // the coefficient eliminated in this step
-        let la = a[top].clone();
-        for x in a[..=top].iter_mut() {
-            *x *= lb;
+
+    /// The constant polynomial `c`.
+    pub fn constant(c: S) -> Self {
+        Poly::new(vec![c])
+    }
+
+    /// The coefficients `c_0, …, c_n`, lowest degree first (empty for the zero polynomial).
+    pub fn coeffs(&self) -> &[S] {
+        &self.coeffs
+    }
+
+    /// The coefficients, by value.
+    pub fn into_coeffs(self) -> Vec<S> {
+        self.coeffs
+    }
+
+    /// The coefficient of `t^k` (zero above the degree).
+    pub fn coeff(&self, k: usize) -> S {
+        self.coeffs.get(k).cloned().unwrap_or_else(S::zero)
+    }
+
+    /// The degree, `None` for the zero polynomial.
+    pub fn degree(&self) -> Option<usize> {
+        self.coeffs.len().checked_sub(1)
+    }
+
+    /// Whether this is the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.coeffs.is_empty()
+    }
+
+    /// `p(t)` by Horner's rule (`n` multiplications and additions).
+    pub fn eval(&self, t: &S) -> S {
+        self.coeffs.iter().rev().fold(S::zero(), |acc, c| acc * t + c)
+    }
+
+    /// `p(t)` in binary64 by Horner's rule, each coefficient rounded to `f64` first (for
+    /// drawings and float estimates; never for a decision).
+    pub fn eval_f64(&self, t: f64) -> f64 {
+        self.coeffs.iter().rev().fold(0.0, |acc, c| acc * t + c.to_f64())
+    }
+
+    /// The polynomial with each coefficient mapped by `f` (a change of field: `Q → Q(√d)`,
+    /// `Q → f64`). `f` must be a ring homomorphism for the result to mean the same polynomial.
+    pub fn map<T: Scalar>(&self, f: impl Fn(&S) -> T) -> Poly<T> {
+        Poly::new(self.coeffs.iter().map(f).collect())
+    }
+
+    /// `p'(t) = Σ k c_k t^(k−1)`.
+    pub fn derivative(&self) -> Self {
+        Poly::new(self.coeffs.iter().enumerate().skip(1).map(|(k, c)| c.clone() * S::from_i64(k as i64)).collect())
+    }
+
+    /// The antiderivative `∫₀ᵗ p = Σ c_k t^(k+1)/(k + 1)` (zero at `t = 0`).
+    pub fn integral(&self) -> Self {
+        let mut c = vec![S::zero()];
+        c.extend(self.coeffs.iter().enumerate().map(|(k, x)| x.clone() / &S::from_i64(k as i64 + 1)));
+        Poly::new(c)
+    }
+
+    /// `k·p`.
+    pub fn scale(&self, k: &S) -> Self {
+        Poly::new(self.coeffs.iter().map(|c| c.clone() * k).collect())
+    }
+
+    /// `p(q(t))`, by Horner's rule on polynomials.
+    pub fn compose(&self, q: &Self) -> Self {
+        let mut out = Poly::zero();
+        for c in self.coeffs.iter().rev() {
+            out = &(&out * q) + &Poly::constant(c.clone());
         }
-        let shift = top + 1 - b.len();
-        for (i, c) in b.iter().enumerate() {
-            a[shift + i] -= &la * c;
-        }
+        out
     }
-    a.truncate(b.len() - 1);
-    while a.last().is_some_and(num_traits::Zero::is_zero) {
-        a.pop();
-    }
-    a
-}
 
-/// The primitive greatest common divisor of two integer polynomials (positive leading
-/// coefficient; `[]` when both are zero), by the subresultant remainder sequence (Collins;
-/// Brown–Traub): each pseudo-remainder is divided exactly by `g·h^δ`, which keeps the
-/// coefficients at the size of the subresultants (bit length `O(n·τ)`) without computing a
-/// single integer gcd until the final primitive part — integer gcds are the slow operation
-/// of big-number arithmetic.
-pub fn gcd_integer(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
-    let (mut a, mut b) = (primitive_part(a.to_vec()), primitive_part(b.to_vec()));
-    if a.len() < b.len() {
-        std::mem::swap(&mut a, &mut b);
-    }
-    if b.is_empty() {
-        return a;
-    }
-    let (mut g, mut h) = (BigInt::one(), BigInt::one());
-    loop {
-        let delta = (a.len() - b.len()) as u32;
-        let r = pseudo_rem(a, &b);
-        if r.is_empty() {
-            return primitive_part(b);
-        }
-        if r.len() == 1 {
-            return vec![BigInt::one()]; // a non-zero constant: coprime
-        }
-        let divisor = &g * num_traits::Pow::pow(&h, delta);
-        a = b;
-        b = r.into_iter().map(|x| x / &divisor).collect();
-        g = a.last().expect("non-zero").clone();
-        // h ← g^δ / h^(δ−1)
-        h = if delta == 0 { h } else { num_traits::Pow::pow(&g, delta) / num_traits::Pow::pow(&h, delta - 1) };
-    }
-}
-
-/// The square-free part of an integer polynomial: `p / gcd(p, p')` as a primitive integer
-/// polynomial with positive leading coefficient (`[]` for zero).
-///
-/// Most polynomials are square-free already, and proving it is cheap: if `gcd(p, p') mod q`
-/// is a constant for a prime `q` that does not divide the leading coefficient, then `p` is
-/// square-free (a common factor `g` over `Z` would keep its degree mod `q`, since `lc(g)`
-/// divides `lc(p)`). Only when that test fails for a few primes does the exact
-/// [`gcd_integer`] run.
-pub fn square_free_integer(p: Vec<BigInt>) -> Vec<BigInt> {
-    let p = primitive_part(p);
-    if p.len() <= 2 {
-        return p;
-    }
-    let dp = derivative_integer(&p);
-    if MODULAR_PRIMES.iter().any(|&q| coprime_mod(&p, &dp, q)) {
-        return p;
-    }
-    let g = gcd_integer(&p, &dp);
-    if g.len() <= 1 { p } else { primitive_part(exact_quotient(p, &g)) }
-}
-
-/// Primes below 2³¹ for the modular square-free test: products of two residues fit in a `u64`,
-/// so every step is one machine multiplication and remainder (a 62-bit prime needed `u128`
-/// remainders, a software division each, and cost more than the rest of the root isolation).
-const MODULAR_PRIMES: [u64; 3] = [MERSENNE, 2_147_483_629, 2_147_483_587];
-
-/// The Mersenne prime `2^31 − 1`, the first of [`MODULAR_PRIMES`].
-const MERSENNE: u64 = (1 << 31) - 1;
-
-/// The primitive part of a non-zero integer polynomial (trimmed, positive leading coefficient)
-/// when every coefficient fits an `i128` and the modular test of [`square_free_integer`] proves
-/// it square-free: then it is [`square_free_integer`]'s answer, found in machine words (the
-/// content by word gcds, the residues by word remainders). `None` otherwise (decide with
-/// [`square_free_integer`]).
-pub(crate) fn square_free_small(p: &[BigInt]) -> Option<Vec<BigInt>> {
-    let mut c: Vec<i128> = p.iter().map(num_traits::ToPrimitive::to_i128).collect::<Option<_>>()?;
-    while c.last() == Some(&0) {
-        c.pop();
-    }
-    let last = *c.last()?;
-    let content = c
-        .iter()
-        .try_fold(0u128, |g, x| if g == 1 { None } else { Some(crate::num::word::gcd_u128(g, x.unsigned_abs())) });
-    let content = i128::try_from(content.unwrap_or(1)).ok()?;
-    let content = if last < 0 { -content } else { content };
-    let c: Vec<i128> = if content == 1 { c } else { c.into_iter().map(|x| x / content).collect() };
-    let big = || c.iter().map(|&x| BigInt::from(x)).collect();
-    if c.len() <= 2 {
-        return Some(big());
-    }
-    let dc: Vec<i128> = c.iter().enumerate().skip(1).map(|(k, x)| x.checked_mul(k as i128)).collect::<Option<_>>()?;
-    let reduce = |v: &[i128], q: u64| -> Vec<u64> {
-        let residue = |x: i128| if q == MERSENNE { residue_mersenne(x) } else { crate::num::word::residue_i128(x, q) };
-        v.iter().map(|&x| residue(x)).collect()
-    };
-    MODULAR_PRIMES.iter().any(|&q| coprime_residues(reduce(&c, q), reduce(&dc, q), q)).then(big)
-}
-
-/// `x mod (2^31 − 1)` in `[0, 2^31 − 1)`, by folding 31-bit digits (`2^31 ≡ 1`): no division.
-fn residue_mersenne(x: i128) -> u64 {
-    let mut m = x.unsigned_abs();
-    let mut r: u64 = 0;
-    while m != 0 {
-        r += (m as u64) & MERSENNE;
-        m >>= 31;
-    }
-    // at most five digits: r < 5·2^31
-    let r = (r & MERSENNE) + (r >> 31);
-    let r = if r >= MERSENNE { r - MERSENNE } else { r };
-    if x < 0 && r != 0 { MERSENNE - r } else { r }
-}
-
-/// `true` when `gcd(a mod q, b mod q)` is a non-zero constant and `q ∤ lc(a)`: then `a` and
-/// `b` have no common factor of positive degree over `Q` (see [`square_free_integer`]).
-fn coprime_mod(a: &[BigInt], b: &[BigInt], q: u64) -> bool {
-    let reduce = |p: &[BigInt]| -> Vec<u64> { p.iter().map(|x| crate::num::word::residue(x, q)).collect() };
-    coprime_residues(reduce(a), reduce(b), q)
-}
-
-/// [`coprime_mod`] on the residues `x` of `a` and `y` of `b` (untrimmed: `x` as long as `a`).
-fn coprime_residues(mut x: Vec<u64>, mut y: Vec<u64>, q: u64) -> bool {
-    let len = x.len();
-    for v in [&mut x, &mut y] {
-        while v.last() == Some(&0) {
-            v.pop();
-        }
-    }
-    if x.len() != len || y.is_empty() {
-        return false; // q divides lc(a), or b vanishes mod q: no conclusion
-    }
-    // v mod q for v < 2^62; by folding for the Mersenne prime 2^31 − 1 (no division)
-    let reduce = |v: u64| {
-        if q == MERSENNE {
-            let v = (v & MERSENNE) + (v >> 31);
-            let v = (v & MERSENNE) + (v >> 31);
-            if v >= MERSENNE { v - MERSENNE } else { v }
-        } else {
-            v % q
-        }
-    };
-    let mul = |u: u64, v: u64| reduce(u * v);
-    if x.len() < y.len() {
-        std::mem::swap(&mut x, &mut y);
-    }
-    while y.len() > 1 {
-        // x ← lc(y)·x − lc(x)·t^shift·y until deg x < deg y: a non-zero multiple of x mod y over
-        // Z_q, so the degrees of the remainder sequence are Euclid's (no inverses needed)
-        while x.len() >= y.len() {
-            let (lx, ly) = (*x.last().expect("non-empty"), *y.last().expect("non-zero"));
-            let shift = x.len() - y.len();
-            for i in 0..x.len() - 1 {
-                let sub = if i >= shift { mul(lx, y[i - shift]) } else { 0 };
-                x[i] = reduce(mul(x[i], ly) + q - sub);
-            }
-            x.pop();
-            while x.last() == Some(&0) {
-                x.pop();
+    /// The Taylor shift `p(a + u)` as a polynomial in `u` (repeated synthetic division:
+    /// `n(n+1)/2` multiply-adds).
+    pub fn shift(&self, a: &S) -> Self {
+        let mut c = self.coeffs.clone();
+        let n = c.len();
+        for i in 0..n {
+            for j in (i..n.saturating_sub(1)).rev() {
+                let next = c[j + 1].clone() * a;
+                c[j] = c[j].clone() + &next;
             }
         }
-        if x.is_empty() {
-            return false; // y divides x: a common factor of positive degree mod q
-        }
-        std::mem::swap(&mut x, &mut y);
+        Poly::new(c)
     }
-    true // y is a non-zero constant
-}
 
-/// Exact quotient `a / b` of integer polynomials when `b` divides `a` in `Z[x]` (as the
-/// primitive parts of `p` and of a divisor of `p` do, by Gauss's lemma).
-/// `a / b` for integer polynomials when `b` divides `a` exactly (lowest degree first).
-pub fn exact_quotient_integer(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
-    exact_quotient(a, b)
-}
+    /// `p(−u)`: the odd coefficients negated.
+    pub fn reflect(&self) -> Self {
+        Poly::new(
+            self.coeffs.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect(),
+        )
+    }
 
-fn exact_quotient(a: Vec<BigInt>, b: &[BigInt]) -> Vec<BigInt> {
-    let lb = b.last().expect("non-zero divisor");
-    let mut a = a;
-    let mut q = vec![<BigInt as num_traits::Zero>::zero(); a.len().saturating_sub(b.len()) + 1];
-    while a.len() >= b.len() && !a.is_empty() {
-        let f = a.last().expect("non-empty") / lb;
-        let shift = a.len() - b.len();
-        for (i, c) in b.iter().enumerate() {
-            a[shift + i] -= &f * c;
+    /// The power series `p·q` truncated after `t^order` (`order + 1` coefficients, trailing
+    /// zeros dropped).
+    pub fn mul_truncated(&self, q: &Self, order: usize) -> Self {
+        let mut out = vec![S::zero(); order + 1];
+        for (i, x) in self.coeffs.iter().enumerate().take(order + 1) {
+            if x.is_zero() {
+                continue;
+            }
+            for (j, y) in q.coeffs.iter().enumerate().take(order + 1 - i) {
+                out[i + j] = out[i + j].clone() + &(x.clone() * y);
+            }
         }
-        q[shift] = f;
-        a.pop();
-        while a.last().is_some_and(num_traits::Zero::is_zero) {
-            a.pop();
+        Poly::new(out)
+    }
+
+    /// The power series `p/q` truncated after `t^order`.
+    ///
+    /// # Panics
+    /// **Panics if `q(0) = 0`** (the quotient is no power series).
+    pub fn div_truncated(&self, q: &Self, order: usize) -> Self {
+        let q0 = q.coeff(0);
+        assert!(!q0.is_zero(), "a power series quotient needs q(0) ≠ 0");
+        let mut out: Vec<S> = Vec::with_capacity(order + 1);
+        for k in 0..=order {
+            let mut acc = self.coeff(k);
+            for j in 1..=k {
+                let qj = q.coeff(j);
+                if !qj.is_zero() {
+                    acc = acc - &(qj * &out[k - j]);
+                }
+            }
+            out.push(acc / &q0);
+        }
+        Poly::new(out)
+    }
+
+    /// The power series `p(q(t))` truncated after `t^order` (`q(0) = 0`), by Horner's rule.
+    pub fn compose_truncated(&self, q: &Self, order: usize) -> Self {
+        let mut out = Poly::zero();
+        for c in self.coeffs.iter().take(order + 1).rev() {
+            out = &out.mul_truncated(q, order) + &Poly::constant(c.clone());
+        }
+        out
+    }
+
+    /// The compositional inverse: the series `τ(u)` with `p(τ(u)) = u` to `u^order`, for
+    /// `p(0) = 0` and `p'(0) ≠ 0` (one more correct coefficient per fixed-point step
+    /// `τ ← (u − (p(τ) − p₁τ))/p₁`).
+    ///
+    /// # Panics
+    /// **Panics if `p'(0) = 0`.**
+    ///
+    /// ```
+    /// use casteljau::{rat, poly::Poly};
+    /// // u = t + t²: t = u − u² + 2u³ − 5u⁴ + … (Catalan numbers)
+    /// let p = Poly::new(vec![rat(0), rat(1), rat(1)]);
+    /// assert_eq!(p.reversion(4).to_string(), "t - t^2 + 2t^3 - 5t^4");
+    /// ```
+    pub fn reversion(&self, order: usize) -> Self {
+        let p1 = self.coeff(1);
+        assert!(!p1.is_zero(), "a series reversion needs p'(0) ≠ 0");
+        let mut rest = self.coeffs.clone();
+        rest.resize(order.max(1) + 1, S::zero());
+        rest[0] = S::zero();
+        rest[1] = S::zero();
+        let rest = Poly::new(rest);
+        let mut tau = Poly::new(vec![S::zero(), S::one() / &p1]);
+        for _ in 1..order {
+            let r = rest.compose_truncated(&tau, order);
+            let mut next = vec![S::zero(); order + 1];
+            next[1] = S::one();
+            for (k, c) in r.coeffs.iter().enumerate() {
+                next[k] = next[k].clone() - c;
+            }
+            tau = Poly::new(next).scale(&(S::one() / &p1));
+        }
+        tau
+    }
+}
+
+impl<S: Scalar> Add for &Poly<S> {
+    type Output = Poly<S>;
+    fn add(self, q: &Poly<S>) -> Poly<S> {
+        let n = self.coeffs.len().max(q.coeffs.len());
+        Poly::new(
+            (0..n)
+                .map(|k| match (self.coeffs.get(k), q.coeffs.get(k)) {
+                    (Some(a), Some(b)) => a.clone() + b,
+                    (Some(a), None) => a.clone(),
+                    (None, Some(b)) => b.clone(),
+                    (None, None) => unreachable!("k < n"),
+                })
+                .collect(),
+        )
+    }
+}
+
+impl<S: Scalar> Sub for &Poly<S> {
+    type Output = Poly<S>;
+    fn sub(self, q: &Poly<S>) -> Poly<S> {
+        self + &(-q)
+    }
+}
+
+impl<S: Scalar> Neg for &Poly<S> {
+    type Output = Poly<S>;
+    fn neg(self) -> Poly<S> {
+        Poly { coeffs: self.coeffs.iter().map(|c| -c.clone()).collect() }
+    }
+}
+
+impl<S: Scalar> Mul for &Poly<S> {
+    type Output = Poly<S>;
+    /// The product, `(n + 1)(m + 1)` multiplications (zero coefficients skipped).
+    fn mul(self, q: &Poly<S>) -> Poly<S> {
+        match (self.is_zero(), q.is_zero()) {
+            // the product's degree: every coefficient kept
+            (false, false) => self.mul_truncated(q, self.coeffs.len() + q.coeffs.len() - 2),
+            _ => Poly::zero(),
         }
     }
-    debug_assert!(a.is_empty(), "exact_quotient: b does not divide a");
-    q
 }
 
-/// `p'` of an integer polynomial (lowest degree first; not trimmed).
-pub fn derivative_integer(p: &[BigInt]) -> Vec<BigInt> {
-    p.iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect()
+impl Poly<BigRational> {
+    /// Quotient and remainder by `b`: `self = q·b + r` with `deg r < deg b`.
+    ///
+    /// # Panics
+    /// **Panics if `b` is the zero polynomial.**
+    pub fn div_rem(&self, b: &Self) -> (Self, Self) {
+        let lb = b.coeffs.last().expect("a non-zero divisor").clone();
+        let mut a = self.coeffs.clone();
+        let mut q = vec![BigRational::from_i64(0); a.len().saturating_sub(b.coeffs.len()) + 1];
+        while a.len() >= b.coeffs.len() && !a.is_empty() {
+            let f = a.last().expect("non-empty").clone() / &lb;
+            let shift = a.len() - b.coeffs.len();
+            for (i, c) in b.coeffs.iter().enumerate() {
+                a[shift + i] = a[shift + i].clone() - f.clone() * c;
+            }
+            q[shift] = f;
+            a.pop(); // the leading coefficient is now exactly 0
+            while a.last().is_some_and(Scalar::is_zero) {
+                a.pop();
+            }
+        }
+        (Poly::new(q), Poly::new(a))
+    }
+
+    /// The monic greatest common divisor (zero for `gcd(0, 0)`).
+    ///
+    /// Computed on integers by the subresultant sequence ([`super::integer`]): Euclid over `Q`
+    /// reduces a fraction at every step and its coefficients swell, which made a degree-40 gcd
+    /// take seconds; the primitive sequence keeps every remainder's content divided out.
+    pub fn gcd(&self, b: &Self) -> Self {
+        let g = super::integer::gcd_integer(&self.to_integer(), &b.to_integer());
+        match g.last().cloned() {
+            Some(l) => Poly::new(g.into_iter().map(|c| BigRational::new(c, l.clone())).collect()),
+            None => Poly::zero(),
+        }
+    }
+
+    /// The square-free part `p / gcd(p, p')`: the same roots, each simple, as the primitive
+    /// integer polynomial with positive leading coefficient (zero for zero).
+    pub fn square_free(&self) -> Self {
+        Poly::new(
+            super::integer::square_free_integer(self.to_integer()).into_iter().map(BigRational::from_integer).collect(),
+        )
+    }
+
+    /// A positive multiple of `p` with integer coefficients (the denominators cleared).
+    pub fn to_integer(&self) -> Vec<num_bigint::BigInt> {
+        super::integer::to_integer(&self.coeffs)
+    }
 }
 
-/// `p'`.
-pub fn derivative(p: &[BigRational]) -> Poly {
-    trim(p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * rat(k as i64)).collect())
+impl<S: Exact> Poly<S> {
+    /// The polynomial written in `var`, lowest degree first: `1 - 1/2*t^2 + 3t^3` (the
+    /// printer's rules are on [`fmt::Display`]).
+    ///
+    /// ```
+    /// use casteljau::{rat, ratio, poly::Poly};
+    /// let p = Poly::new(vec![rat(1), rat(0), ratio(-1, 2), rat(3)]);
+    /// assert_eq!(p.text("s").to_string(), "1 - 1/2*s^2 + 3s^3");
+    /// assert_eq!(Poly::new(vec![rat(0), rat(-1)]).text("s").to_string(), "-s");
+    /// ```
+    pub fn text<'a>(&'a self, var: &'a str) -> impl fmt::Display + 'a {
+        PolyText { poly: self, var, descending: false }
+    }
+
+    /// The polynomial written in `var`, highest degree first, with `*` after every coefficient
+    /// that is not 1: `3*t^2 - 2*t + 5` (how the polynomial of an algebraic number is shown).
+    ///
+    /// ```
+    /// use casteljau::{rat, poly::Poly};
+    /// let p = Poly::new(vec![rat(-2), rat(0), rat(3)]);
+    /// assert_eq!(p.text_descending("t").to_string(), "3*t^2 - 2");
+    /// ```
+    pub fn text_descending<'a>(&'a self, var: &'a str) -> impl fmt::Display + 'a {
+        PolyText { poly: self, var, descending: true }
+    }
 }
 
-/// The square-free part `p / gcd(p, p')`: the same roots, each simple (`p` non-zero), as the
-/// primitive integer polynomial with positive leading coefficient (written as rationals).
-pub fn square_free(p: Poly) -> Poly {
-    square_free_integer(to_integer(&trim(p))).into_iter().map(BigRational::from_integer).collect()
+/// The one polynomial printer (see [`Poly::text`] and [`Poly::text_descending`]).
+struct PolyText<'a, S> {
+    poly: &'a Poly<S>,
+    var: &'a str,
+    descending: bool,
+}
+
+impl<S: Exact> fmt::Display for PolyText<'_, S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let terms: Vec<(usize, &S)> = self.poly.coeffs.iter().enumerate().filter(|(_, c)| !c.is_zero()).collect();
+        if terms.is_empty() {
+            return write!(f, "0");
+        }
+        let ordered: Box<dyn Iterator<Item = &(usize, &S)>> =
+            if self.descending { Box::new(terms.iter().rev()) } else { Box::new(terms.iter()) };
+        for (i, (k, c)) in ordered.enumerate() {
+            let negative = c.sign() == Ordering::Less;
+            let magnitude = if negative { -(*c).clone() } else { (*c).clone() };
+            f.write_str(match (i == 0, negative) {
+                (true, true) => "-",
+                (true, false) => "",
+                (false, true) => " - ",
+                (false, false) => " + ",
+            })?;
+            let text = if S::ATOMIC_DISPLAY { magnitude.to_string() } else { format!("({magnitude})") };
+            if *k == 0 {
+                write!(f, "{text}")?;
+                continue;
+            }
+            if magnitude != S::one() {
+                let integer = magnitude.to_ratio().is_some_and(|r| r.is_integer());
+                let star = self.descending || !integer;
+                write!(f, "{text}{}", if star { "*" } else { "" })?;
+            }
+            write!(f, "{}", self.var)?;
+            if *k > 1 {
+                write!(f, "^{k}")?;
+            }
+        }
+        Ok(())
+    }
+}
+
+impl<S: Exact> fmt::Display for Poly<S> {
+    /// `c0 + c1 t + c2 t^2 …` in ascending powers of `t`: zero terms omitted, a coefficient 1
+    /// left out, `*` only after a coefficient that is not an integer (`1/2*t`, `3t`), `0` for
+    /// the zero polynomial. Coefficients that are not one token (`Q(√d)`) are parenthesised.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        PolyText { poly: self, var: "t", descending: false }.fmt(f)
+    }
 }
 
 /// `[c − √r, c + √r]` for `r ≥ 0`, exactly in `K(√r)` (the radical spelled by [`Radical`]).
@@ -346,6 +431,14 @@ pub fn center_plus_minus_sqrt<K: Radical>(c: &K, r: &K) -> [QuadraticExt<K>; 2] 
 
 /// The distinct real roots of `c0 + c1 t + c2 t²`, ascending, each with its multiplicity (a
 /// linear polynomial when `c2 = 0`; none for a non-zero constant or the zero polynomial).
+///
+/// ```
+/// use casteljau::{rat, poly::quadratic_roots};
+/// // 2 − 4t + t²: roots 2 ∓ √2, simple
+/// let r = quadratic_roots(&rat(2), &rat(-4), &rat(1));
+/// assert_eq!(r.iter().map(|(x, m)| (x.to_string(), *m)).collect::<Vec<_>>(),
+///            vec![("2 - sqrt(2)".to_string(), 1), ("2 + sqrt(2)".to_string(), 1)]);
+/// ```
 pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<K>, usize)> {
     if c2.is_zero() {
         if c1.is_zero() {
@@ -361,52 +454,6 @@ pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<
         Ordering::Greater => {
             let r = disc / &(K::from_i64(4) * c2 * c2);
             center_plus_minus_sqrt(&center, &r).into_iter().map(|x| (x, 1)).collect()
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The word route of the square-free part ([`square_free_small`]) against
-    /// [`square_free_integer`] on random polynomials with contents, repeated factors and
-    /// coefficients near `2^100`; and the Mersenne residues against big-integer remainders.
-    #[test]
-    fn square_free_in_words_matches_big_integers() {
-        let mut next = crate::num::symmetric(0x5F5F_0DD5_EED5_0001);
-        let mut decided = 0;
-        for round in 0..300 {
-            let n = 1 + round % 6;
-            let scale = BigInt::from(1) << (round % 3 * 45) as u32;
-            let mut p: Vec<BigInt> = (0..=n).map(|_| BigInt::from(next(1000)) * &scale).collect();
-            if round % 4 == 0 {
-                // a repeated factor (t + c)²
-                let c = BigInt::from(next(9));
-                for _ in 0..2 {
-                    let mut q = vec![BigInt::from(0); p.len() + 1];
-                    for (i, x) in p.iter().enumerate() {
-                        q[i] += x * &c;
-                        q[i + 1] += x;
-                    }
-                    p = q;
-                }
-            }
-            if p.iter().all(num_traits::Zero::is_zero) {
-                continue;
-            }
-            if let Some(sf) = square_free_small(&p) {
-                assert_eq!(sf, square_free_integer(p.clone()), "{p:?}");
-                decided += 1;
-            }
-        }
-        assert!(decided > 150, "{decided} decided in words");
-        let mut word = crate::num::xorshift(0x0A0B_0C0D_0E0F_1011);
-        for k in 0..500 {
-            let v = ((u128::from(word()) << 64 | u128::from(word())) >> (k % 127)) as i128;
-            for x in [v, -v, i128::MIN, i128::MAX] {
-                assert_eq!(residue_mersenne(x), crate::num::word::residue(&BigInt::from(x), MERSENNE), "{x}");
-            }
         }
     }
 }

@@ -19,7 +19,7 @@
 use crate::error::{Error, Result};
 use crate::num::scalar::{Exact, Scalar, rat};
 use crate::poly::bernstein::{split as split_at, split_integer};
-use crate::poly::polynomial::{square_free_integer, to_integer};
+use crate::poly::integer::{square_free_integer, to_integer};
 use crate::work::Budget;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;

@@ -28,7 +28,6 @@ use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::poly::polynomial::{derivative, trim};
 use crate::rational::RationalBezier;
 use num_rational::BigRational;
 
@@ -116,33 +115,10 @@ pub fn bounding_box(curve: &RationalBezier<BigRational>) -> Result<BoundingBox> 
         return Err(Error::TooLarge { what: "degree for extrema", value: n, limit: MAX_EXTREMA_DEGREE });
     }
     curve.check_defined(&rat(0), &rat(1))?;
-    let h = curve.homogeneous().power_coefficients();
+    let forms = curve.homogeneous().coordinate_polynomials();
     let dim = curve.dim();
-    let coord = |k: usize| -> Vec<BigRational> { trim(h.iter().map(|p| p.coords[k].clone()).collect()) };
-    let w = coord(dim);
-    let w_prime = derivative(&w);
-    let mul = |a: &[BigRational], b: &[BigRational]| -> Vec<BigRational> {
-        if a.is_empty() || b.is_empty() {
-            return vec![];
-        }
-        let mut out = vec![rat(0); a.len() + b.len() - 1];
-        for (i, x) in a.iter().enumerate() {
-            for (j, y) in b.iter().enumerate() {
-                out[i + j] = out[i + j].clone() + x.clone() * y;
-            }
-        }
-        trim(out)
-    };
-    let sub = |a: Vec<BigRational>, b: Vec<BigRational>| -> Vec<BigRational> {
-        let mut out = vec![rat(0); a.len().max(b.len())];
-        for (i, x) in a.into_iter().enumerate() {
-            out[i] = out[i].clone() + x;
-        }
-        for (i, y) in b.into_iter().enumerate() {
-            out[i] = out[i].clone() - y;
-        }
-        trim(out)
-    };
+    let w = &forms[dim];
+    let w_prime = w.derivative();
     let mut out = BoundingBox {
         min: vec![],
         max: vec![],
@@ -153,13 +129,13 @@ pub fn bounding_box(curve: &RationalBezier<BigRational>) -> Result<BoundingBox> 
         stationary: vec![],
     };
     for k in 0..dim {
-        let x = coord(k);
-        let value_at = |t: &RealAlgebraic| t.map_rational(&x, &w);
-        let crit = sub(mul(&derivative(&x), &w), mul(&x, &w_prime));
+        let x = &forms[k];
+        let value_at = |t: &RealAlgebraic| t.map_rational(x, w);
+        let crit = &(&x.derivative() * w) - &(x * &w_prime);
         let mut candidates: Vec<(RealAlgebraic, RealAlgebraic)> = vec![];
         let zero = RealAlgebraic::from(rat(0));
         candidates.push((zero.clone(), value_at(&zero)));
-        if !crit.is_empty() {
+        if !crit.is_zero() {
             for t in RealAlgebraic::roots_in(&crit, &rat(0), &rat(1)) {
                 let v = value_at(&t);
                 out.stationary.push(Stationary {

@@ -210,6 +210,24 @@ impl<S: Scalar> RationalBezier<S> {
         Ok((Self::from_homogeneous(l.points().to_vec())?, Self::from_homogeneous(r.points().to_vec())?))
     }
 
+    /// The piece for `t` from `a` to `b`, reparametrised to `[0, 1]`: the homogeneous curve's
+    /// [`BezierCurve::subsegment`] (`a > b` gives it reversed).
+    ///
+    /// # Errors
+    /// As [`Self::from_homogeneous`]: a homogeneous control point of the piece that is the
+    /// zero vector.
+    ///
+    /// ```
+    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio};
+    /// // the quarter circle (1, 0) → (0, 1): its middle half, still on the circle
+    /// let q = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
+    /// let p = q.subsegment(&ratio(1, 4), &ratio(3, 4)).unwrap();
+    /// assert_eq!(p.eval(&ratio(1, 2)).unwrap(), q.eval(&ratio(1, 2)).unwrap());
+    /// ```
+    pub fn subsegment(&self, a: &S, b: &S) -> Result<Self> {
+        Self::from_homogeneous(self.homogeneous.subsegment(a, b).into_points())
+    }
+
     /// Degree elevation by `r` (homogeneous elevation).
     ///
     /// # Errors

@@ -30,7 +30,6 @@ use super::pairs::{candidate_pairs, easy_pair, injective};
 use super::ray::{Axis, Origin, Piece, RayWinding, whole, winding};
 use super::segment::Seg;
 use crate::error::{Error, Result};
-use crate::intersect::winding::rational_between;
 use crate::intersect::{ClosedPath, Domain};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
@@ -250,13 +249,13 @@ impl Union {
 
 /// A rational strictly inside `(lo, hi)` where the segment's tangent does not vanish.
 fn inner_parameter(s: &Seg, lo: &RealAlgebraic, hi: &RealAlgebraic) -> BigRational {
-    let mut t = rational_between(lo, hi);
+    let mut t = RealAlgebraic::rational_between(lo, hi);
     for _ in 0..64 {
         let d = s.direction_at(&t);
         if !(d[0].is_zero() && d[1].is_zero()) {
             return t;
         }
-        t = rational_between(lo, &RealAlgebraic::from(t));
+        t = RealAlgebraic::rational_between(lo, &RealAlgebraic::from(t));
     }
     t // a curve whose tangent vanishes on an interval is a point, excluded before
 }

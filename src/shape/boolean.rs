@@ -19,12 +19,12 @@
 //! its least piece (by input, contour, segment and parameter), contours in that order too.
 
 use super::arrangement::{Arrangement, HalfEdge, InputPiece};
-use super::segment::{Seg, eval, mul};
+use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::intersect::FillRule;
 use crate::num::scalar::{rat, ratio_to_f64};
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::poly::polynomial::derivative;
 use crate::work::Budget;
 use num_rational::BigRational;
 use serde::Serialize;
@@ -628,22 +628,13 @@ fn whole_area(s: &Seg) -> Option<BigRational> {
 }
 
 /// The antiderivative of `(X Y' − Y X')/(2W²)` for a polynomial segment (`W` constant).
-fn area_antiderivative(s: &Seg) -> Option<Vec<BigRational>> {
+fn area_antiderivative(s: &Seg) -> Option<Poly<BigRational>> {
     if !s.polynomial {
         return None;
     }
-    let w2 = &s.w()[0] * &s.w()[0] * rat(2);
-    let a = mul(s.x(), &derivative(s.y()));
-    let b = mul(s.y(), &derivative(s.x()));
-    let n = a.len().max(b.len());
-    let integrand: Vec<BigRational> = (0..n)
-        .map(|i| (a.get(i).cloned().unwrap_or_else(|| rat(0)) - b.get(i).cloned().unwrap_or_else(|| rat(0))) / &w2)
-        .collect();
-    let mut f = vec![rat(0)];
-    for (i, c) in integrand.into_iter().enumerate() {
-        f.push(c / rat(i as i64 + 1));
-    }
-    Some(f)
+    let w = s.w().coeff(0);
+    let integrand = &(s.x() * &s.y().derivative()) - &(s.y() * &s.x().derivative());
+    Some(integrand.scale(&(rat(1) / (&w * &w * rat(2)))).integral())
 }
 
 fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigRational>, f64) {
@@ -664,15 +655,15 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigR
     }
     if let Some(f) = area_antiderivative(s) {
         if let (Some(a), Some(b)) = (from.to_rational(), to.to_rational()) {
-            let v = eval(&f, b) - eval(&f, a);
+            let v = f.eval(b) - f.eval(a);
             let x = ratio_to_f64(&v);
             return (Some(v), x);
         }
         // F at an algebraic end: a real algebraic number, rational more often than not (a
         // piece on a line through the origin, a symmetric end)
         let at = |t: &RealAlgebraic| match t.to_rational() {
-            Some(r) => RealAlgebraic::from(eval(&f, r)),
-            None => t.map_rational(&f, &[rat(1)]),
+            Some(r) => RealAlgebraic::from(f.eval(r)),
+            None => t.map_rational(&f, &Poly::constant(rat(1))),
         };
         let (fa, fb) = (at(from), at(to));
         if let (Some(a), Some(b)) = (fa.to_rational(), fb.to_rational()) {
@@ -684,11 +675,10 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigR
     }
     // rational segment: Gauss–Legendre on the homogeneous form
     let (a, b) = (from.to_f64(), to.to_f64());
-    let ev = |p: &[BigRational], t: f64| p.iter().rev().fold(0.0, |acc, c| acc * t + ratio_to_f64(c));
-    let (dx, dy, dw) = (derivative(s.x()), derivative(s.y()), derivative(s.w()));
+    let (dx, dy, dw) = (s.x().derivative(), s.y().derivative(), s.w().derivative());
     let integrand = |t: f64| {
-        let (x, y, w) = (ev(s.x(), t), ev(s.y(), t), ev(s.w(), t));
-        let (xp, yp, wp) = (ev(&dx, t), ev(&dy, t), ev(&dw, t));
+        let (x, y, w) = (s.x().eval_f64(t), s.y().eval_f64(t), s.w().eval_f64(t));
+        let (xp, yp, wp) = (dx.eval_f64(t), dy.eval_f64(t), dw.eval_f64(t));
         // d(x/w) = (x'w − xw')/w², so x dy − y dx = (x(y'w − yw') − y(x'w − xw'))/w³
         (x * (yp * w - y * wp) - y * (xp * w - x * wp)) / (w * w * w) / 2.0
     };
@@ -798,8 +788,8 @@ fn sub_curve(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> Vec<Vec<[f64;
         }
     };
     let (a, b) = (near(from), near(to));
-    let c = s.curve.homogeneous();
-    let pts = sub_control_points(c.points(), &a, &b);
+    let piece = s.curve.homogeneous().subsegment(&a, &b);
+    let pts = piece.points();
     let n = pts.len();
     let mut out: Vec<[f64; 2]> = pts
         .iter()
@@ -810,46 +800,16 @@ fn sub_curve(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> Vec<Vec<[f64;
     vec![out]
 }
 
-/// The homogeneous control points of the curve restricted to `a → b` (blossoming by two de
-/// Casteljau passes: `[0, b]`, then its part from `a/b`; reversed when `a > b`).
-fn sub_control_points(
-    pts: &[crate::num::point::Point<BigRational>],
-    a: &BigRational,
-    b: &BigRational,
-) -> Vec<crate::num::point::Point<BigRational>> {
-    use crate::num::point::Point;
-    let blossom = |args: &[&BigRational]| -> Point<BigRational> {
-        let mut layer: Vec<Point<BigRational>> = pts.to_vec();
-        for t in args {
-            layer = layer
-                .windows(2)
-                .map(|w| {
-                    Point::new(w[0].coords.iter().zip(&w[1].coords).map(|(x, y)| x * (rat(1) - *t) + y * *t).collect())
-                })
-                .collect();
-        }
-        layer.pop().expect("a point")
-    };
-    let n = pts.len() - 1;
-    (0..=n)
-        .map(|i| {
-            let args: Vec<&BigRational> = (0..n).map(|j| if j < n - i { a } else { b }).collect();
-            blossom(&args)
-        })
-        .collect()
-}
-
 /// Four cubics through the points and tangents of a rational piece (rounded).
 fn hermite(s: &Seg, a: f64, b: f64, p0: [f64; 2], p1: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
-    let ev = |p: &[BigRational], t: f64| p.iter().rev().fold(0.0, |acc, c| acc * t + ratio_to_f64(c));
-    let (dx, dy, dw) = (derivative(s.x()), derivative(s.y()), derivative(s.w()));
+    let (dx, dy, dw) = (s.x().derivative(), s.y().derivative(), s.w().derivative());
     let point = |t: f64| {
-        let w = ev(s.w(), t);
-        [ev(s.x(), t) / w, ev(s.y(), t) / w]
+        let w = s.w().eval_f64(t);
+        [s.x().eval_f64(t) / w, s.y().eval_f64(t) / w]
     };
     let tangent = |t: f64| {
-        let (x, y, w) = (ev(s.x(), t), ev(s.y(), t), ev(s.w(), t));
-        let (xp, yp, wp) = (ev(&dx, t), ev(&dy, t), ev(&dw, t));
+        let (x, y, w) = (s.x().eval_f64(t), s.y().eval_f64(t), s.w().eval_f64(t));
+        let (xp, yp, wp) = (dx.eval_f64(t), dy.eval_f64(t), dw.eval_f64(t));
         [(xp * w - x * wp) / (w * w), (yp * w - y * wp) / (w * w)]
     };
     let k = 4;

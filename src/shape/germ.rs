@@ -16,13 +16,12 @@
 //! and both parameters rational and both edges regular there; otherwise the order of two tangent
 //! edges is refused with [`Error::InvalidArgument`] naming the vertex (never guessed).
 
-use super::segment::{Poly, Seg, add_scaled, eval, mul, shift};
+use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::poly::polynomial::derivative;
 use num_rational::BigRational;
-use num_traits::Zero;
 use std::cmp::Ordering;
 
 /// An edge end leaving a vertex.
@@ -43,15 +42,11 @@ pub(crate) struct Angle {
     order: usize,
 }
 
-fn sign_at(p: &[BigRational], t: &RealAlgebraic) -> Ordering {
+fn sign_at(p: &Poly<BigRational>, t: &RealAlgebraic) -> Ordering {
     match t.to_rational() {
-        Some(r) => eval(p, r).cmp(&rat(0)),
+        Some(r) => p.eval(r).cmp(&rat(0)),
         None => t.sign_of(p),
     }
-}
-
-fn negate(p: &[BigRational]) -> Poly {
-    p.iter().map(|c| -c.clone()).collect()
 }
 
 impl Angle {
@@ -69,23 +64,22 @@ impl Germ<'_> {
             let (sa, sb) = (sign_at(&a, &self.t0), sign_at(&b, &self.t0));
             if sa != Ordering::Equal || sb != Ordering::Equal {
                 let flip = self.sigma < 0 && j % 2 == 0;
-                let (a, b, sa, sb) =
-                    if flip { (negate(&a), negate(&b), sa.reverse(), sb.reverse()) } else { (a, b, sa, sb) };
+                let (a, b, sa, sb) = if flip { (-&a, -&b, sa.reverse(), sb.reverse()) } else { (a, b, sa, sb) };
                 use Ordering::*;
                 let (quadrant, num, den) = match (sa, sb) {
-                    (Greater, Greater | Equal) => (0u8, b.clone(), add_scaled(&a, &rat(1), &b)),
-                    (Less | Equal, Greater) => (1, negate(&a), add_scaled(&b, &rat(-1), &a)),
-                    (Less, Less | Equal) => (2, b.clone(), add_scaled(&a, &rat(1), &b)),
-                    _ => (3, a.clone(), add_scaled(&a, &rat(-1), &b)),
+                    (Greater, Greater | Equal) => (0u8, b.clone(), &a + &b),
+                    (Less | Equal, Greater) => (1, -&a, &b - &a),
+                    (Less, Less | Equal) => (2, b.clone(), &a + &b),
+                    _ => (3, a.clone(), &a - &b),
                 };
                 let within = match self.t0.to_rational() {
-                    Some(r) => RealAlgebraic::from(eval(&num, r) / eval(&den, r)),
+                    Some(r) => RealAlgebraic::from(num.eval(r) / den.eval(r)),
                     None => self.t0.map_rational(&num, &den),
                 };
                 return Ok(Angle { quadrant, within, order: j });
             }
-            a = derivative(&a);
-            b = derivative(&b);
+            a = a.derivative();
+            b = b.derivative();
         }
         Err(Error::InvalidArgument { message: "an edge of zero length".into() })
     }
@@ -121,7 +115,7 @@ pub(crate) fn compare_tangent(
     let a = graph_series(g, s, v, &d, &n, order);
     let b = graph_series(h, t, v, &d, &n, order);
     for k in 2..=order {
-        match a[k].cmp(&b[k]) {
+        match a.coeff(k).cmp(&b.coeff(k)) {
             Ordering::Equal => continue,
             o => return Ok(o),
         }
@@ -131,7 +125,7 @@ pub(crate) fn compare_tangent(
     })
 }
 
-/// The coefficients `c_0..=c_order` of `w(u)` for one germ.
+/// The series `w(u) = c_0 + c_1 u + …` to `u^order` for one germ.
 fn graph_series(
     g: &Germ<'_>,
     t0: &BigRational,
@@ -139,80 +133,16 @@ fn graph_series(
     d: &[BigRational; 2],
     n: &[BigRational; 2],
     order: usize,
-) -> Vec<BigRational> {
+) -> Poly<BigRational> {
     let s = g.seg;
-    let px = add_scaled(s.x(), &-v[0].clone(), s.w());
-    let py = add_scaled(s.y(), &-v[1].clone(), s.w());
-    let along = |k: &[BigRational; 2]| add_scaled(&mul(&px, &[k[0].clone()]), &k[1], &py);
-    let (u, w, den) = (shift(&along(d), t0, g.sigma), shift(&along(n), t0, g.sigma), shift(s.w(), t0, g.sigma));
-    let u = series_div(&u, &den, order);
-    let w = series_div(&w, &den, order);
-    let tau = reversion(&u, order);
-    compose(&w, &tau, order)
-}
-
-fn coef(p: &[BigRational], k: usize) -> BigRational {
-    p.get(k).cloned().unwrap_or_else(|| rat(0))
-}
-
-/// `a/b` as a power series to `order` (`b(0) ≠ 0`).
-fn series_div(a: &[BigRational], b: &[BigRational], order: usize) -> Vec<BigRational> {
-    let b0 = coef(b, 0);
-    let mut q = vec![rat(0); order + 1];
-    for k in 0..=order {
-        let mut acc = coef(a, k);
-        for j in 1..=k {
-            let bj = coef(b, j);
-            if !bj.is_zero() {
-                acc -= bj * &q[k - j];
-            }
-        }
-        q[k] = acc / &b0;
-    }
-    q
-}
-
-fn series_mul(a: &[BigRational], b: &[BigRational], order: usize) -> Vec<BigRational> {
-    let mut out = vec![rat(0); order + 1];
-    for (i, x) in a.iter().enumerate().take(order + 1) {
-        if x.is_zero() {
-            continue;
-        }
-        for (j, y) in b.iter().enumerate().take(order + 1 - i) {
-            out[i + j] += x * y;
-        }
-    }
-    out
-}
-
-/// `f(g(u))` to `order` (`g(0) = 0`), by Horner.
-fn compose(f: &[BigRational], g: &[BigRational], order: usize) -> Vec<BigRational> {
-    let mut out = vec![rat(0); order + 1];
-    for c in f.iter().take(order + 1).rev() {
-        out = series_mul(&out, g, order);
-        out[0] += c;
-    }
-    out
-}
-
-/// The series `τ(u)` with `u(τ(u)) = u` (`u(0) = 0`, `u'(0) ≠ 0`), to `order`.
-fn reversion(u: &[BigRational], order: usize) -> Vec<BigRational> {
-    let u1 = coef(u, 1);
-    // τ ← (u − (U(τ) − u1·τ)) / u1, one more correct coefficient per step
-    let mut rest = u.to_vec();
-    rest.resize(order + 1, rat(0));
-    rest[0] = rat(0);
-    rest[1] = rat(0);
-    let mut tau = vec![rat(0); order + 1];
-    tau[1] = rat(1) / &u1;
-    for _ in 1..order {
-        let r = compose(&rest, &tau, order);
-        let mut next = vec![rat(0); order + 1];
-        next[1] = rat(1) / &u1;
-        for k in 2..=order {
-            next[k] = -r[k].clone() / &u1;
-        }
-        tau = next;
-    }
-    tau
+    let px = s.x() - &s.w().scale(&v[0]);
+    let py = s.y() - &s.w().scale(&v[1]);
+    let along = |k: &[BigRational; 2]| &px.scale(&k[0]) + &py.scale(&k[1]);
+    // the edge's local parameter τ: t = t0 + σ·τ
+    let local = |p: &Poly<BigRational>| if g.sigma < 0 { p.shift(t0).reflect() } else { p.shift(t0) };
+    let (u, w, den) = (local(&along(d)), local(&along(n)), local(s.w()));
+    let u = u.div_truncated(&den, order);
+    let w = w.div_truncated(&den, order);
+    let tau = u.reversion(order);
+    w.compose_truncated(&tau, order)
 }

@@ -29,12 +29,14 @@
 //! bound is at most `tol`.
 
 use super::boolean::{BooleanOp, BooleanOptions, BooleanResult};
-use super::segment::{Poly, Seg, add_scaled, mul};
+use super::segment::Seg;
 use super::{Arrangement, HalfEdge, Shape};
+use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::intersect::PathWinding;
 use crate::num::point::Point;
 use crate::num::scalar::{rat, ratio_to_f64};
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::work::Budget;
 use num_rational::BigRational;
@@ -299,16 +301,16 @@ fn far_from(
         {
             continue; // the box is farther than tol (with room for rounding)
         }
-        let fx = add_scaled(s.x(), &-q.coords[0].clone(), s.w());
-        let fy = add_scaled(s.y(), &-q.coords[1].clone(), s.w());
-        let w2 = mul(s.w(), s.w());
-        let g: Poly = add_scaled(&add_scaled(&mul(&fx, &fx), &rat(1), &mul(&fy, &fy)), &-(tol * tol), &w2);
+        // |C(t) − q|² − tol² times W²: (X − q_x W)² + (Y − q_y W)² − tol² W²
+        let fx = s.x() - &s.w().scale(&q.coords[0]);
+        let fy = s.y() - &s.w().scale(&q.coords[1]);
+        let g: Poly<BigRational> = &(&(&fx * &fx) + &(&fy * &fy)) - &(s.w() * s.w()).scale(&(tol * tol));
         let (a, _) = lo.interval();
         let (_, b) = hi.interval();
-        if g.is_empty() || !RealAlgebraic::roots_in(&g, &a, &b).is_empty() {
+        if g.is_zero() || !RealAlgebraic::roots_in(&g, &a, &b).is_empty() {
             return false;
         }
-        if super::segment::eval(&g, &a).is_negative() {
+        if g.eval(&a).is_negative() {
             return false;
         }
     }
@@ -317,9 +319,9 @@ fn far_from(
 
 /// Binary64 evaluation of a piece.
 struct FloatPiece {
-    x: Vec<f64>,
-    y: Vec<f64>,
-    w: Vec<f64>,
+    x: Poly<f64>,
+    y: Poly<f64>,
+    w: Poly<f64>,
     lo: f64,
     hi: f64,
     /// A bound on the speed `|C'(t)|` over `[lo, hi]` (polynomial pieces: degree × the longest
@@ -329,7 +331,7 @@ struct FloatPiece {
 
 impl FloatPiece {
     fn new(s: &Seg, lo: f64, hi: f64) -> Self {
-        let f = |p: &[BigRational]| p.iter().map(ratio_to_f64).collect::<Vec<f64>>();
+        let f = |p: &Poly<BigRational>| p.map(ratio_to_f64);
         let mut fp = FloatPiece { x: f(s.x()), y: f(s.y()), w: f(s.w()), lo, hi, speed: 0.0 };
         fp.speed = match (&s.hull, s.polynomial) {
             (Some(ps), true) => {
@@ -344,12 +346,9 @@ impl FloatPiece {
         };
         fp
     }
-    fn ev(p: &[f64], t: f64) -> f64 {
-        p.iter().rev().fold(0.0, |acc, c| acc * t + c)
-    }
     fn at(&self, t: f64) -> [f64; 2] {
-        let w = Self::ev(&self.w, t);
-        [Self::ev(&self.x, t) / w, Self::ev(&self.y, t) / w]
+        let w = self.w.eval(&t);
+        [self.x.eval(&t) / w, self.y.eval(&t) / w]
     }
     fn speed_at(&self, t: f64) -> f64 {
         let h = 1e-6;
@@ -393,44 +392,29 @@ fn float_points(s: &Seg) -> Option<Vec<[f64; 2]>> {
     s.hull.as_ref().map(|ps| ps.iter().map(|p| [ratio_to_f64(&p.coords[0]), ratio_to_f64(&p.coords[1])]).collect())
 }
 
-/// De Casteljau in binary64.
-fn point_of(ps: &[[f64; 2]], t: f64) -> [f64; 2] {
-    let mut l = ps.to_vec();
-    while l.len() > 1 {
-        l = l.windows(2).map(|w| [w[0][0] + (w[1][0] - w[0][0]) * t, w[0][1] + (w[1][1] - w[0][1]) * t]).collect();
-    }
-    l[0]
+/// The binary64 curve of control points `ps`.
+fn curve(ps: &[[f64; 2]]) -> BezierCurve<f64> {
+    BezierCurve::new(ps.iter().map(|p| Point::new(p.to_vec())).collect()).expect("a control point")
 }
 
-/// The control points of `ps` restricted to `[a, b]` (blossoming, binary64).
+fn points_of(c: &BezierCurve<f64>) -> Vec<[f64; 2]> {
+    c.points().iter().map(|p| [p.coords[0], p.coords[1]]).collect()
+}
+
+/// De Casteljau in binary64.
+fn point_of(ps: &[[f64; 2]], t: f64) -> [f64; 2] {
+    let p = curve(ps).eval(&t);
+    [p.coords[0], p.coords[1]]
+}
+
+/// The control points of `ps` restricted to `[a, b]` ([`BezierCurve::subsegment`], binary64).
 fn sub_points(ps: &[[f64; 2]], a: f64, b: f64) -> Vec<[f64; 2]> {
-    let n = ps.len() - 1;
-    (0..=n)
-        .map(|i| {
-            let mut l = ps.to_vec();
-            for j in 0..n {
-                let t = if j < n - i { a } else { b };
-                l = l
-                    .windows(2)
-                    .map(|w| [w[0][0] + (w[1][0] - w[0][0]) * t, w[0][1] + (w[1][1] - w[0][1]) * t])
-                    .collect();
-            }
-            l[0]
-        })
-        .collect()
+    points_of(&curve(ps).subsegment(&a, &b))
 }
 
 /// Degree elevation by one, binary64.
 fn elevate(ps: &[[f64; 2]]) -> Vec<[f64; 2]> {
-    let n = ps.len();
-    (0..=n)
-        .map(|i| {
-            let a = i as f64 / n as f64;
-            let p = if i == 0 { ps[0] } else { ps[i - 1] };
-            let q = if i == n { ps[n - 1] } else { ps[i] };
-            [a * p[0] + (1.0 - a) * q[0], a * p[1] + (1.0 - a) * q[1]]
-        })
-        .collect()
+    points_of(&curve(ps).elevate(1).expect("a small degree"))
 }
 
 fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
@@ -450,7 +434,16 @@ fn to_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// The parameter of the point of `ps` nearest to `q` (sampling, then Newton), within `[lo, hi]`.
 fn nearest(ps: &[[f64; 2]], q: [f64; 2], lo: f64, hi: f64) -> f64 {
-    nearest_on(&|t| point_of(ps, t), q, lo, hi)
+    let c = curve(ps);
+    nearest_on(
+        &|t| {
+            let p = c.eval(&t);
+            [p.coords[0], p.coords[1]]
+        },
+        q,
+        lo,
+        hi,
+    )
 }
 
 /// The parameter in `[lo, hi]` of the point of the curve `at` nearest to `q` found by 33 samples

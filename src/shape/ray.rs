@@ -9,11 +9,12 @@
 //! Pieces whose outward-rounded box misses the ray's line, or lies wholly behind the origin,
 //! are decided without roots: their crossings, if any, are not counted.
 
-use super::segment::{Poly, Seg, add_scaled};
+use super::segment::Seg;
 use crate::error::{Error, Result};
-use crate::intersect::winding::{Event, count_crossings, rational_between};
+use crate::intersect::winding::{Event, count_crossings};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;
 use std::cmp::Ordering;
@@ -183,20 +184,19 @@ fn piece_events(
     events: &mut Vec<Event>,
 ) -> Result<Option<RealAlgebraic>> {
     let s = piece.seg;
-    let neg = |p: &Poly| -> Poly { p.iter().map(|c| -c.clone()).collect() };
-    let (u, v): (Poly, Poly) = match axis {
+    let (u, v): (Poly<BigRational>, Poly<BigRational>) = match axis {
         Axis::PosX => (s.x().clone(), s.y().clone()),
-        Axis::NegX => (neg(s.x()), neg(s.y())),
-        Axis::PosY => (s.y().clone(), neg(s.x())),
-        Axis::NegY => (neg(s.y()), s.x().clone()),
+        Axis::NegX => (-s.x(), -s.y()),
+        Axis::PosY => (s.y().clone(), -s.x()),
+        Axis::NegY => (-s.y(), s.x().clone()),
     };
-    let fu = add_scaled(&u, &-qu.clone(), s.w());
-    let fv = add_scaled(&v, &-qv.clone(), s.w());
+    let fu = &u - &s.w().scale(qu);
+    let fv = &v - &s.w().scale(qv);
     let (lo, hi) = (&piece.lo, &piece.hi);
-    if fv.is_empty() {
+    if fv.is_zero() {
         // the piece lies on the ray's line
-        let mid = RealAlgebraic::from(rational_between(lo, hi));
-        if !fu.is_empty() {
+        let mid = RealAlgebraic::from(RealAlgebraic::rational_between(lo, hi));
+        if !fu.is_zero() {
             let (a, _) = lo.interval();
             let (_, b) = hi.interval();
             if let Some(t) = RealAlgebraic::roots_in(&fu, &a, &b).into_iter().find(|r| r >= lo && r <= hi) {
@@ -243,7 +243,7 @@ fn piece_events(
             }
         }
         if let Some(next) = breaks.get(k + 1) {
-            let mid = rational_between(t, next);
+            let mid = RealAlgebraic::rational_between(t, next);
             events.push(Event::Sign(RealAlgebraic::from(mid).sign_of(&fv)));
         }
     }

@@ -3,74 +3,12 @@
 
 use crate::num::point::Point;
 use crate::num::scalar::rat;
+use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::poly::polynomial::{derivative, trim};
 use crate::rational::RationalBezier;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
-
-/// A polynomial in power form, lowest degree first.
-pub(crate) type Poly = Vec<BigRational>;
-
-/// `a·b`.
-pub(crate) fn mul(a: &[BigRational], b: &[BigRational]) -> Poly {
-    if a.is_empty() || b.is_empty() {
-        return vec![];
-    }
-    let mut out = vec![rat(0); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        if x.is_zero() {
-            continue;
-        }
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] += x * y;
-        }
-    }
-    trim(out)
-}
-
-/// `a + k·b`.
-pub(crate) fn add_scaled(a: &[BigRational], k: &BigRational, b: &[BigRational]) -> Poly {
-    let n = a.len().max(b.len());
-    trim(
-        (0..n)
-            .map(|i| {
-                let x = a.get(i).cloned().unwrap_or_else(|| rat(0));
-                match b.get(i) {
-                    Some(y) => x + k * y,
-                    None => x,
-                }
-            })
-            .collect(),
-    )
-}
-
-/// `p(t)` at a rational `t` (Horner).
-pub(crate) fn eval(p: &[BigRational], t: &BigRational) -> BigRational {
-    p.iter().rev().fold(rat(0), |acc, c| acc * t + c)
-}
-
-/// `p(t0 + σ·τ)` as a polynomial in `τ` (`σ = ±1`): the Taylor shift.
-pub(crate) fn shift(p: &[BigRational], t0: &BigRational, sigma: i64) -> Poly {
-    // repeated synthetic division gives the coefficients of p(t0 + u)
-    let mut c = p.to_vec();
-    let n = c.len();
-    for i in 0..n {
-        for j in (i..n.saturating_sub(1)).rev() {
-            let next = c[j + 1].clone();
-            c[j] += next * t0;
-        }
-    }
-    if sigma < 0 {
-        for (k, x) in c.iter_mut().enumerate() {
-            if k % 2 == 1 {
-                *x = -x.clone();
-            }
-        }
-    }
-    trim(c)
-}
 
 /// The nearest `f64` below and above a rational (one ulp of slack on each side).
 pub(crate) fn outward(x: &BigRational) -> (f64, f64) {
@@ -85,49 +23,27 @@ pub(crate) fn outward(x: &BigRational) -> (f64, f64) {
 /// derivative times `W² > 0`).
 #[derive(Clone, Debug)]
 struct Forms {
-    x: Poly,
-    y: Poly,
-    w: Poly,
-    dx: Poly,
-    dy: Poly,
+    x: Poly<BigRational>,
+    y: Poly<BigRational>,
+    w: Poly<BigRational>,
+    dx: Poly<BigRational>,
+    dy: Poly<BigRational>,
 }
 
 impl Forms {
     fn of(curve: &RationalBezier<BigRational>, polynomial: bool) -> Forms {
+        let h = curve.homogeneous();
         if polynomial {
-            let h = curve.homogeneous().points();
-            let w0 = &h[0].coords[2];
-            let ps: Vec<[BigRational; 2]> = h.iter().map(|p| [&p.coords[0] / w0, &p.coords[1] / w0]).collect();
-            let n = ps.len() - 1;
-            // c_k = C(n, k) Σ_i (−1)^(k−i) C(k, i) P_i
-            let binom =
-                |n: usize, k: usize| -> i64 { (0..k).fold(1i64, |acc, i| acc * (n - i) as i64 / (i + 1) as i64) };
-            let power = |axis: usize| -> Poly {
-                trim(
-                    (0..=n)
-                        .map(|k| {
-                            let mut acc = rat(0);
-                            for (i, p) in ps.iter().enumerate().take(k + 1) {
-                                let c = binom(k, i) * if (k - i) % 2 == 0 { 1 } else { -1 };
-                                acc += &p[axis] * BigRational::from_integer(c.into());
-                            }
-                            acc * BigRational::from_integer(binom(n, k).into())
-                        })
-                        .collect(),
-                )
-            };
-            let (x, y) = (power(0), power(1));
-            let (dx, dy) = (derivative(&x), derivative(&y));
-            return Forms { x, y, w: vec![rat(1)], dx, dy };
+            // every weight w0: the affine power form of the points h_i / w0, W = 1
+            let w0 = &h.points()[0].coords[2];
+            let [x, y, _]: [Poly<BigRational>; 3] = h.coordinate_polynomials().try_into().expect("planar: X, Y, W");
+            let (x, y) = if w0 == &rat(1) { (x, y) } else { (x.scale(&(rat(1) / w0)), y.scale(&(rat(1) / w0))) };
+            let (dx, dy) = (x.derivative(), y.derivative());
+            return Forms { x, y, w: Poly::constant(rat(1)), dx, dy };
         }
-        let hp = curve.homogeneous().power_coefficients();
-        let coord = |k: usize| -> Poly { trim(hp.iter().map(|p| p.coords[k].clone()).collect()) };
-        let (x, y, w) = (coord(0), coord(1), coord(2));
-        let cross = |a: &Poly| {
-            let (da, dw) = (derivative(a), derivative(&w));
-            let left = mul(&da, &w);
-            add_scaled(&left, &rat(-1), &mul(a, &dw))
-        };
+        let [x, y, w]: [Poly<BigRational>; 3] = h.coordinate_polynomials().try_into().expect("planar: X, Y, W");
+        let dw = w.derivative();
+        let cross = |a: &Poly<BigRational>| &(&a.derivative() * &w) - &(a * &dw);
         let (dx, dy) = (cross(&x), cross(&y));
         Forms { x, y, w, dx, dy }
     }
@@ -235,7 +151,7 @@ impl Seg {
             Some(ps) => ps.iter().all(|p| *p == ps[0]),
             None => {
                 let f = Forms::of(&curve, polynomial);
-                let d = f.dx.is_empty() && f.dy.is_empty();
+                let d = f.dx.is_zero() && f.dy.is_zero();
                 let _ = forms.set(f);
                 d
             }
@@ -248,39 +164,39 @@ impl Seg {
     }
 
     /// `X`.
-    pub(crate) fn x(&self) -> &Poly {
+    pub(crate) fn x(&self) -> &Poly<BigRational> {
         &self.forms().x
     }
 
     /// `Y`.
-    pub(crate) fn y(&self) -> &Poly {
+    pub(crate) fn y(&self) -> &Poly<BigRational> {
         &self.forms().y
     }
 
     /// `W`.
-    pub(crate) fn w(&self) -> &Poly {
+    pub(crate) fn w(&self) -> &Poly<BigRational> {
         &self.forms().w
     }
 
     /// `X'W − XW'`.
-    pub(crate) fn dx(&self) -> &Poly {
+    pub(crate) fn dx(&self) -> &Poly<BigRational> {
         &self.forms().dx
     }
 
     /// `Y'W − YW'`.
-    pub(crate) fn dy(&self) -> &Poly {
+    pub(crate) fn dy(&self) -> &Poly<BigRational> {
         &self.forms().dy
     }
 
     /// The point at a rational parameter.
     pub(crate) fn point_at(&self, t: &BigRational) -> Point<BigRational> {
-        let w = eval(self.w(), t);
-        Point::new(vec![eval(self.x(), t) / &w, eval(self.y(), t) / &w])
+        let w = self.w().eval(t);
+        Point::new(vec![self.x().eval(t) / &w, self.y().eval(t) / &w])
     }
 
     /// The tangent direction at a rational parameter (zero at a cusp).
     pub(crate) fn direction_at(&self, t: &BigRational) -> [BigRational; 2] {
-        [eval(self.dx(), t), eval(self.dy(), t)]
+        [self.dx().eval(t), self.dy().eval(t)]
     }
 
     /// The point at an algebraic parameter, each coordinate an exact real algebraic number.
@@ -310,8 +226,8 @@ impl Seg {
 
     /// Whether the point at `t` is `q`, exactly.
     pub(crate) fn passes_through(&self, t: &RealAlgebraic, q: &Point<BigRational>) -> bool {
-        let fx = add_scaled(self.x(), &-q.coords[0].clone(), self.w());
-        let fy = add_scaled(self.y(), &-q.coords[1].clone(), self.w());
+        let fx = self.x() - &self.w().scale(&q.coords[0]);
+        let fy = self.y() - &self.w().scale(&q.coords[1]);
         t.sign_of(&fx) == Ordering::Equal && t.sign_of(&fy) == Ordering::Equal
     }
 

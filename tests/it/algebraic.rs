@@ -6,15 +6,15 @@
 use crate::common::{run, stderr, stdout};
 use casteljau::curve::BezierCurve;
 use casteljau::num::Point;
-use casteljau::poly::RealAlgebraic;
 use casteljau::poly::quadratic_roots;
+use casteljau::poly::{Poly, RealAlgebraic};
 use casteljau::rational::{bounding_box, bounding_box_polynomial};
 use casteljau::{QuadraticExt, RationalBezier, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
 
 /// `Π (t − r_i) · (t² − d)` in power form.
-fn with_roots(roots: &[BigRational], d: i64) -> Vec<BigRational> {
+fn with_roots(roots: &[BigRational], d: i64) -> Poly<BigRational> {
     let mut p = vec![rat(-d), rat(0), rat(1)];
     for r in roots {
         let mut next = vec![rat(0); p.len() + 1];
@@ -24,7 +24,7 @@ fn with_roots(roots: &[BigRational], d: i64) -> Vec<BigRational> {
         }
         p = next;
     }
-    p
+    Poly::new(p)
 }
 
 fn small() -> impl Strategy<Value = BigRational> {
@@ -84,7 +84,7 @@ fn algebraic_floats_are_correctly_rounded_against_a_decimal_oracle() {
         (&[-1, -1, 0, 0, 0, 1], &[1.1673039782614187]),
     ];
     for (p, want) in cases {
-        let p: Vec<BigRational> = p.iter().map(|&c| rat(c)).collect();
+        let p = Poly::new(p.iter().map(|&c| rat(c)).collect());
         let got: Vec<f64> = RealAlgebraic::real_roots(&p).iter().map(RealAlgebraic::to_f64).collect();
         assert_eq!(got, want);
     }
@@ -92,12 +92,12 @@ fn algebraic_floats_are_correctly_rounded_against_a_decimal_oracle() {
 
 #[test]
 fn algebraic_display_spells_rationals_quadratics_and_general_roots() {
-    let r = RealAlgebraic::real_roots(&[rat(-1), rat(-3), rat(0), rat(1)]);
+    let r = RealAlgebraic::real_roots(&Poly::new(vec![rat(-1), rat(-3), rat(0), rat(1)]));
     assert_eq!(r[2].to_string(), "root 3 of t^3 - 3*t - 1 in [15/8, 31/16]");
-    let q = RealAlgebraic::real_roots(&[rat(1), rat(-4), rat(2)]); // 2t² − 4t + 1
+    let q = RealAlgebraic::real_roots(&Poly::new(vec![rat(1), rat(-4), rat(2)])); // 2t² − 4t + 1
     assert_eq!(q[0].to_string(), "1 - 1/2*sqrt(2)");
     assert_eq!(serde_json::to_string(&q[1]).unwrap(), "\"1 + 1/2*sqrt(2)\"");
-    let z = RealAlgebraic::roots_in(&[rat(0), rat(-1), rat(1)], &rat(0), &rat(1)); // t² − t
+    let z = RealAlgebraic::roots_in(&Poly::new(vec![rat(0), rat(-1), rat(1)]), &rat(0), &rat(1)); // t² − t
     assert_eq!(z.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["0", "1"]);
 }
 
@@ -129,8 +129,9 @@ proptest! {
         let power = c.power_coefficients();
         for k in 0..2 {
             let x: Vec<BigRational> = power.iter().map(|p| p.coords[k].clone()).collect();
-            prop_assert_eq!(&b.min_at[k].map_rational(&x, &[rat(1)]), &b.min[k]);
-            prop_assert_eq!(&b.max_at[k].map_rational(&x, &[rat(1)]), &b.max[k]);
+            let (xp, one) = (Poly::new(x.clone()), Poly::constant(rat(1)));
+            prop_assert_eq!(&b.min_at[k].map_rational(&xp, &one), &b.min[k]);
+            prop_assert_eq!(&b.max_at[k].map_rational(&xp, &one), &b.max[k]);
             // x'(t) = x1 + 2 x2 t + 3 x3 t²: its roots in [0, 1], independently
             let mut want: Vec<f64> = quadratic_roots(&x[1], &(rat(2) * &x[2]), &(rat(3) * &x[3]))
                 .into_iter()

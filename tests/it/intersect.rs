@@ -202,7 +202,7 @@ mod overlaps {
 
     fn at(c: &RationalBezier<BigRational>, x: &RealAlgebraic) -> [RealAlgebraic; 2] {
         let h = c.homogeneous().power_coefficients();
-        let coord = |k: usize| h.iter().map(|p| p.coords[k].clone()).collect::<Vec<_>>();
+        let coord = |k: usize| casteljau::poly::Poly::new(h.iter().map(|p| p.coords[k].clone()).collect());
         [x.map_rational(&coord(0), &coord(2)), x.map_rational(&coord(1), &coord(2))]
     }
 

@@ -248,7 +248,10 @@ fn neg(v: &ExactValue) -> ExactValue {
     match v {
         ExactValue::Rational(r) => ExactValue::Rational(-r.clone()),
         ExactValue::Quadratic(q) => ExactValue::from(-q.clone()),
-        ExactValue::Algebraic(a) => ExactValue::from(a.map_rational(&[rat(0), rat(-1)], &[rat(1)])),
+        ExactValue::Algebraic(a) => {
+            use casteljau::poly::Poly;
+            ExactValue::from(a.map_rational(&Poly::new(vec![rat(0), rat(-1)]), &Poly::constant(rat(1))))
+        }
     }
 }
 

@@ -193,27 +193,34 @@ fn quadratic_extension_sign_of_near_cancellation() {
 }
 
 mod polynomial_routes {
+    use casteljau::poly::Poly;
     use casteljau::poly::{Root, isolate_bernstein};
-    use casteljau::poly::{gcd, square_free};
     use casteljau::rat;
     use num_rational::BigRational;
     use proptest::prelude::*;
 
-    fn mul(a: &[BigRational], b: &[BigRational]) -> Vec<BigRational> {
+    /// The product by the schoolbook sum, independent of [`Poly`]'s own.
+    fn mul(a: &Poly<BigRational>, b: &Poly<BigRational>) -> Poly<BigRational> {
+        let (a, b) = (a.coeffs(), b.coeffs());
         let mut out = vec![rat(0); a.len() + b.len() - 1];
         for (i, x) in a.iter().enumerate() {
             for (j, y) in b.iter().enumerate() {
                 out[i + j] = out[i + j].clone() + x.clone() * y;
             }
         }
-        out
+        Poly::new(out)
     }
 
-    fn poly(max_degree: usize) -> impl Strategy<Value = Vec<BigRational>> {
+    fn poly(max_degree: usize) -> impl Strategy<Value = Poly<BigRational>> {
         prop::collection::vec(-20i64..=20, 2..=max_degree + 1)
             .prop_filter("non-constant", |v| v.iter().skip(1).any(|&x| x != 0))
-            .prop_map(|v| casteljau::poly::trim(v.into_iter().map(rat).collect()))
-            .prop_filter("non-constant", |p| p.len() >= 2)
+            .prop_map(|v| Poly::new(v.into_iter().map(rat).collect()))
+            .prop_filter("non-constant", |p| p.degree() >= Some(1))
+    }
+
+    /// Whether `b` divides `a`.
+    fn divides(b: &Poly<BigRational>, a: &Poly<BigRational>) -> bool {
+        a.div_rem(b).1.is_zero()
     }
 
     /// Evaluates a power-form polynomial.
@@ -228,11 +235,11 @@ mod polynomial_routes {
         #[test]
         fn gcd_contains_the_common_factor_and_divides_both(a in poly(4), b in poly(4), c in poly(3)) {
             let (ac, bc) = (mul(&a, &c), mul(&b, &c));
-            let g = gcd(ac.clone(), bc.clone());
-            prop_assert!(g.len() >= c.len());
-            prop_assert!(casteljau::poly::rem(ac, &g).is_empty());
-            prop_assert!(casteljau::poly::rem(bc, &g).is_empty());
-            prop_assert!(casteljau::poly::rem(g, &casteljau::poly::trim(c)).is_empty());
+            let g = ac.gcd(&bc);
+            prop_assert!(g.degree() >= c.degree());
+            prop_assert!(divides(&g, &ac));
+            prop_assert!(divides(&g, &bc));
+            prop_assert!(divides(&c, &g));
         }
 
         /// `square_free(a²·b)` has the roots of `a·b`, each simple: it divides `a·b` and shares
@@ -240,23 +247,24 @@ mod polynomial_routes {
         #[test]
         fn square_free_keeps_every_root_once(a in poly(3), b in poly(3)) {
             let p = mul(&mul(&a, &a), &b);
-            let sf = square_free(p);
+            let sf = p.square_free();
             let ab = mul(&a, &b);
-            prop_assert!(casteljau::poly::rem(ab, &sf).is_empty());
-            prop_assert_eq!(gcd(sf.clone(), casteljau::poly::derivative(&sf)).len(), 1);
-            prop_assert!(casteljau::poly::rem(square_free(a.clone()), &square_free(a.clone())).is_empty());
+            prop_assert!(divides(&sf, &ab));
+            prop_assert_eq!(sf.gcd(&sf.derivative()).degree(), Some(0));
+            prop_assert!(divides(&a.square_free(), &a.square_free()));
+            prop_assert_eq!(&p, &(&(&a * &a) * &b)); // the product agrees with the schoolbook one
         }
 
         /// Roots placed at rational points of [0, 1] (with multiplicity) are found exactly or
         /// isolated, each once; the isolating intervals hold a sign change.
         #[test]
         fn isolation_finds_planted_roots(roots in prop::collection::vec((0i64..=8, 1usize..=3), 1..=3)) {
-            let mut p = vec![rat(1)];
+            let mut p = Poly::constant(rat(1));
             let mut distinct: Vec<BigRational> = vec![];
             for (k, m) in &roots {
                 let r = BigRational::new((*k).into(), 8.into());
                 for _ in 0..*m {
-                    p = mul(&p, &[-r.clone(), rat(1)]);
+                    p = mul(&p, &Poly::new(vec![-r.clone(), rat(1)]));
                 }
                 if !distinct.contains(&r) {
                     distinct.push(r);
@@ -264,14 +272,14 @@ mod polynomial_routes {
             }
             distinct.sort();
             // to Bernstein form of degree deg p
-            let pts: Vec<casteljau::Point<BigRational>> = p.iter().map(|c| casteljau::Point::new(vec![c.clone()])).collect();
+            let pts: Vec<casteljau::Point<BigRational>> = p.coeffs().iter().map(|c| casteljau::Point::new(vec![c.clone()])).collect();
             let bern: Vec<BigRational> = casteljau::poly::from_power(&pts).into_iter().map(|q| q.coords[0].clone()).collect();
             let found = isolate_bernstein(&bern).unwrap();
             prop_assert_eq!(found.len(), distinct.len());
             for (f, r) in found.iter().zip(&distinct) {
                 match f {
                     Root::Exact(x) => prop_assert_eq!(x, r),
-                    Root::Isolated(lo, hi) => prop_assert!(lo < r && r < hi && eval(&p, r) == rat(0)),
+                    Root::Isolated(lo, hi) => prop_assert!(lo < r && r < hi && eval(p.coeffs(), r) == rat(0)),
                 }
             }
         }

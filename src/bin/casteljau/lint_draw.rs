@@ -3,6 +3,7 @@
 //! marks of its findings.
 
 use crate::lint_units::Unit;
+use casteljau::curve::BezierCurve;
 use casteljau::format::Segment;
 use casteljau::lint::{ExactValue, Finding, Kind};
 use casteljau::num::Point;
@@ -105,33 +106,21 @@ fn fmt(v: f64, dec: usize) -> String {
     if s == "-0" { "0".into() } else { s }
 }
 
-fn eval(pts: &[P], t: f64) -> P {
-    let mut q = pts.to_vec();
-    for k in (1..q.len()).rev() {
-        for j in 0..k {
-            q[j] = (q[j].0 + t * (q[j + 1].0 - q[j].0), q[j].1 + t * (q[j + 1].1 - q[j].1));
-        }
-    }
-    q[0]
+/// The binary64 curve of control points `pts`.
+fn curve(pts: &[P]) -> BezierCurve<f64> {
+    BezierCurve::new(pts.iter().map(|p| Point::new(vec![p.0, p.1])).collect()).expect("a control point")
 }
 
-/// The control points of the piece `[a, b]` of a Bézier curve.
+fn eval(pts: &[P], t: f64) -> P {
+    let p = curve(pts).eval(&t);
+    (p.coords[0], p.coords[1])
+}
+
+/// The control points of the piece `[a, b]` of a Bézier curve, running from the smaller
+/// parameter to the larger.
 fn piece(pts: &[P], a: f64, b: f64) -> Vec<P> {
     let (a, b) = if a <= b { (a, b) } else { (b, a) };
-    // the blossom: control point j of the piece is the curve's blossom at (a, ..., a, b, ..., b)
-    let n = pts.len() - 1;
-    (0..=n)
-        .map(|j| {
-            let mut q = pts.to_vec();
-            for (step, k) in (1..=n).rev().enumerate() {
-                let t = if step < n - j { a } else { b };
-                for i in 0..k {
-                    q[i] = (q[i].0 + t * (q[i + 1].0 - q[i].0), q[i].1 + t * (q[i + 1].1 - q[i].1));
-                }
-            }
-            q[0]
-        })
-        .collect()
+    curve(pts).subsegment(&a, &b).points().iter().map(|p| (p.coords[0], p.coords[1])).collect()
 }
 
 /// A drawing's scale: user units per CSS pixel and the decimals of its numbers.

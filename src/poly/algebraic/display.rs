@@ -9,7 +9,7 @@ use super::evaluate::isolate_power;
 use super::{RealAlgebraic, Repr};
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, rat};
-use crate::poly::polynomial::quadratic_roots;
+use crate::poly::polynomial::{Poly, quadratic_roots};
 use crate::poly::roots::Root;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -73,36 +73,9 @@ impl RealAlgebraic {
     }
 }
 
-/// `c_n t^n + … + c_0` with integer coefficients.
+/// `c_n*t^n + … + c_0` with integer coefficients (the one printer, highest degree first).
 fn poly_text(p: &[BigInt]) -> String {
-    let mut s = String::new();
-    for (k, c) in p.iter().enumerate().rev() {
-        if c.is_zero() {
-            continue;
-        }
-        let neg = c.is_negative();
-        let mag = c.abs();
-        s.push_str(match (s.is_empty(), neg) {
-            (true, true) => "-",
-            (true, false) => "",
-            (false, true) => " - ",
-            (false, false) => " + ",
-        });
-        let one = mag.is_one();
-        match k {
-            0 => s.push_str(&mag.to_string()),
-            _ => {
-                if !one {
-                    s.push_str(&format!("{mag}*"));
-                }
-                s.push('t');
-                if k > 1 {
-                    s.push_str(&format!("^{k}"));
-                }
-            }
-        }
-    }
-    s
+    Poly::new(p.iter().map(|c| BigRational::from_integer(c.clone())).collect()).text_descending("t").to_string()
 }
 
 impl RealAlgebraic {
@@ -192,7 +165,7 @@ mod tests {
             if p[n] == rat(0) {
                 continue;
             }
-            for x in RealAlgebraic::real_roots(&p) {
+            for x in RealAlgebraic::real_roots(&crate::poly::Poly::new(p.clone())) {
                 let Some((lo, hi)) = x.canonical_interval() else { continue };
                 let text = x.to_string();
                 let Repr::Root { poly, .. } = &x.0 else { continue };
@@ -202,7 +175,10 @@ mod tests {
                 // the index among the real roots of the displayed polynomial (rational roots of p
                 // are divided out of it)
                 let q: Vec<BigRational> = poly.iter().map(|c| BigRational::from_integer(c.clone())).collect();
-                let i = RealAlgebraic::real_roots(&q).iter().position(|y| *y == x).expect("a root of its polynomial");
+                let i = RealAlgebraic::real_roots(&crate::poly::Poly::new(q.clone()))
+                    .iter()
+                    .position(|y| *y == x)
+                    .expect("a root of its polynomial");
                 assert!(text.starts_with(&format!("root {} of", i + 1)), "{text} is root {}", i + 1);
                 assert!(
                     x.clone().cmp_rational(&lo) == Ordering::Greater && x.clone().cmp_rational(&hi) == Ordering::Less

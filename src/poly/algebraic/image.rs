@@ -8,7 +8,8 @@ use super::evaluate::{shifted_integer, sign_at, value_at};
 use super::{RealAlgebraic, Repr};
 use crate::num::scalar::{Exact, rat, ratio_to_f64};
 use crate::poly::bernstein::power_to_bernstein_matrix;
-use crate::poly::polynomial::{gcd_integer, primitive_part, square_free_integer, to_integer};
+use crate::poly::integer::{gcd_integer, primitive_part, square_free_integer};
+use crate::poly::polynomial::Poly;
 use crate::poly::resultant::{resultant_in_v, zv};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -47,13 +48,12 @@ impl RealAlgebraic {
     /// The sign of `q(x)` for this number `x` (`q` in power form), exactly: zero when `q` and
     /// the number's polynomial share a root in its interval, otherwise the sign on an interval
     /// refined until `q` has no root in it.
-    pub fn sign_of(&self, q: &[BigRational]) -> Ordering {
-        let q = crate::poly::polynomial::trim(q.to_vec());
-        if q.is_empty() {
+    pub fn sign_of(&self, q: &Poly<BigRational>) -> Ordering {
+        if q.is_zero() {
             return Ordering::Equal;
         }
-        let qi = primitive_part(to_integer(&q));
-        let scale_sign = q.last().expect("non-zero").sign();
+        let qi = primitive_part(q.to_integer());
+        let scale_sign = q.coeffs().last().expect("non-zero").sign();
         let adjust = |o: Ordering| if scale_sign == Ordering::Less { o.reverse() } else { o };
         let mut x = self.clone();
         if let Some(r) = x.to_rational() {
@@ -72,7 +72,7 @@ impl RealAlgebraic {
                 return adjust(sign_at(&qi, r));
             }
             let (lo, hi) = x.interval();
-            let qr: Vec<BigRational> = qi.iter().map(|c| BigRational::from_integer(c.clone())).collect();
+            let qr = Poly::new(qi.iter().map(|c| BigRational::from_integer(c.clone())).collect());
             if Self::roots_in(&qr, &lo, &hi).is_empty() {
                 return adjust(sign_at(&qi, &lo));
             }
@@ -91,27 +91,29 @@ impl RealAlgebraic {
     /// # Example
     /// ```
     /// use casteljau::{rat, poly::RealAlgebraic};
-    /// let s2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone(); // √2
+    /// use casteljau::poly::Poly;
+    /// let s2 = RealAlgebraic::real_roots(&Poly::new(vec![rat(-2), rat(0), rat(1)]))[1].clone(); // √2
     /// // (x² + x)/(x + 1) = x; x³ = 2√2
-    /// assert_eq!(s2.map_rational(&[rat(0), rat(1), rat(1)], &[rat(1), rat(1)]), s2);
-    /// assert_eq!(s2.map_rational(&[rat(0), rat(0), rat(0), rat(1)], &[rat(1)]).to_string(), "2*sqrt(2)");
+    /// let (x2_plus_x, x_plus_1) = (Poly::new(vec![rat(0), rat(1), rat(1)]), Poly::new(vec![rat(1), rat(1)]));
+    /// assert_eq!(s2.map_rational(&x2_plus_x, &x_plus_1), s2);
+    /// let cube = Poly::new(vec![rat(0), rat(0), rat(0), rat(1)]);
+    /// assert_eq!(s2.map_rational(&cube, &Poly::constant(rat(1))).to_string(), "2*sqrt(2)");
     /// ```
-    pub fn map_rational(&self, num: &[BigRational], den: &[BigRational]) -> RealAlgebraic {
-        let eval = |p: &[BigRational], x: &BigRational| p.iter().rev().fold(rat(0), |acc, c| acc * x + c);
+    pub fn map_rational(&self, num: &Poly<BigRational>, den: &Poly<BigRational>) -> RealAlgebraic {
         if let Some(x) = self.to_rational() {
-            let d = eval(den, x);
+            let d = den.eval(x);
             assert!(d != rat(0), "the denominator vanishes at {x}");
-            return (eval(num, x) / d).into();
+            return (num.eval(x) / d).into();
         }
-        let num = crate::poly::polynomial::trim(num.to_vec());
-        let den = crate::poly::polynomial::trim(den.to_vec());
+        let (num_p, den_p) = (num, den);
+        let (num, den) = (num.coeffs(), den.coeffs());
         assert!(!den.is_empty(), "zero denominator");
         // integer numerator and denominator with one common scale
-        let scale = num.iter().chain(&den).fold(BigInt::one(), |acc, c| num_integer::Integer::lcm(&acc, c.denom()));
+        let scale = num.iter().chain(den).fold(BigInt::one(), |acc, c| num_integer::Integer::lcm(&acc, c.denom()));
         let int = |p: &[BigRational]| -> Vec<BigInt> {
             p.iter().map(|c| (c * BigRational::from_integer(scale.clone())).to_integer()).collect()
         };
-        let (n_int, d_int) = (int(&num), int(&den));
+        let (n_int, d_int) = (int(num), int(den));
         let mut p = self.polynomial();
         let r = loop {
             let len = n_int.len().max(d_int.len());
@@ -135,10 +137,9 @@ impl RealAlgebraic {
             }
             // num and den share a root with p (not x: den(x) ≠ 0): divide it out
             let g = gcd_integer(&p, &gcd_integer(&n_int, &d_int));
-            p = crate::poly::polynomial::exact_quotient_integer(p, &g);
+            p = crate::poly::integer::exact_quotient_integer(p, &g);
         };
-        let r: Vec<BigRational> =
-            square_free_integer(primitive_part(r)).into_iter().map(BigRational::from_integer).collect();
+        let r = Poly::new(square_free_integer(primitive_part(r)).into_iter().map(BigRational::from_integer).collect());
         // both in one degree, so that their Bernstein coefficients pair up
         let degree = num.len().max(den.len());
         let pad = |p: &[BigRational]| -> Vec<BigRational> {
@@ -146,13 +147,12 @@ impl RealAlgebraic {
             v.resize(degree, rat(0));
             v
         };
-        let (num_d, den_d) = (pad(&num), pad(&den));
+        let (num_d, den_d) = (pad(num), pad(den));
         let mut x = self.clone();
         loop {
             let (lo, hi) = x.interval();
             if let Some(xr) = x.to_rational() {
-                let d = eval(&den, xr);
-                return (eval(&num, xr) / d).into();
+                return (num_p.eval(xr) / den_p.eval(xr)).into();
             }
             let bd = bernstein_on(&den_d, &lo, &hi);
             let positive = bd.iter().all(|c| c.sign() == Ordering::Greater);
@@ -185,7 +185,7 @@ impl RealAlgebraic {
     /// ```
     /// use casteljau::{rat, poly::RealAlgebraic};
     /// use num_bigint::BigInt;
-    /// let s2 = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone(); // √2
+    /// let s2 = RealAlgebraic::real_roots(&casteljau::poly::Poly::new(vec![rat(-2), rat(0), rat(1)]))[1].clone(); // √2
     /// let b = |c: &[i64]| c.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
     /// // (x³ + 1)/3 at √2 = 1.27614237491539669920…, correctly rounded; the f64 expression
     /// // (2.0 * 2f64.sqrt() + 1.0) / 3.0 rounds three times and lands one f64 higher
@@ -200,7 +200,7 @@ impl RealAlgebraic {
             return ratio_to_f64(&(value_at(num, x) / d));
         }
         self.map_rational_by_enclosure(num, den).unwrap_or_else(|| {
-            let q = |p: &[BigInt]| p.iter().map(|c| BigRational::from_integer(c.clone())).collect::<Vec<_>>();
+            let q = |p: &[BigInt]| Poly::new(p.iter().map(|c| BigRational::from_integer(c.clone())).collect());
             self.map_rational(&q(num), &q(den)).to_f64()
         })
     }
@@ -336,8 +336,8 @@ mod tests {
             } else {
                 vec![BigInt::from(40), BigInt::from(next(9)), BigInt::from(next(9))]
             };
-            let q = |p: &[BigInt]| p.iter().map(|c| BigRational::from_integer(c.clone())).collect::<Vec<_>>();
-            for r in RealAlgebraic::real_roots(&p) {
+            let q = |p: &[BigInt]| Poly::new(p.iter().map(|c| BigRational::from_integer(c.clone())).collect());
+            for r in RealAlgebraic::real_roots(&Poly::new(p)) {
                 if r.sign_of(&q(&den)) == Ordering::Equal {
                     continue;
                 }

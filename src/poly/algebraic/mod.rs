@@ -28,14 +28,14 @@
 //! use casteljau::poly::RealAlgebraic;
 //! use casteljau::{rat, ratio};
 //! // t² − 2: √2 and −√2; t³ − 2: ∛2
-//! let r = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)]);
+//! let r = RealAlgebraic::real_roots(&casteljau::poly::Poly::new(vec![rat(-2), rat(0), rat(1)]));
 //! assert_eq!(r.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["-sqrt(2)", "sqrt(2)"]);
-//! let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
+//! let c = RealAlgebraic::real_roots(&casteljau::poly::Poly::new(vec![rat(-2), rat(0), rat(0), rat(1)]));
 //! assert_eq!(c[0].to_string(), "root 1 of t^3 - 2 in [5/4, 21/16]");
 //! assert_eq!(c[0].to_f64(), 2f64.cbrt());
 //! assert!(c[0] < r[1] && r[0] < RealAlgebraic::from(ratio(-1, 1)));
 //! // (2t − 1)(t² − 3): the rational root is a rational
-//! let m = RealAlgebraic::real_roots(&[rat(3), rat(-6), rat(-1), rat(2)]);
+//! let m = RealAlgebraic::real_roots(&casteljau::poly::Poly::new(vec![rat(3), rat(-6), rat(-1), rat(2)]));
 //! assert_eq!(m[1].to_string(), "1/2");
 //! ```
 //!
@@ -64,7 +64,8 @@ pub(crate) use rounding::{f64_cell, newton_step_f64};
 pub(crate) use crate::poly::resultant::{resultant_in_v, resultant_zv, zv};
 
 use crate::num::scalar::rat;
-use crate::poly::polynomial::{derivative_integer, gcd_integer, primitive_part, square_free_integer, to_integer};
+use crate::poly::integer::{derivative_integer, gcd_integer, primitive_part, square_free_integer};
+use crate::poly::polynomial::Poly;
 use crate::poly::roots::Root;
 use dyadic::qcmp;
 use evaluate::isolate_power;
@@ -103,29 +104,27 @@ impl RealAlgebraic {
     ///
     /// # Panics
     /// **Panics for the zero polynomial** (every number is a root).
-    pub fn real_roots(p: &[BigRational]) -> Vec<RealAlgebraic> {
-        let p = crate::poly::polynomial::trim(p.to_vec());
-        assert!(!p.is_empty(), "the zero polynomial has every number as a root");
-        if p.len() == 1 {
+    pub fn real_roots(p: &Poly<BigRational>) -> Vec<RealAlgebraic> {
+        assert!(!p.is_zero(), "the zero polynomial has every number as a root");
+        if p.degree() == Some(0) {
             return vec![];
         }
-        let b = cauchy_bound(&p);
-        Self::roots_in(&p, &-b.clone(), &b)
+        let b = cauchy_bound(p.coeffs());
+        Self::roots_in(p, &-b.clone(), &b)
     }
 
     /// The distinct real roots of `p` in the closed interval `[lo, hi]`, ascending.
     ///
     /// # Panics
     /// **Panics for the zero polynomial** or `lo > hi`.
-    pub fn roots_in(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<RealAlgebraic> {
-        let p = crate::poly::polynomial::trim(p.to_vec());
-        assert!(!p.is_empty(), "the zero polynomial has every number as a root");
+    pub fn roots_in(p: &Poly<BigRational>, lo: &BigRational, hi: &BigRational) -> Vec<RealAlgebraic> {
+        assert!(!p.is_zero(), "the zero polynomial has every number as a root");
         assert!(lo <= hi, "empty interval [{lo}, {hi}]");
         if lo == hi {
-            let ip = primitive_part(to_integer(&p));
+            let ip = primitive_part(p.to_integer());
             return if sign_at(&ip, lo) == Ordering::Equal { vec![lo.clone().into()] } else { vec![] };
         }
-        Self::roots_of_square_free(square_free_integer(primitive_part(to_integer(&p))), lo, hi)
+        Self::roots_of_square_free(square_free_integer(primitive_part(p.to_integer())), lo, hi)
     }
 
     /// [`Self::roots_in`] for a square-free primitive integer polynomial (`lo < hi`).
@@ -269,6 +268,37 @@ impl RealAlgebraic {
         }
     }
 
+    /// A rational strictly between `a < b`: the intervals are bisected until `a`'s upper end
+    /// lies below `b`'s lower end, then the simplest rational (smallest denominator) of that
+    /// gap, or its midpoint when the simplest is one of the gap's ends (which may be `a` or `b`
+    /// itself).
+    ///
+    /// Terminates for `a < b`: each bisection halves an irrational number's interval and a
+    /// rational one is exact, so the gap opens after finitely many steps.
+    ///
+    /// # Panics
+    /// **Panics (in debug builds) unless `a < b`**; with `a ≥ b` it would not terminate.
+    ///
+    /// ```
+    /// use casteljau::{rat, ratio, poly::{Poly, RealAlgebraic}};
+    /// let s2 = RealAlgebraic::real_roots(&Poly::new(vec![rat(-2), rat(0), rat(1)]))[1].clone(); // √2
+    /// assert_eq!(RealAlgebraic::rational_between(&s2, &rat(2).into()), ratio(7, 4));
+    /// assert_eq!(RealAlgebraic::rational_between(&rat(0).into(), &rat(1).into()), ratio(1, 2));
+    /// ```
+    pub fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> BigRational {
+        debug_assert!(a < b, "rational_between needs a < b");
+        let (mut a, mut b) = (a.clone(), b.clone());
+        loop {
+            let (ah, bl) = (a.interval().1, b.interval().0);
+            if ah < bl {
+                let r = simplest_rational(&ah, &bl);
+                return if r == ah || r == bl { (ah + bl) / rat(2) } else { r };
+            }
+            a.bisect();
+            b.bisect();
+        }
+    }
+
     /// Halves the interval once (it may become the rational midpoint itself).
     pub fn bisect(&mut self) {
         let Repr::Root { poly, lo, hi } = &mut self.0 else { return };
@@ -354,9 +384,9 @@ impl RealAlgebraic {
     /// ```
     /// use casteljau::{rat, poly::RealAlgebraic};
     /// // a root of t³ − 2 (irreducible: degree 3); √2 as a root of t⁴ − 4 = (t² − 2)(t² + 2): 2
-    /// let c = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(0), rat(1)]);
+    /// let c = RealAlgebraic::real_roots(&casteljau::poly::Poly::new(vec![rat(-2), rat(0), rat(0), rat(1)]));
     /// assert_eq!(c[0].degree_lower_bound(10), 3);
-    /// let q = RealAlgebraic::real_roots(&[rat(-4), rat(0), rat(0), rat(0), rat(1)]);
+    /// let q = RealAlgebraic::real_roots(&casteljau::poly::Poly::new(vec![rat(-4), rat(0), rat(0), rat(0), rat(1)]));
     /// assert_eq!(q[1].degree_lower_bound(10), 2);
     /// ```
     pub fn degree_lower_bound(&self, enough: usize) -> usize {
@@ -443,12 +473,13 @@ mod tests {
     #[test]
     fn algebraic_order_and_equality_across_polynomials() {
         // √2 as a root of t² − 2 and of t⁴ − 4 (another polynomial): equal
-        let a = RealAlgebraic::real_roots(&[rat(-2), rat(0), rat(1)])[1].clone();
-        let b = RealAlgebraic::real_roots(&[rat(-4), rat(0), rat(0), rat(0), rat(1)])[1].clone();
+        let a = RealAlgebraic::real_roots(&crate::poly::Poly::new(vec![rat(-2), rat(0), rat(1)]))[1].clone();
+        let b = RealAlgebraic::real_roots(&crate::poly::Poly::new(vec![rat(-4), rat(0), rat(0), rat(0), rat(1)]))[1]
+            .clone();
         assert_eq!(a, b);
         // the polynomial is kept as given (square-free, not factored): √2 is spelled as a root of it
         assert_eq!(b.to_string(), "root 2 of t^4 - 4 in [11/8, 23/16]");
-        let c = RealAlgebraic::real_roots(&[rat(-3), rat(0), rat(1)])[1].clone();
+        let c = RealAlgebraic::real_roots(&crate::poly::Poly::new(vec![rat(-3), rat(0), rat(1)]))[1].clone();
         assert!(a < c);
         assert_eq!(a.sign(), Ordering::Greater);
         assert_eq!(a.to_f64(), 2f64.sqrt());

@@ -8,7 +8,7 @@ use super::evaluate::sign_at;
 use super::rounding::f64_root_candidate;
 use super::{RealAlgebraic, Repr};
 use crate::num::scalar::{Exact, rat, ratio_to_f64};
-use crate::poly::polynomial::primitive_part;
+use crate::poly::integer::primitive_part;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -70,7 +70,7 @@ fn no_root_mod<const Q: u64>(r: &[u64]) -> bool {
 /// (`q` divides the leading coefficient by Gauss's lemma, so the quotient is integral).
 pub(super) fn without_rational_root(p: Vec<BigInt>, x: &BigRational) -> Vec<BigInt> {
     let linear = [-x.numer().clone(), x.denom().clone()];
-    primitive_part(crate::poly::polynomial::exact_quotient_integer(p, &linear))
+    primitive_part(crate::poly::integer::exact_quotient_integer(p, &linear))
 }
 
 /// The rational root of `p` in `(a, b)` when a guess finds it: the simplest rational near an

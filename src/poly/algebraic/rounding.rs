@@ -9,7 +9,7 @@
 use super::dyadic::{aligned, dyadic, dyadic_parts, exact_f64, homogeneous_value, qmax, qmin};
 use super::{RealAlgebraic, Repr};
 use crate::num::scalar::ratio_to_f64;
-use crate::poly::polynomial::derivative_integer;
+use crate::poly::integer::derivative_integer;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -162,8 +162,12 @@ pub(super) fn f64_root_candidate(p: &[BigInt], lo: f64, hi: f64) -> Option<f64> 
     let bits = p.iter().map(BigInt::bits).max().unwrap_or(0);
     let shift = bits.saturating_sub(60);
     let c: Vec<f64> = p.iter().map(|x| (x >> shift).to_f64().filter(|v| v.is_finite())).collect::<Option<_>>()?;
-    let d: Vec<f64> = c.iter().enumerate().skip(1).map(|(k, v)| v * k as f64).collect();
-    let horner = |q: &[f64], x: f64| q.iter().rev().fold(0.0, |acc, v| acc * x + v);
+    let (c, d) = {
+        let c = crate::poly::Poly::new(c);
+        let d = c.derivative();
+        (c, d)
+    };
+    let horner = |q: &crate::poly::Poly<f64>, x: f64| q.eval(&x);
     let (mut a, mut b) = (lo, hi);
     let sa = horner(&c, a).signum();
     let mut x = a + (b - a) / 2.0;
@@ -384,7 +388,7 @@ mod tests {
             if p[n] == rat(0) {
                 continue;
             }
-            for r in RealAlgebraic::real_roots(&p) {
+            for r in RealAlgebraic::real_roots(&crate::poly::Poly::new(p.clone())) {
                 assert_eq!(r.to_f64().to_bits(), r.to_f64_by_bisection().to_bits(), "{r}");
                 let (narrow, f) = r.narrowed_with_f64();
                 assert_eq!((narrow == r, f.to_bits()), (true, r.to_f64().to_bits()), "{r}");
