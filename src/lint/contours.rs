@@ -21,7 +21,7 @@
 //! encloses nothing (a stroke, an SVG `<line>`) and is left out.
 
 use super::exact::{ExactValue, segment_area};
-use super::{Finding, Glyph, Kind, LintOptions, SharedPiece};
+use super::{Evidence, Finding, Glyph, Kind, LintOptions, SharedPiece};
 use crate::error::Result;
 use crate::format::close_for_fill;
 use crate::intersect::ClosedPath;
@@ -113,7 +113,7 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
                 let list: Vec<String> = mine.iter().map(|(_, s, t)| format!("segment {s} at t = {t}")).collect();
                 let message =
                     format!("contour {} meets itself at ({}, {}): {}", contour_of[i], at[0], at[1], list.join(", "));
-                let mut f = Finding::new(Kind::SelfIntersection, message).point_at(at);
+                let mut f = Finding::new(Evidence::SelfIntersection, message).point_at(at);
                 f.contour = Some(contour_of[i]);
                 // a segment of the contour, not the line that closes an open one for fill
                 let stored = g.contours[contour_of[i]].segments.len();
@@ -176,9 +176,7 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
                 };
                 let twice = if i == j { " twice" } else { "" };
                 let message = format!("{whom} the piece from ({}, {}) to ({}, {}){twice}", a[0], a[1], b[0], b[1]);
-                let mut f = Finding::new(Kind::OverlappingSegments, message).point_at(a).point_at(b);
-                f.contours = Some([contour_of[i], contour_of[j]]);
-                f.shared = pieces
+                let shared = pieces
                     .iter()
                     .map(|(k, lo, hi, fwd)| {
                         let s = &arr.segs[*k];
@@ -191,6 +189,8 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
                         }
                     })
                     .collect();
+                let mut f = Finding::new(Evidence::OverlappingSegments { shared }, message).point_at(a).point_at(b);
+                f.contours = Some([contour_of[i], contour_of[j]]);
                 out.push(f);
             }
         }
@@ -209,17 +209,17 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
             }
         }
         for ((i, j), vs) in contacts {
-            let kind = if crosses(i, j) { Kind::Overlap } else { Kind::Touching };
-            if !o.wants(kind) {
+            let evidence = if crosses(i, j) { Evidence::Overlap } else { Evidence::Touching };
+            if !o.wants(evidence.kind()) {
                 continue;
             }
             let points: Vec<[ExactValue; 2]> = vs.iter().map(|&v| vertex_point(v)).collect();
             let list: Vec<String> = points.iter().take(4).map(|p| format!("({}, {})", p[0], p[1])).collect();
             let more = if points.len() > 4 { format!(" and {} more", points.len() - 4) } else { String::new() };
-            let verb = if kind == Kind::Overlap { "cross; they meet" } else { "touch without crossing" };
+            let verb = if evidence == Evidence::Overlap { "cross; they meet" } else { "touch without crossing" };
             let message =
                 format!("contours {} and {} {verb} at {}{more}", contour_of[i], contour_of[j], list.join(", "));
-            let mut f = Finding::new(kind, message);
+            let mut f = Finding::new(evidence, message);
             for p in points {
                 f = f.point_at(p);
             }
@@ -258,14 +258,12 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
                 if depth == 1 { "" } else { "s" },
                 name(expected)
             );
-            let mut f = Finding::new(Kind::Direction, message);
+            let evidence = Evidence::Direction { area: area.clone(), depth, expected };
+            let mut f = Finding::new(evidence, message);
             if let Some(p) = start {
                 f = f.point_at(p);
             }
             f.contour = Some(contour_of[i]);
-            f.area = Some(area.clone());
-            f.depth = Some(depth);
-            f.expected = Some(expected);
             out.push(f);
         }
     }

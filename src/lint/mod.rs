@@ -3,7 +3,9 @@
 //! Every finding is a statement about exact numbers: the outline's control points are taken as
 //! the exact rationals the file stores (see [`crate::format`]), and each check is an exact sign
 //! or an exact equality. A finding carries its exact evidence (points and parameters as
-//! [`ExactValue`]s, serialized as strings) and the same numbers as `f64` for display.
+//! [`ExactValue`]s, serialized as strings) and the same numbers as `f64` for display; what only
+//! its kind has (a contour's area, an extremum's axis, a box) is its [`Evidence`], one variant
+//! per kind.
 //!
 //! # The kinds
 //! | kind | severity | what is decided |
@@ -40,28 +42,33 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::lint::{Glyph, Kind, LintOptions, lint};
+//! use casteljau::lint::{Axis, Evidence, Glyph, Kind, LintOptions, lint};
 //! use casteljau::num::NumberMode;
 //! use casteljau::shape::Direction;
 //! // a counter-clockwise square, and a curve with its top (t = 1/2) not a node
 //! let contours = casteljau::format::parse_path("M0 0 H100 V100 H0 Z M200 0 Q250 100 300 0 Z", NumberMode::Exact).unwrap();
 //! let glyph = Glyph::new(contours);
 //! let findings = lint(&glyph, &LintOptions::new(Direction::Ccw)).unwrap();
-//! let kinds: Vec<Kind> = findings.iter().map(|f| f.kind).collect();
+//! let kinds: Vec<Kind> = findings.iter().map(|f| f.kind()).collect();
 //! // the curve contour is clockwise (the area under a cap closed by a line drawn right to left)
 //! assert_eq!(kinds, [Kind::Direction, Kind::MissingExtremum]);
 //! let top = &findings[1];
 //! assert_eq!((top.contour, top.index), (Some(1), Some(0)));
 //! assert_eq!(top.parameters[0].to_string(), "1/2");
 //! assert_eq!(top.at[0][0].to_string() + ", " + &top.at[0][1].to_string(), "250, 50");
+//! // the evidence only a missing extremum has: y is extreme, 50 units above the end points
+//! let Evidence::MissingExtremum { axis, extent } = &top.evidence else { unreachable!() };
+//! assert_eq!((*axis, extent.to_string()), (Axis::Y, "50".to_string()));
 //! ```
 
 mod contours;
 mod exact;
+mod finding;
 mod nodes;
 mod segments;
 
 pub use exact::ExactValue;
+pub use finding::{Axis, Evidence, Finding, SharedPiece};
 
 use crate::error::{Error, Result};
 use crate::format::{Contour, PointNumbers, Segment, point_numbers};
@@ -239,163 +246,6 @@ impl Severity {
     }
 }
 
-/// A piece of a segment, `[from, to]` in its parameter, shared with another contour or drawn
-/// twice (the evidence of `overlapping_segments`). JSON: `contour`, `segment`, `from`, `to`.
-///
-/// # Example
-/// ```
-/// use casteljau::lint::{Glyph, Kind, LintOptions, lint};
-/// // the right square's left edge covers the middle of the left square's right edge
-/// let c = casteljau::format::parse_path("M0 0 H4 V4 H0 Z M4 1 H8 V3 H4 Z", casteljau::num::NumberMode::Exact).unwrap();
-/// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap();
-/// let shared = &f.iter().find(|f| f.kind == Kind::OverlappingSegments).unwrap().shared;
-/// let spans: Vec<String> = shared.iter().map(|p| format!("{} {} {}..{}", p.contour, p.segment, p.from, p.to)).collect();
-/// assert_eq!(spans, ["0 1 1/4..3/4", "1 3 1..0"]);
-/// ```
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SharedPiece {
-    /// The contour.
-    pub contour: usize,
-    /// The segment in the contour.
-    pub segment: usize,
-    /// Where the piece starts on the segment.
-    pub from: ExactValue,
-    /// Where it ends (`from > to`: the piece runs against the edge it shares).
-    pub to: ExactValue,
-}
-
-/// One finding, located in its glyph: `contour` (or `contours` for a pair), `index` (the
-/// segment in the contour) and `point` (the node's index among the contour's stored points,
-/// see [`crate::format::PointNumbers`]), with its exact evidence. Absent fields are not
-/// serialized; the per-kind fields are listed with each field.
-///
-/// # Example
-/// ```
-/// use casteljau::lint::{Glyph, LintOptions, lint};
-/// let c = casteljau::format::parse_path("M0 0 H5 H10 V10 H0 Z", casteljau::num::NumberMode::Exact).unwrap();
-/// let f = &lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap()[0];
-/// assert_eq!(
-///     serde_json::to_string(f).unwrap(),
-///     r#"{"kind":"collinear_points","severity":"info","rounding":false,"contour":0,"index":1,"point":1,"at":[["5","0"]],"at_float":[[5.0,0.0]],"parameters":[],"message":"the node (5, 0) lies between two lines on one line: it is redundant"}"#
-/// );
-/// ```
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Finding {
-    /// The kind.
-    pub kind: Kind,
-    /// The severity ([`Kind::severity`], or `info` when rounding explains it).
-    pub severity: Severity,
-    /// Explained by rounding to the grid (see the module documentation).
-    pub rounding: bool,
-    /// The contour.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub contour: Option<usize>,
-    /// The two contours of `overlap`, `touching` and `overlapping_segments` (`[i, i]` for one
-    /// contour drawing a piece twice).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub contours: Option<[usize; 2]>,
-    /// The segment in the contour (for a node: the segment that starts there).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub index: Option<usize>,
-    /// The node's index among the contour's stored points.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub point: Option<usize>,
-    /// Exact points: the crossing or contact points, the extremum, the node, the cusp, the
-    /// loop's double point, the corners of a box.
-    pub at: Vec<[ExactValue; 2]>,
-    /// `at` as `f64`s.
-    pub at_float: Vec<[f64; 2]>,
-    /// Exact parameters on the segment `index`.
-    pub parameters: Vec<ExactValue>,
-    /// `direction`: the contour's exact signed area (positive counter-clockwise, y up).
-    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "crate::num::serial::option_string")]
-    pub area: Option<BigRational>,
-    /// `direction`: how many other contours contain this one.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub depth: Option<usize>,
-    /// `direction`: the orientation expected at that depth.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub expected: Option<Direction>,
-    /// `missing_extremum`: `x` (a vertical tangent) or `y` (a horizontal one).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub axis: Option<&'static str>,
-    /// `missing_extremum`: how far the extreme coordinate lies beyond the range of the
-    /// segment's end points (negative: inside it).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub extent: Option<ExactValue>,
-    /// `kink`: the turn at the node in degrees (`f64`, for display; the decision is exact).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub turn_degrees_float: Option<f64>,
-    /// `overlapping_segments`: the shared pieces, one per contour (or per pass).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub shared: Vec<SharedPiece>,
-    /// `bbox`: the stored box `[x_min, y_min, x_max, y_max]`.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub stored: Vec<ExactValue>,
-    /// `bbox`: the box it should be (of the points, or of the exact outline).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub computed: Vec<ExactValue>,
-    /// One line saying what is wrong, with the figures.
-    pub message: String,
-}
-
-impl Finding {
-    /// A finding of `kind` with its default severity and no evidence yet.
-    pub(crate) fn new(kind: Kind, message: String) -> Self {
-        Finding {
-            kind,
-            severity: kind.severity(),
-            rounding: false,
-            contour: None,
-            contours: None,
-            index: None,
-            point: None,
-            at: vec![],
-            at_float: vec![],
-            parameters: vec![],
-            area: None,
-            depth: None,
-            expected: None,
-            axis: None,
-            extent: None,
-            turn_degrees_float: None,
-            shared: vec![],
-            stored: vec![],
-            computed: vec![],
-            message,
-        }
-    }
-
-    pub(crate) fn rounded(mut self, rounding: bool) -> Self {
-        self.rounding = rounding;
-        if rounding {
-            self.severity = Severity::Info;
-        }
-        self
-    }
-
-    pub(crate) fn point_at(mut self, p: [ExactValue; 2]) -> Self {
-        self.at_float.push([p[0].to_f64(), p[1].to_f64()]);
-        self.at.push(p);
-        self
-    }
-
-    /// Whether this finding fails a run that denies `denied` (findings rounding explains never
-    /// do).
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::lint::{Glyph, Kind, LintOptions, lint};
-    /// let c = casteljau::format::parse_path("M0 0 H10 H10 V10 Z", casteljau::num::NumberMode::Exact).unwrap();
-    /// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap();
-    /// assert_eq!(f[0].kind, Kind::ZeroLengthSegment);
-    /// assert!(f[0].fails(&[Kind::ZeroLengthSegment]) && !f[0].fails(&[Kind::Kink]));
-    /// ```
-    pub fn fails(&self, denied: &[Kind]) -> bool {
-        !self.rounding && denied.contains(&self.kind)
-    }
-}
-
 /// One glyph (or SVG element) to check: its contours, each with the numbering of its stored
 /// points, and, for `glyf` fonts, the bounding boxes the font stores.
 #[derive(Clone, Debug, Default)]
@@ -512,14 +362,14 @@ impl LintOptions {
 ///
 /// # Example
 /// ```
-/// use casteljau::lint::{Glyph, Kind, LintOptions, lint};
+/// use casteljau::lint::{Evidence, Glyph, Kind, LintOptions, lint};
 /// use casteljau::shape::Direction;
 /// // two squares side by side sharing the edge x = 10
 /// let c = casteljau::format::parse_path("M0 0 H10 V10 H0 Z M10 0 H20 V10 H10 Z", casteljau::num::NumberMode::Exact).unwrap();
 /// let f = lint(&Glyph::new(c), &LintOptions::new(Direction::Ccw)).unwrap();
-/// let kinds: Vec<Kind> = f.iter().map(|f| f.kind).collect();
+/// let kinds: Vec<Kind> = f.iter().map(|f| f.kind()).collect();
 /// assert_eq!(kinds, [Kind::Touching, Kind::OverlappingSegments]);
-/// assert_eq!(f[1].shared.len(), 2);
+/// assert!(matches!(&f[1].evidence, Evidence::OverlappingSegments { shared } if shared.len() == 2));
 /// ```
 pub fn lint(glyph: &Glyph, options: &LintOptions) -> Result<Vec<Finding>> {
     // the checks are written for lines, quadratics and cubics (what fonts and SVG hold)
@@ -546,7 +396,7 @@ pub fn lint(glyph: &Glyph, options: &LintOptions) -> Result<Vec<Finding>> {
                 for mut f in segments::check(ps, options) {
                     f.contour = Some(ci);
                     f.index = Some(si);
-                    if f.point.is_none() && matches!(f.kind, Kind::ZeroLengthSegment) {
+                    if f.point.is_none() && matches!(f.evidence, Evidence::ZeroLengthSegment) {
                         f.point = point;
                     }
                     out.push(f);
@@ -563,7 +413,7 @@ pub fn lint(glyph: &Glyph, options: &LintOptions) -> Result<Vec<Finding>> {
     }
     // contour-wide findings (no segment) first within their contour
     let place =
-        |f: &Finding| (f.contour.or(f.contours.map(|c| c[0])), f.contours.map(|c| c[1]), f.index, f.point, f.kind);
+        |f: &Finding| (f.contour.or(f.contours.map(|c| c[0])), f.contours.map(|c| c[1]), f.index, f.point, f.kind());
     out.sort_by_key(place);
     Ok(out)
 }

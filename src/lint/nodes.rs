@@ -2,7 +2,7 @@
 //! `collinear_points`.
 
 use super::exact::{ExactValue, V, cross, dot, sub, v};
-use super::{Finding, Kind, LintOptions};
+use super::{Evidence, Finding, Kind, LintOptions};
 use crate::format::{Contour, PointNumbers, Segment};
 use crate::num::scalar::Scalar;
 use crate::num::scalar::rat;
@@ -165,7 +165,7 @@ pub(super) fn check(ci: usize, c: &Contour, numbers: Option<&PointNumbers>, o: &
         if x == rat(0) {
             if d.cmp(&rat(0)) == Ordering::Greater && a.len() == 2 && b.len() == 2 && o.wants(Kind::CollinearPoints) {
                 let message = format!("the node {} lies between two lines on one line: it is redundant", b[0]);
-                let mut f = Finding::new(Kind::CollinearPoints, message).point_at(node());
+                let mut f = Finding::new(Evidence::CollinearPoints, message).point_at(node());
                 (f.contour, f.index, f.point) = (Some(ci), Some(j), point);
                 out.push(f);
             }
@@ -201,8 +201,7 @@ fn kink(
         o.kink_degrees,
         if rounding { "; moving the handles by half a unit would make it smooth" } else { "" }
     );
-    let mut f = Finding::new(Kind::Kink, message).point_at(node).rounded(rounding);
+    let mut f = Finding::new(Evidence::Kink { turn_degrees_float: turn }, message).point_at(node).rounded(rounding);
     (f.contour, f.index, f.point) = (Some(ci), Some(j), point);
-    f.turn_degrees_float = Some(turn);
     f
 }

@@ -2,7 +2,7 @@
 //! `missing_extremum`, `cusp`, `loop`) and of the glyph's boxes (`bbox`).
 
 use super::exact::{ExactValue, strictly_inside};
-use super::{Finding, Glyph, Kind, LintOptions};
+use super::{Axis, Evidence, Finding, Glyph, Kind, LintOptions};
 use crate::classify::classify;
 use crate::curve::BezierCurve;
 use crate::format::Segment;
@@ -104,7 +104,7 @@ pub(super) fn check(ps: &[P], o: &LintOptions) -> Vec<Finding> {
         if o.wants(Kind::ZeroLengthSegment) {
             let what = if n == 1 { "line" } else { "curve" };
             out.push(
-                Finding::new(Kind::ZeroLengthSegment, format!("a {what} of length zero at {}", ps[0]))
+                Finding::new(Evidence::ZeroLengthSegment, format!("a {what} of length zero at {}", ps[0]))
                     .point_at(point(&ps[0])),
             );
         }
@@ -114,8 +114,11 @@ pub(super) fn check(ps: &[P], o: &LintOptions) -> Vec<Finding> {
         for (h, end, name) in [(1, 0, "first"), (n - 1, n, "last")] {
             if ps[h] == ps[end] {
                 out.push(
-                    Finding::new(Kind::ZeroLengthHandle, format!("the {name} handle has length zero (on {})", ps[end]))
-                        .point_at(point(&ps[end])),
+                    Finding::new(
+                        Evidence::ZeroLengthHandle,
+                        format!("the {name} handle has length zero (on {})", ps[end]),
+                    )
+                    .point_at(point(&ps[end])),
                 );
             }
         }
@@ -126,7 +129,7 @@ pub(super) fn check(ps: &[P], o: &LintOptions) -> Vec<Finding> {
         if real < n {
             let what = ["a point", "a line", "a quadratic"][real];
             out.push(Finding::new(
-                Kind::DegenerateCurve,
+                Evidence::DegenerateCurve,
                 format!("written with degree {n}, the curve is {what} (its power form has degree {real})"),
             ));
         }
@@ -181,18 +184,17 @@ fn extrema(ps: &[P], powers: &[Poly<BigRational>; 2], o: &LintOptions) -> Vec<Fi
             };
             let rounding = near(e0) || near(e1);
             let at = exact_point(ps, &t);
-            let (name, tangent) = if axis == 0 { ("x", "vertical") } else { ("y", "horizontal") };
+            let (extreme, tangent) = if axis == 0 { (Axis::X, "vertical") } else { (Axis::Y, "horizontal") };
             let extent = ExactValue::from(extent);
             let message = format!(
-                "{tangent} tangent at t = {t}: {name} = {} is an extremum inside the segment, not a node ({} beyond its end points{})",
+                "{tangent} tangent at t = {t}: {extreme} = {} is an extremum inside the segment, not a node ({} beyond its end points{})",
                 at[axis],
                 extent,
                 if rounding { "; within half a unit of an end point's coordinate" } else { "" }
             );
-            let mut f = Finding::new(Kind::MissingExtremum, message).point_at(at).rounded(rounding);
+            let evidence = Evidence::MissingExtremum { axis: extreme, extent };
+            let mut f = Finding::new(evidence, message).point_at(at).rounded(rounding);
             f.parameters.push(ExactValue::from(t));
-            f.axis = Some(name);
-            f.extent = Some(extent);
             out.push(f);
         }
     }
@@ -207,7 +209,7 @@ fn cusps_and_loops(ps: &[P], o: &LintOptions) -> Vec<Finding> {
         for t in k.cusp_parameters.iter().filter(|t| strictly_inside(*t)) {
             let at = quadratic_point(ps, t);
             let message = format!("the tangent vanishes and the curve turns back at t = {t}, ({}, {})", at[0], at[1]);
-            let mut f = Finding::new(Kind::Cusp, message).point_at(at);
+            let mut f = Finding::new(Evidence::Cusp, message).point_at(at);
             f.parameters.push(ExactValue::from(t.clone()));
             out.push(f);
         }
@@ -227,7 +229,7 @@ fn cusps_and_loops(ps: &[P], o: &LintOptions) -> Vec<Finding> {
             at[1],
             ts.iter().map(|t| t.to_string()).collect::<Vec<_>>().join(" and ")
         );
-        let mut f = Finding::new(Kind::Loop, message).point_at(at);
+        let mut f = Finding::new(Evidence::Loop, message).point_at(at);
         f.parameters = ts;
         out.push(f);
     }
@@ -250,7 +252,7 @@ pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
     if segments.is_empty() {
         return out;
     }
-    let side = |b: &[BigRational; 4]| b.iter().cloned().map(ExactValue::from).collect::<Vec<_>>();
+    let side = |b: &[BigRational; 4]| Box::new(b.clone().map(ExactValue::from));
     if let Some(stored) = &g.stored_box {
         let mut b = [0, 1, 0, 1].map(|a| segments[0][0].coords[a].clone());
         for p in segments.iter().flat_map(|s| s.iter()).chain(&g.lone_points) {
@@ -271,12 +273,9 @@ pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
                 b.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
             );
             // a stale header box misleads clipping and layout a little: a warning
-            let mut f = Finding::new(Kind::Bbox, message);
+            let mut f = Finding::new(Evidence::Bbox { stored: side(stored), computed: side(&b) }, message);
             f.severity = super::Severity::Warning;
-            let mut f = f.rounded(rounding);
-            f.stored = side(stored);
-            f.computed = side(&b);
-            out.push(f);
+            out.push(f.rounded(rounding));
         }
     }
     // a segment lies in the hull of its control points: only a control point outside the
@@ -314,16 +313,13 @@ pub(super) fn boxes(g: &Glyph) -> Vec<Finding> {
         if outside {
             let beyond_one = (0..2).any(|a| worst[a] <= RealAlgebraic::from(&font[a] - rat(1)))
                 || (2..4).any(|a| worst[a] >= RealAlgebraic::from(&font[a] + rat(1)));
-            let computed: Vec<ExactValue> = worst.iter().cloned().map(ExactValue::from).collect();
+            let computed = Box::new(worst.map(ExactValue::from));
             let message = format!(
                 "the exact outline spans [{}], outside the font's head box [{}]",
                 computed.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", "),
                 font.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
             );
-            let mut f = Finding::new(Kind::Bbox, message).rounded(!beyond_one);
-            f.stored = side(font);
-            f.computed = computed;
-            out.push(f);
+            out.push(Finding::new(Evidence::Bbox { stored: side(font), computed }, message).rounded(!beyond_one));
         }
     }
     out

@@ -4,7 +4,7 @@
 //! outline; a node inserted exactly at an extremum (exact subdivision) removes that finding.
 
 use casteljau::format::{Contour, Segment, parse_path};
-use casteljau::lint::{ExactValue, Finding, Glyph, Kind, LintOptions, Severity, lint};
+use casteljau::lint::{Axis, Evidence, ExactValue, Finding, Glyph, Kind, LintOptions, Severity, lint};
 use casteljau::num::NumberMode;
 use casteljau::shape::Direction;
 use casteljau::{BezierCurve, Point, RealAlgebraic, rat};
@@ -16,7 +16,7 @@ fn findings(d: &str) -> Vec<Finding> {
 }
 
 fn kinds(fs: &[Finding]) -> Vec<Kind> {
-    fs.iter().map(|f| f.kind).collect()
+    fs.iter().map(|f| f.kind()).collect()
 }
 
 fn strings(p: &[ExactValue; 2]) -> [String; 2] {
@@ -34,20 +34,21 @@ fn lint_clean_outlines_give_no_finding() {
 fn lint_missing_extremum_of_a_cubic_is_exact_and_irrational() {
     // x′/3 = 150(1−t)² − 400t(1−t) + 150t² vanishes at t = 1/2 ± √7/14; y′ at t = 1/2
     let fs = findings("M0 0 C150 100 -50 100 100 0 H100 V-50 H0 Z");
-    let ext: Vec<&Finding> = fs.iter().filter(|f| f.kind == Kind::MissingExtremum).collect();
+    let ext: Vec<&Finding> = fs.iter().filter(|f| f.kind() == Kind::MissingExtremum).collect();
     let params: Vec<String> = ext.iter().map(|f| f.parameters[0].to_string()).collect();
     assert!(params.contains(&"1/2".to_string()), "{params:?}");
     assert_eq!(params.iter().filter(|p| p.contains("sqrt(7)")).count(), 2, "{params:?}");
-    let top = ext.iter().find(|f| f.axis == Some("y")).unwrap();
+    let top = ext.iter().find(|f| matches!(f.evidence, Evidence::MissingExtremum { axis: Axis::Y, .. })).unwrap();
     assert_eq!(strings(&top.at[0]), ["50", "75"]);
-    assert_eq!(top.extent.as_ref().unwrap().to_string(), "75");
+    let Evidence::MissingExtremum { extent, .. } = &top.evidence else { unreachable!() };
+    assert_eq!(extent.to_string(), "75");
 }
 
 #[test]
 fn lint_missing_extremum_within_half_a_unit_is_rounding() {
     // the node (100, 0) with its handle one unit below: the curve dips 1/52 under y = 0
     let fs = findings("M100 0 Q150 -1 200 50 V100 H100 Z");
-    let f = fs.iter().find(|f| f.kind == Kind::MissingExtremum).unwrap();
+    let f = fs.iter().find(|f| f.kind() == Kind::MissingExtremum).unwrap();
     assert_eq!(f.parameters[0].to_string(), "1/52");
     assert_eq!(strings(&f.at[0])[1], "-1/52");
     assert!(f.rounding);
@@ -57,28 +58,29 @@ fn lint_missing_extremum_within_half_a_unit_is_rounding() {
     let mut o = LintOptions::new(Direction::Ccw);
     o.extremum_min = Some(rat(1) / rat(52));
     let g = Glyph::new(parse_path("M100 0 Q150 -1 200 50 V100 H100 Z", NumberMode::Exact).unwrap());
-    assert_eq!(lint(&g, &o).unwrap().iter().filter(|f| f.kind == Kind::MissingExtremum).count(), 1);
+    assert_eq!(lint(&g, &o).unwrap().iter().filter(|f| f.kind() == Kind::MissingExtremum).count(), 1);
     o.extremum_min = Some(rat(1) / rat(51));
-    assert_eq!(lint(&g, &o).unwrap().iter().filter(|f| f.kind == Kind::MissingExtremum).count(), 0);
+    assert_eq!(lint(&g, &o).unwrap().iter().filter(|f| f.kind() == Kind::MissingExtremum).count(), 0);
 }
 
 #[test]
 fn lint_kink_against_the_angle_and_the_grid() {
     // a turn of atan(7/200) ≈ 2.0° at (400, 400): long handles, not explained by rounding
     let fs = findings("M0 200 Q200 200 400 400 Q607 593 800 593 V0 H0 Z");
-    let k = fs.iter().find(|f| f.kind == Kind::Kink).unwrap();
+    let k = fs.iter().find(|f| f.kind() == Kind::Kink).unwrap();
     assert_eq!(strings(&k.at[0]), ["400", "400"]);
-    assert!(!k.rounding && (k.turn_degrees_float.unwrap() - 2.0).abs() < 0.1);
+    let Evidence::Kink { turn_degrees_float } = k.evidence else { panic!("{k:?}") };
+    assert!(!k.rounding && (turn_degrees_float - 2.0).abs() < 0.1);
     // the same turn direction with a 3-unit handle: half a unit explains it
     let fs = findings("M0 200 Q397 397 400 400 Q607 593 800 593 V0 H0 Z");
-    let k = fs.iter().find(|f| f.kind == Kind::Kink).unwrap();
+    let k = fs.iter().find(|f| f.kind() == Kind::Kink).unwrap();
     assert!(k.rounding);
     // below the angle only: a 1° limit does not flag a 2° turn
     let o = LintOptions::new(Direction::Ccw).with_kink_angle(1.0).unwrap();
     let g = Glyph::new(parse_path("M0 200 Q200 200 400 400 Q607 593 800 593 V0 H0 Z", NumberMode::Exact).unwrap());
-    assert!(lint(&g, &o).unwrap().iter().all(|f| f.kind != Kind::Kink));
+    assert!(lint(&g, &o).unwrap().iter().all(|f| f.kind() != Kind::Kink));
     // exactly collinear, same direction: smooth, no finding
-    assert!(findings("M0 200 Q200 200 400 400 Q600 600 800 600 V0 H0 Z").iter().all(|f| f.kind != Kind::Kink));
+    assert!(findings("M0 200 Q200 200 400 400 Q600 600 800 600 V0 H0 Z").iter().all(|f| f.kind() != Kind::Kink));
 }
 
 #[test]
@@ -90,7 +92,7 @@ fn lint_collinear_and_zero_length_points() {
     assert_eq!(kinds(&fs), [Kind::ZeroLengthSegment]);
     assert!(fs[0].fails(&[Kind::ZeroLengthSegment]));
     // a spike back along the same line is no redundant point (it is drawn twice)
-    assert!(findings("M0 0 H10 H5 V10 H0 Z").iter().all(|f| f.kind != Kind::CollinearPoints));
+    assert!(findings("M0 0 H10 H5 V10 H0 Z").iter().all(|f| f.kind() != Kind::CollinearPoints));
 }
 
 #[test]
@@ -102,12 +104,12 @@ fn lint_degenerate_handles_cusps_and_loops() {
     assert!(kinds(&fs).contains(&Kind::ZeroLengthHandle));
     // an exact cusp at t = 1/2 and an exact loop with its double point
     let fs = findings("M400 100 C100 400 400 400 100 100 Z");
-    let c = fs.iter().find(|f| f.kind == Kind::Cusp).unwrap();
+    let c = fs.iter().find(|f| f.kind() == Kind::Cusp).unwrap();
     assert_eq!((c.parameters[0].to_string(), strings(&c.at[0])), ("1/2".into(), ["250".into(), "325".into()]));
     let fs = findings("M400 100 C0 400 500 400 100 100 Z");
-    let l = fs.iter().find(|f| f.kind == Kind::Loop).unwrap();
+    let l = fs.iter().find(|f| f.kind() == Kind::Loop).unwrap();
     assert_eq!(strings(&l.at[0]), ["250", "250"]);
-    assert!(fs.iter().any(|f| f.kind == Kind::SelfIntersection));
+    assert!(fs.iter().any(|f| f.kind() == Kind::SelfIntersection));
 }
 
 #[test]
@@ -121,7 +123,7 @@ fn lint_a_contour_of_one_closed_cubic_is_no_loop() {
     }
     // the start point passed again inside the segment (t = 0 and 3/5) is still a loop
     let fs = findings("M10 10 C10 40 30 10 -30 -30 Z");
-    let l = fs.iter().find(|f| f.kind == Kind::Loop).unwrap();
+    let l = fs.iter().find(|f| f.kind() == Kind::Loop).unwrap();
     assert_eq!(l.parameters.iter().map(|t| t.to_string()).collect::<Vec<_>>(), ["0", "3/5"]);
     assert_eq!(strings(&l.at[0]), ["10", "10"]);
 }
@@ -151,7 +153,7 @@ fn lint_self_intersection_of_an_open_contour_names_a_stored_segment() {
     // crosses segment 2 at (25, 20): the finding's segment is one of the contour's four (not
     // the closing line, 4), with its parameter
     let fs = findings("M40 20 L40 20 L20 20 M30 20 L40 20 L40 40 L10 0 L10 20");
-    let f = fs.iter().find(|f| f.kind == Kind::SelfIntersection && f.contour == Some(1)).unwrap();
+    let f = fs.iter().find(|f| f.kind() == Kind::SelfIntersection && f.contour == Some(1)).unwrap();
     assert_eq!(f.index, Some(2));
     assert_eq!(f.parameters[0].to_string(), "1/2");
     assert_eq!(strings(&f.at[0]), ["25", "20"]);
@@ -170,17 +172,17 @@ fn lint_contours_cross_touch_share_and_nest() {
     // a hole drawn the wrong way round: depth 1 expects clockwise
     let fs = findings("M0 0 H10 V10 H0 Z M2 2 H8 V8 H2 Z");
     assert_eq!(kinds(&fs), [Kind::Direction]);
-    assert_eq!((fs[0].contour, fs[0].depth, fs[0].expected), (Some(1), Some(1), Some(Direction::Cw)));
-    assert_eq!(fs[0].area, Some(rat(36)));
+    assert_eq!(fs[0].contour, Some(1));
+    assert_eq!(fs[0].evidence, Evidence::Direction { area: rat(36), depth: 1, expected: Direction::Cw });
     // a glyph drawn twice (a duplicated component): its hole lies in two copies of one outer
     // contour, depth 1 not 2; the duplicate is what is reported
     let fs = findings("M0 0 H10 V10 H0 Z M2 2 V8 H8 V2 Z M0 0 H10 V10 H0 Z M2 2 V8 H8 V2 Z");
-    assert!(fs.iter().all(|f| f.kind != Kind::Direction), "{:?}", kinds(&fs));
-    assert!(fs.iter().any(|f| f.kind == Kind::OverlappingSegments && f.contours == Some([0, 2])));
-    assert!(fs.iter().any(|f| f.kind == Kind::OverlappingSegments && f.contours == Some([1, 3])));
+    assert!(fs.iter().all(|f| f.kind() != Kind::Direction), "{:?}", kinds(&fs));
+    assert!(fs.iter().any(|f| f.kind() == Kind::OverlappingSegments && f.contours == Some([0, 2])));
+    assert!(fs.iter().any(|f| f.kind() == Kind::OverlappingSegments && f.contours == Some([1, 3])));
     // a contour drawing an edge twice (a slit): overlapping_segments of [0, 0]
     let fs = findings("M0 0 H10 V10 H5 V2 V10 H0 Z");
-    assert!(fs.iter().any(|f| f.kind == Kind::OverlappingSegments && f.contours == Some([0, 0])));
+    assert!(fs.iter().any(|f| f.kind() == Kind::OverlappingSegments && f.contours == Some([0, 0])));
     // a bow-tie crosses itself at (5, 5); its signed area is 0, so no direction is decided
     let fs = findings("M0 0 L10 10 L10 0 L0 10 Z");
     assert_eq!(kinds(&fs), [Kind::SelfIntersection]);
@@ -203,8 +205,9 @@ fn lint_bbox_against_stored_and_head_boxes() {
     assert!(findings_of(&g).is_empty());
     g.font_box = Some(r4([0, 0, 100, 49]));
     let f = findings_of(&g);
-    assert_eq!((f[0].kind, f[0].severity, f[0].rounding), (Kind::Bbox, Severity::Error, false));
-    assert_eq!(f[0].computed[3].to_string(), "50");
+    assert_eq!((f[0].kind(), f[0].severity, f[0].rounding), (Kind::Bbox, Severity::Error, false));
+    let Evidence::Bbox { stored, computed } = &f[0].evidence else { panic!("{:?}", f[0]) };
+    assert_eq!((stored[3].to_string(), computed[3].to_string()), ("49".to_string(), "50".to_string()));
 }
 
 fn findings_of(g: &Glyph) -> Vec<Finding> {
@@ -296,11 +299,13 @@ proptest! {
         let after = lint(&Glyph::new(vec![to_contour(&c, map)]), &o).unwrap();
         prop_assert_eq!(before.len(), after.len());
         for f in &before {
-            let axis = match (turn, f.axis) { (true, Some("x")) => Some("y"), (true, Some("y")) => Some("x"), (_, a) => a };
+            let Evidence::MissingExtremum { axis, extent } = &f.evidence else { unreachable!() };
+            let axis = match (turn, axis) { (true, Axis::X) => Axis::Y, (true, Axis::Y) => Axis::X, (false, a) => *a };
+            let image = Evidence::MissingExtremum { axis, extent: extent.clone() };
             let at = if turn { [neg(&f.at[0][1]), f.at[0][0].clone()] } else { [neg(&f.at[0][0]), f.at[0][1].clone()] };
             let moved = after.iter().any(|g| {
-                g.index == f.index && g.parameters == f.parameters && g.axis == axis && g.at[0] == at
-                    && g.extent == f.extent && g.rounding == f.rounding
+                g.index == f.index && g.parameters == f.parameters && g.evidence == image && g.at[0] == at
+                    && g.rounding == f.rounding
             });
             prop_assert!(moved, "{:?} has no image in {:?}", f, after);
         }
@@ -311,8 +316,8 @@ proptest! {
         let o = only(&[Kind::MissingExtremum, Kind::Kink, Kind::CollinearPoints]);
         let base = to_contour(&c, |q| q);
         let before = lint(&Glyph::new(vec![base.clone()]), &o).unwrap();
-        let count = |fs: &[Finding]| fs.iter().filter(|f| f.kind == Kind::MissingExtremum).count();
-        for f in before.iter().filter(|f| f.kind == Kind::MissingExtremum) {
+        let count = |fs: &[Finding]| fs.iter().filter(|f| f.kind() == Kind::MissingExtremum).count();
+        for f in before.iter().filter(|f| f.kind() == Kind::MissingExtremum) {
             let ExactValue::Rational(t) = &f.parameters[0] else { continue };
             let i = f.index.unwrap();
             let Segment::Bezier(ps) = &base.segments[i] else { unreachable!() };
@@ -322,7 +327,7 @@ proptest! {
             let after = lint(&Glyph::new(vec![split]), &o).unwrap();
             prop_assert_eq!(count(&after), count(&before) - 1);
             // the new node is smooth: no kink or redundant point there
-            prop_assert!(after.iter().all(|g| g.kind == Kind::MissingExtremum || g.index != Some(i + 1)));
+            prop_assert!(after.iter().all(|g| g.kind() == Kind::MissingExtremum || g.index != Some(i + 1)));
         }
     }
 }

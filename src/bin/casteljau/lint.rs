@@ -115,7 +115,7 @@ impl Linter {
                 "{file}: {}{place}: {} {}{rounding}: {}",
                 u.label,
                 f.severity.as_str(),
-                f.kind,
+                f.kind(),
                 f.message
             );
         }

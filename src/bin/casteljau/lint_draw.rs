@@ -5,7 +5,7 @@
 use crate::lint_units::Unit;
 use casteljau::curve::BezierCurve;
 use casteljau::format::Segment;
-use casteljau::lint::{ExactValue, Finding, Kind};
+use casteljau::lint::{Axis, Evidence, ExactValue, Finding, Kind};
 use casteljau::num::Point;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -157,11 +157,12 @@ fn finite(p: P) -> bool {
     p.0.is_finite() && p.1.is_finite()
 }
 
-/// The stored and computed boxes of a `bbox` finding, in screen coordinates.
+/// The stored and computed boxes of a `bbox` finding, in screen coordinates (none for other
+/// kinds).
 fn boxes(f: &Finding, o: &Outline) -> Vec<(P, P)> {
-    [&f.stored, &f.computed]
+    let Evidence::Bbox { stored, computed } = &f.evidence else { return vec![] };
+    [stored, computed]
         .into_iter()
-        .filter(|b| b.len() == 4)
         .map(|b| {
             let v: Vec<f64> = b.iter().map(ExactValue::to_f64).collect();
             let (p, q) = (o.point([v[0], v[1]]), o.point([v[2], v[3]]));
@@ -353,7 +354,7 @@ pub(crate) fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> 
                 }
                 b.0 += 16.0 * pen.u;
             }
-            badges.push((b, *n, f.kind));
+            badges.push((b, *n, f.kind()));
         }
     }
     if !badges.is_empty() {
@@ -380,8 +381,8 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
     let pts: Vec<P> = f.at_float.iter().map(|p| o.point(*p)).filter(|p| finite(*p)).collect();
     let mut m = String::new();
     let mut badge = pts.first().copied();
-    match f.kind {
-        Kind::Direction => {
+    match &f.evidence {
+        Evidence::Direction { .. } => {
             let segs = &o.contours.get(f.contour?)?.0;
             let start = segs.first()?.pts[0];
             // the first point away from the start gives the contour's direction there
@@ -412,19 +413,19 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
             }
             badge = Some(start);
         }
-        Kind::MissingExtremum => {
+        Evidence::MissingExtremum { axis, .. } => {
             let p = *pts.first()?;
             let l = 14.0 * pen.u;
-            if f.axis == Some("x") {
+            if *axis == Axis::X {
                 let _ = write!(m, "<path d=\"M{}V{}\"/>", pen.p((p.0, p.1 - l)), pen.n(p.1 + l));
             } else {
                 let _ = write!(m, "<path d=\"M{}H{}\"/>", pen.p((p.0 - l, p.1)), pen.n(p.0 + l));
             }
             m.push_str(&pen.circle("dot", p, 3.2));
         }
-        Kind::OverlappingSegments => {
+        Evidence::OverlappingSegments { shared } => {
             let mut d = String::new();
-            for sh in &f.shared {
+            for sh in shared {
                 if let Some(sg) = o.segment(Some(sh.contour), Some(sh.segment)) {
                     let pc = piece(&sg.pts, sh.from.to_f64(), sh.to.to_f64());
                     if pc.iter().all(|p| finite(*p)) {
@@ -440,7 +441,7 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
                 m.push_str(&pen.circle("dot", *p, 3.0));
             }
         }
-        Kind::DegenerateCurve => {
+        Evidence::DegenerateCurve => {
             let sg = o.segment(f.contour, f.index)?;
             if !sg.pts.iter().all(|p| finite(*p)) {
                 return None;
@@ -450,7 +451,7 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
             let _ = write!(m, "<path class=\"hl\" d=\"{d}\"/>");
             badge = Some(eval(&sg.pts, 0.5));
         }
-        Kind::Bbox => {
+        Evidence::Bbox { .. } => {
             let bx = boxes(f, o);
             for (k, (a, b)) in bx.iter().enumerate() {
                 let _ = write!(
@@ -477,7 +478,7 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
         }
     }
     if !m.is_empty() {
-        let _ = write!(s, "<g class=\"m k-{}\">{m}</g>", f.kind.as_str());
+        let _ = write!(s, "<g class=\"m k-{}\">{m}</g>", f.kind().as_str());
     }
     badge
 }

@@ -24,7 +24,8 @@
 
 use crate::lint_units::{FileReport, Unit};
 use casteljau::format::Element;
-use casteljau::lint::{ExactValue, Finding, Kind, Severity};
+use casteljau::lint::{Axis, Evidence, ExactValue, Finding, Kind, Severity};
+use casteljau::shape::Direction;
 use std::fmt::Write as _;
 
 use crate::lint_draw::{drawing, esc};
@@ -358,8 +359,8 @@ fn file_section(s: &mut String, i: usize, f: &FileReport, deny: &[Kind]) {
             };
             let _ = write!(s, "<tr{quiet}><td>{name}</td><td class=\"{}\">{id}</td>", if font { "n" } else { "" });
             for kind in &kinds {
-                let n = u.findings.iter().filter(|f| f.kind == *kind && !f.rounding).count();
-                let r = u.findings.iter().filter(|f| f.kind == *kind && f.rounding).count();
+                let n = u.findings.iter().filter(|f| f.kind() == *kind && !f.rounding).count();
+                let r = u.findings.iter().filter(|f| f.kind() == *kind && f.rounding).count();
                 s.push_str("<td class=\"n\">");
                 if n > 0 {
                     let _ = write!(s, "{n}");
@@ -486,40 +487,51 @@ fn evidence(f: &Finding) -> String {
         let ts: Vec<String> = f.parameters.iter().map(code).collect();
         rows.push(("t", ts.join(", ")));
     }
-    if let Some(a) = &f.area {
-        rows.push(("signed area", code(a)));
-    }
-    if let Some(d) = f.depth {
-        rows.push(("depth", d.to_string()));
-    }
-    if let Some(e) = f.expected {
-        rows.push((
-            "expected",
-            if e == casteljau::shape::Direction::Cw { "clockwise" } else { "counter-clockwise" }.into(),
-        ));
-    }
-    if let Some(a) = f.axis {
-        rows.push(("tangent", if a == "x" { "vertical (x extreme)" } else { "horizontal (y extreme)" }.into()));
-    }
-    if let Some(e) = &f.extent {
-        rows.push(("extent", code(e)));
-    }
-    if let Some(t) = f.turn_degrees_float {
-        rows.push(("turn", format!("≈ {t:.3}°")));
-    }
-    for sh in &f.shared {
-        rows.push((
-            "shared",
-            format!("contour {} segment {}, t from {} to {}", sh.contour, sh.segment, code(&sh.from), code(&sh.to)),
-        ));
-    }
     let four =
         |v: &[ExactValue]| code(&format!("[{}]", v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")));
-    if !f.stored.is_empty() {
-        rows.push(("stored box", four(&f.stored)));
-    }
-    if !f.computed.is_empty() {
-        rows.push(("exact box", four(&f.computed)));
+    match &f.evidence {
+        Evidence::Direction { area, depth, expected } => {
+            rows.push(("signed area", code(area)));
+            rows.push(("depth", depth.to_string()));
+            let expected = if *expected == Direction::Cw { "clockwise" } else { "counter-clockwise" };
+            rows.push(("expected", expected.into()));
+        }
+        Evidence::MissingExtremum { axis, extent } => {
+            let tangent = match axis {
+                Axis::X => "vertical (x extreme)",
+                Axis::Y => "horizontal (y extreme)",
+            };
+            rows.push(("tangent", tangent.into()));
+            rows.push(("extent", code(extent)));
+        }
+        Evidence::Kink { turn_degrees_float } => rows.push(("turn", format!("≈ {turn_degrees_float:.3}°"))),
+        Evidence::OverlappingSegments { shared } => {
+            for sh in shared {
+                rows.push((
+                    "shared",
+                    format!(
+                        "contour {} segment {}, t from {} to {}",
+                        sh.contour,
+                        sh.segment,
+                        code(&sh.from),
+                        code(&sh.to)
+                    ),
+                ));
+            }
+        }
+        Evidence::Bbox { stored, computed } => {
+            rows.push(("stored box", four(&stored[..])));
+            rows.push(("exact box", four(&computed[..])));
+        }
+        Evidence::SelfIntersection
+        | Evidence::Overlap
+        | Evidence::Touching
+        | Evidence::CollinearPoints
+        | Evidence::ZeroLengthSegment
+        | Evidence::ZeroLengthHandle
+        | Evidence::DegenerateCurve
+        | Evidence::Cusp
+        | Evidence::Loop => {}
     }
     if rows.is_empty() {
         return String::new();
@@ -534,7 +546,7 @@ fn evidence(f: &Finding) -> String {
 
 /// A finding rounding explains, on one line (its message carries the exact values).
 fn rounding_item(s: &mut String, f: &Finding) {
-    let k = f.kind.as_str();
+    let k = f.kind().as_str();
     let _ = writeln!(
         s,
         "<li class=\"k-{k}\"><span class=\"kind\">{k}</span><span class=\"loc\">{}</span> <span class=\"r\">{}</span></li>",
@@ -544,7 +556,7 @@ fn rounding_item(s: &mut String, f: &Finding) {
 }
 
 fn finding_item(s: &mut String, n: usize, f: &Finding) {
-    let k = f.kind.as_str();
+    let k = f.kind().as_str();
     let num = format!("<span class=\"num\">{n}</span>");
     let sev = f.severity.as_str();
     let _ = writeln!(

@@ -53,7 +53,7 @@ impl Tally {
             self.flagged += 1;
         }
         for f in &u.findings {
-            let e = self.by_kind.entry(f.kind).or_default();
+            let e = self.by_kind.entry(f.kind()).or_default();
             if f.rounding {
                 e.1 += 1;
             } else {
