@@ -20,6 +20,8 @@ mod cli_shapes;
 #[cfg(feature = "cli")]
 mod cli_spline;
 #[cfg(feature = "cli")]
+mod docs;
+#[cfg(feature = "cli")]
 mod exactness_regressions;
 #[cfg(feature = "fonts")]
 mod font_builder;
