@@ -45,7 +45,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         };
         let name = font.glyph_name(gid).unwrap_or_else(|| format!("#{gid}"));
         for finding in lint(&glyph, &options)? {
-            let group = groups.entry(finding.kind.as_str()).or_default();
+            let group = groups.entry(finding.kind().as_str()).or_default();
             group.severity = finding.severity.as_str();
             if finding.rounding {
                 group.explained_by_rounding += 1;
