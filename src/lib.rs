@@ -20,8 +20,9 @@
 //!   and spline nets.
 //! * [`classify`](mod@classify): exact cubic classification, the certified fast path, moving lines,
 //!   canonical forms, rational cubics.
-//! * [`intersect`](mod@intersect), [`shape`]: exact intersections, winding numbers, arrangements
-//!   of closed paths and boolean operations.
+//! * [`intersect`](mod@intersect), [`path`]: exact intersections; closed paths, their winding
+//!   numbers and fill rules.
+//! * [`shape`]: arrangements of closed paths and boolean operations.
 //! * [`format`](mod@format): fonts, SVG and path data read exactly (the edge of the library).
 //! * [`lint`]: outline QA findings decided exactly, from the shapes and curves below.
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
@@ -50,6 +51,7 @@ pub mod intersect;
 pub mod lint;
 pub mod num;
 pub mod oracle;
+pub mod path;
 pub mod plot;
 pub mod poly;
 pub mod proof;
@@ -64,10 +66,9 @@ pub mod work;
 pub use classify::{Classification, NodeType, SegmentFlag, classify};
 pub use curve::{BezierCurve, DeCasteljauTriangle, Parametric};
 pub use error::{Error, Position, Result};
-pub use intersect::{
-    ClosedPath, Domain, FillRule, Intersection, Intersections, Overlap, intersect, self_intersect, winding_number,
-};
+pub use intersect::{Domain, Intersection, Intersections, Overlap, intersect, self_intersect};
 pub use num::{Exact, Point, QuadraticExt, Rational, Scalar, parse_points, rat, ratio};
+pub use path::{ClosedPath, FillRule};
 pub use poly::RealAlgebraic;
 pub use rational::{BoundingBox, RationalBezier, bounding_box};
 pub use spline::RationalSpline;

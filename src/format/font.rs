@@ -278,7 +278,7 @@ impl<'a> Font<'a> {
                 contours.push(segs);
             }
         }
-        Ok(crate::shape::Shape::new(crate::intersect::ClosedPath::from_polynomial(contours)?))
+        Ok(crate::shape::Shape::new(crate::path::ClosedPath::from_polynomial(contours)?))
     }
 
     /// The underlying `read-fonts` font.

@@ -34,10 +34,10 @@
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Position, Result};
 use crate::format::{Contour, Segment};
-use crate::intersect::winding::ClosedPath;
 use crate::num::parse::{NumberMode, parse_number_in};
 use crate::num::point::Point;
 use crate::num::scalar::{Scalar, rat};
+use crate::path::ClosedPath;
 use num_rational::BigRational;
 
 /// Longest accepted path data, in bytes.
@@ -381,12 +381,12 @@ pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>
 /// # Example
 /// ```
 /// use casteljau::format::fill_path;
-/// use casteljau::intersect::{FillRule, PathWinding};
+/// use casteljau::path::{FillRule, PathWinding};
 /// use casteljau::num::NumberMode;
 /// use casteljau::{Point, rat};
 /// let path = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
 /// assert_eq!(path.contours().len(), 2);
-/// let PathWinding::Off(w) = path.winding(&Point::new(vec![rat(2), rat(2)])).unwrap() else { panic!() };
+/// let PathWinding::Off(w) = path.winding(&Point::new(vec![rat(2), rat(2)]), &casteljau::work::Budget::unlimited()).unwrap() else { panic!() };
 /// assert_eq!(w.winding(), 2);
 /// assert!(!w.inside(FillRule::EvenOdd));
 /// ```

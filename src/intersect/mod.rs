@@ -38,13 +38,8 @@ mod overlap;
 mod pairing;
 mod roots;
 mod self_intersect;
-pub(crate) mod winding;
 
 pub use oracle::{IntersectionDisagreement, check_intersections_f64};
-pub use winding::{
-    BoundaryPoint, ClosedPath, FillRule, MAX_PATH_SEGMENTS, PathWinding, Winding, WindingNumber, winding_estimate,
-    winding_number, winding_number_rational, winding_number_within,
-};
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};

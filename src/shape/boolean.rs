@@ -21,8 +21,8 @@
 use super::arrangement::{Arrangement, HalfEdge, InputPiece};
 use super::segment::Seg;
 use crate::error::{Error, Result};
-use crate::intersect::FillRule;
 use crate::num::scalar::{rat, ratio_to_f64};
+use crate::path::FillRule;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::work::Budget;

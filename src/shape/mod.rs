@@ -36,8 +36,8 @@ pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Direction, boolean, 
 pub use oracle::{Verdict, Witness, check_against};
 
 use crate::error::Result;
-use crate::intersect::ClosedPath;
 use crate::num::point::Point;
+use crate::path::ClosedPath;
 use crate::rational::RationalBezier;
 use num_rational::BigRational;
 

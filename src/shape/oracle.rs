@@ -33,9 +33,9 @@ use super::segment::Seg;
 use super::{Arrangement, HalfEdge, Shape};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
-use crate::intersect::PathWinding;
 use crate::num::point::Point;
 use crate::num::scalar::{rat, ratio_to_f64};
+use crate::path::PathWinding;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::work::Budget;
@@ -194,12 +194,12 @@ fn contour_parents(s: &Shape) -> Result<Vec<Option<usize>>> {
                 continue;
             }
             for q in &probes {
-                match crate::intersect::winding_number_rational(ci, q)? {
-                    crate::intersect::Winding::Inside(w) => {
+                match crate::path::winding::winding_number_rational(ci, q)? {
+                    crate::path::winding::Winding::Inside(w) => {
                         encloses[i][j] = w != 0;
                         break;
                     }
-                    crate::intersect::Winding::OnBoundary { .. } => continue,
+                    crate::path::winding::Winding::OnBoundary { .. } => continue,
                 }
             }
         }
@@ -218,7 +218,7 @@ fn memberships(
 ) -> Result<Option<(bool, bool)>> {
     let fill = options.fill;
     let inside = |s: &Shape| -> Result<Option<bool>> {
-        Ok(match s.path().winding(q)? {
+        Ok(match s.path().winding(q, &Budget::unlimited())? {
             PathWinding::Off(w) => Some(fill.contains(w.winding())),
             PathWinding::OnBoundary { .. } => None,
         })

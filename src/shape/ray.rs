@@ -1,5 +1,5 @@
 //! Winding numbers of cycles of curve pieces (segments restricted to exact parameter intervals)
-//! around a rational point, by an axis-parallel ray — the rule of [`crate::intersect::winding`]
+//! around a rational point, by an axis-parallel ray — the rule of [`crate::path`]
 //! generalised in three ways: the pieces end at real algebraic parameters, the ray may point
 //! along any of the four axis directions (a quarter turn of the plane, which keeps winding
 //! numbers), and the ray's origin may lie on the pieces (`Origin::Excluded`): then crossings at
@@ -11,9 +11,9 @@
 
 use super::segment::Seg;
 use crate::error::{Error, Result};
-use crate::intersect::winding::{Event, count_crossings};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
+use crate::path::winding::{Event, count_crossings};
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;

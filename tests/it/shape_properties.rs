@@ -2,7 +2,7 @@
 //! random closed contours of lines, quadratics and cubics with small integer or half-integer
 //! control points (one or two contours per shape), and circles made of rational quadratics.
 //!
-//! The independent route for membership is `ClosedPath::winding` (`intersect::winding`) with
+//! The independent route for membership is `ClosedPath::winding` (`path::winding`) with
 //! `FillRule::contains`; the result's membership comes from its exact pieces
 //! (`BooleanResult::contains`). Sample points are rational with denominators 14 and 22, so they
 //! never lie on the half-integer grid, but they may still lie on a curve: a point on any
@@ -11,7 +11,7 @@
 //! A refusal documented by `Arrangement::faces` (two curves leaving a vertex tangentially where
 //! their order cannot be decided exactly) skips the case; any other error fails it.
 
-use casteljau::intersect::{ClosedPath, FillRule, PathWinding};
+use casteljau::path::{ClosedPath, FillRule, PathWinding};
 use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Location, Shape, boolean};
 use casteljau::{Point, RationalBezier, rat, ratio};
 use num_rational::BigRational;
@@ -138,7 +138,7 @@ fn run(op: BooleanOp, inputs: &[Shape], fill: FillRule) -> Option<BooleanResult>
 
 /// Inside by the fill rule, or `None` on the boundary.
 fn inside(path: &ClosedPath, q: &Point<Q>, fill: FillRule) -> Option<bool> {
-    match path.winding(q).unwrap() {
+    match path.winding(q, &casteljau::work::Budget::unlimited()).unwrap() {
         PathWinding::Off(w) => Some(w.inside(fill)),
         PathWinding::OnBoundary { .. } => None,
     }
@@ -611,12 +611,12 @@ proptest! {
         prop_assert_eq!(vs.len() as i64 - es.len() as i64 + faces.len() as i64, 1 + components as i64,
             "V {} E {} F {} C {}", vs.len(), es.len(), faces.len(), components);
         for q in &qs {
-            let on: Vec<bool> = [&sa, &sb].iter().map(|s| matches!(s.path().winding(q).unwrap(), PathWinding::OnBoundary { .. })).collect();
+            let on: Vec<bool> = [&sa, &sb].iter().map(|s| matches!(s.path().winding(q, &casteljau::work::Budget::unlimited()).unwrap(), PathWinding::OnBoundary { .. })).collect();
             match arr.locate(q).unwrap() {
                 Location::Face { face, winding } => {
                     prop_assert_eq!(&faces[face].winding, &winding, "face {} at {}", face, q);
                     for (i, s) in [&sa, &sb].iter().enumerate() {
-                        let PathWinding::Off(w) = s.path().winding(q).unwrap() else {
+                        let PathWinding::Off(w) = s.path().winding(q, &casteljau::work::Budget::unlimited()).unwrap() else {
                             return Err(TestCaseError::fail(format!("{q} is in face {face} but on input {i}")));
                         };
                         prop_assert_eq!(winding[i], w.winding(), "input {} at {}", i, q);

@@ -1,8 +1,8 @@
 //! Shapes: the exact arrangement and boolean operations on the degenerate cases of issue #27,
 //! each with its exact answer, and properties that cross-check the boolean result against the
-//! inputs' winding numbers (an independent route: `intersect::winding`).
+//! inputs' winding numbers (an independent route: `path::winding`).
 
-use casteljau::intersect::{ClosedPath, FillRule, PathWinding};
+use casteljau::path::{ClosedPath, FillRule, PathWinding};
 use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Location, Shape, boolean};
 use casteljau::{Point, RationalBezier, rat, ratio};
 use num_rational::BigRational;
@@ -209,7 +209,7 @@ fn cusps_collinear_cubics_and_zero_length_segments() {
 }
 
 fn inside(path: &ClosedPath, q: &Point<BigRational>, fill: FillRule) -> Option<bool> {
-    match path.winding(q).unwrap() {
+    match path.winding(q, &casteljau::work::Budget::unlimited()).unwrap() {
         PathWinding::Off(w) => Some(w.inside(fill)),
         PathWinding::OnBoundary { .. } => None,
     }
@@ -229,7 +229,7 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
     /// inside(A op B) = op(inside(A), inside(B)) at rational points off both boundaries, with
-    /// the inputs' winding numbers from `intersect::winding` and the result's from its pieces.
+    /// the inputs' winding numbers from `path::winding` and the result's from its pieces.
     #[test]
     fn membership_matches_the_operation(a in polygon(), b in polygon(), qs in prop::collection::vec((-9i64..=9, -9i64..=9), 12), even in any::<bool>()) {
         let (Some(sa), Some(sb)) = (to_shape(&a), to_shape(&b)) else { return Ok(()) };
@@ -260,7 +260,7 @@ proptest! {
             let q = p(ratio(x, 2) + ratio(1, 7), ratio(y, 2) + ratio(1, 11));
             if let Location::Face { winding, .. } = arr.locate(&q).unwrap() {
                 for (i, s) in [&sa, &sb].iter().enumerate() {
-                    let PathWinding::Off(w) = s.path().winding(&q).unwrap() else { panic!("off the edges") };
+                    let PathWinding::Off(w) = s.path().winding(&q, &casteljau::work::Budget::unlimited()).unwrap() else { panic!("off the edges") };
                     prop_assert_eq!(winding[i], w.winding());
                 }
             }

@@ -887,11 +887,11 @@ pub enum Fill {
     Evenodd,
 }
 
-impl From<Fill> for casteljau::intersect::FillRule {
+impl From<Fill> for casteljau::path::FillRule {
     fn from(f: Fill) -> Self {
         match f {
-            Fill::Nonzero => casteljau::intersect::FillRule::NonZero,
-            Fill::Evenodd => casteljau::intersect::FillRule::EvenOdd,
+            Fill::Nonzero => casteljau::path::FillRule::NonZero,
+            Fill::Evenodd => casteljau::path::FillRule::EvenOdd,
         }
     }
 }

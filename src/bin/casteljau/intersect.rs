@@ -6,10 +6,10 @@ use crate::args::IntersectArgs;
 use crate::batch::{Answer, Json, batch_lines, numbers_in};
 use casteljau::error::{Error, Result};
 use casteljau::format::fill_path;
-use casteljau::intersect::{ClosedPath, FillRule, PathWinding};
 use casteljau::intersect::{Domain, Intersections, intersect, intersect_within, self_intersect, self_intersect_within};
 use casteljau::num::rat;
 use casteljau::num::{NumberMode, parse_points_in};
+use casteljau::path::{ClosedPath, FillRule, PathWinding};
 use casteljau::rational::RationalBezier;
 use num_rational::BigRational;
 use std::io::Write;
@@ -140,7 +140,7 @@ pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 
                 .collect::<Result<_>>()?;
             ClosedPath::from_polynomial(vec![contour])?
         };
-        let r = path.winding_within(&q, &budget)?;
+        let r = path.winding(&q, &budget)?;
         let text = match &r {
             PathWinding::OnBoundary { on_boundary: b } => {
                 format!("on the path: subpath {}, segment {}, t = {}", b.subpath, b.segment, b.t)

@@ -13,8 +13,8 @@ use crate::batch::{Answer, Json, batch_lines};
 use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{close_for_fill, fill_path, read_svg};
-use casteljau::intersect::ClosedPath;
 use casteljau::num::{NumberMode, parse_points_in};
+use casteljau::path::ClosedPath;
 use casteljau::shape::{
     Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Edge, Face, InputPiece, Location, Shape, Vertex,
     boolean_within, check_against,

@@ -3,7 +3,7 @@
 
 use crate::batch::option_number;
 use casteljau::error::{Error, Result};
-use casteljau::intersect::FillRule;
+use casteljau::path::FillRule;
 use casteljau::shape::{BooleanOp, BooleanResult, Verdict};
 use num_rational::BigRational;
 use num_traits::Signed;
