@@ -12,9 +12,9 @@
 //! Settings, stated, not tuned: oracle tolerance `1e-6` in `t` (`--tol` of `casteljau check`),
 //! flo_curves' loop-search accuracy `1e-9`. Cases come from a fixed proptest seed.
 
-use casteljau::classify::oracle::{Disagreement, FloatAnswers, Tolerances, check_f64};
 use casteljau::format::Font;
 use casteljau::format::Segment;
+use casteljau::oracle::{ClassificationDisagreement, FloatClassification, Tolerances, check_classification};
 use casteljau::strategies::binary64;
 use num_rational::BigRational;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
@@ -23,13 +23,13 @@ use std::collections::BTreeMap;
 
 type Curve = casteljau::BezierCurve<BigRational>;
 
-fn kurbo_answers(p: &[[f64; 2]]) -> FloatAnswers {
+fn kurbo_answers(p: &[[f64; 2]]) -> FloatClassification {
     let pt = |i: usize| kurbo::Point::new(p[i][0], p[i][1]);
     let c = kurbo::CubicBez::new(pt(0), pt(1), pt(2), pt(3));
-    FloatAnswers { inflection_parameters: Some(c.inflections().to_vec()), ..Default::default() }
+    FloatClassification { inflection_parameters: Some(c.inflections().to_vec()), ..Default::default() }
 }
 
-fn flo_answers(p: &[[f64; 2]]) -> FloatAnswers {
+fn flo_answers(p: &[[f64; 2]]) -> FloatClassification {
     use flo_curves::bezier::{CurveFeatures, features_for_cubic_bezier};
     let c = |i: usize| flo_curves::Coord2(p[i][0], p[i][1]);
     let f = features_for_cubic_bezier(&c(0), &c(1), &c(2), &c(3), 1e-9);
@@ -43,7 +43,7 @@ fn flo_answers(p: &[[f64; 2]]) -> FloatAnswers {
         CurveFeatures::DoubleInflectionPoint(a, b) => ("double_inflection", vec![a, b], vec![]),
         CurveFeatures::Loop(a, b) => ("loop", vec![], vec![a, b]),
     };
-    FloatAnswers {
+    FloatClassification {
         category: Some(category.into()),
         inflection_parameters: Some(infl),
         self_intersection_parameters: Some(lp),
@@ -90,13 +90,13 @@ struct Tally {
     cases: usize,
     by_kind: BTreeMap<(&'static str, &'static str, &'static str), usize>, // (library, field, kind)
     cases_wrong: BTreeMap<&'static str, usize>,
-    example: BTreeMap<(&'static str, &'static str, &'static str), (String, Disagreement)>,
+    example: BTreeMap<(&'static str, &'static str, &'static str), (String, ClassificationDisagreement)>,
 }
 
 fn run_case(t: &mut Tally, p: &[[f64; 2]], tol: &Tolerances) {
     t.cases += 1;
     for (lib, answers) in [("kurbo", kurbo_answers(p)), ("flo_curves", flo_answers(p))] {
-        let ds = check_f64(p, &answers, tol).expect("planar cubic");
+        let ds = check_classification(p, &answers, tol).expect("planar cubic");
         if !ds.is_empty() {
             *t.cases_wrong.entry(lib).or_default() += 1;
         }
@@ -127,8 +127,8 @@ fn flo_intersections(a: &[[f64; 2]], b: &[[f64; 2]]) -> Vec<(f64, f64)> {
 /// flo_curves' intersections checked by the exact oracle on the hard intersection families
 /// (cubic against line or cubic; control points exact `f64`s): cases with a disagreement.
 fn intersection_table(n: usize, runner: &mut TestRunner) {
-    use casteljau::intersect::{Domain, check_intersections_f64};
     use casteljau::strategies::intersections as hard;
+    use casteljau::{intersect::Domain, oracle::check_intersections};
     let fams: Vec<(&str, BoxedStrategy<(Curve, Curve)>)> = vec![
         ("inflection tangent (contact 3)", hard::tangency(3).prop_map(|(a, b, _)| (a, b)).boxed()),
         ("line starting on the cubic", hard::endpoint_hit().prop_map(|(a, b, _)| (a, b)).boxed()),
@@ -144,7 +144,7 @@ fn intersection_table(n: usize, runner: &mut TestRunner) {
             let (a, b) = s.new_tree(runner).expect("strategy").current();
             let (pa, pb) = (binary64::points(&a), binary64::points(&b));
             let float = flo_intersections(&pa, &pb);
-            let Ok(d) = check_intersections_f64(&pa, &pb, &float, 1e-6, Domain::Unit) else { continue };
+            let Ok(d) = check_intersections(&pa, &pb, &float, 1e-6, Domain::Unit) else { continue };
             wrong += usize::from(!d.is_empty());
             for x in d {
                 *kinds.entry(x.kind.as_str()).or_default() += 1;

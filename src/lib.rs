@@ -23,13 +23,15 @@
 //! * [`intersect`](mod@intersect), [`path`]: exact intersections; closed paths, their winding
 //!   numbers and fill rules.
 //! * [`shape`]: arrangements of closed paths and boolean operations.
+//! * [`oracle`]: float libraries' answers (classifications, intersections, boolean
+//!   operations) decided against the exact ones.
 //! * [`format`](mod@format): fonts, SVG and path data read exactly (the edge of the library).
 //! * [`lint`]: outline QA findings decided exactly, from the shapes and curves below.
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
 //!
-//! [`error`], [`work`] (cost estimates checked before exact work starts) and [`oracle`] (the float oracles' matching, for [`classify`](mod@classify) and [`intersect`](mod@intersect)) are shared by all. The command line lives in `src/bin/casteljau/` and is not part
-//! of the library.
+//! [`error`] and [`work`] (cost estimates checked before exact work starts) are shared by all.
+//! The command line lives in `src/bin/casteljau/` and is not part of the library.
 //!
 //! ```
 //! use casteljau::{BezierCurve, parse_points, ratio};

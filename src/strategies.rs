@@ -350,7 +350,7 @@ pub mod binary64 {
 
 /// Hard intersection cases with exact binary64 control points (see [`binary64`]): each strategy
 /// yields the two curves (and what is promised), for float intersection code checked with
-/// [`crate::intersect::check_intersections_f64`].
+/// [`crate::oracle::check_intersections`].
 pub mod intersections {
     use super::binary64::{cubic, is_binary64, unit_parameter};
     use crate::curve::bezier::BezierCurve;

@@ -23,7 +23,6 @@ pub(crate) mod certified;
 pub(crate) mod evidence;
 pub(crate) mod integer;
 pub(crate) mod moving_line;
-pub mod oracle;
 pub(crate) mod rational_cubic;
 pub(crate) mod report;
 

@@ -33,13 +33,10 @@ mod elimination;
 mod filter;
 mod fixed;
 mod forms;
-mod oracle;
 mod overlap;
 mod pairing;
 mod roots;
 mod self_intersect;
-
-pub use oracle::{IntersectionDisagreement, check_intersections_f64};
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};

@@ -26,14 +26,12 @@
 pub(crate) mod arrangement;
 mod boolean;
 mod germ;
-mod oracle;
 mod pairs;
 mod ray;
-mod segment;
+pub(crate) mod segment;
 
 pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, MAX_ARRANGEMENT_SEGMENTS, Vertex};
 pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Direction, boolean, boolean_within};
-pub use oracle::{Verdict, Witness, check_against};
 
 use crate::error::Result;
 use crate::num::point::Point;

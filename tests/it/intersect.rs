@@ -478,7 +478,7 @@ mod winding {
 
 mod hard_cases {
     use super::*;
-    use casteljau::intersect::check_intersections_f64;
+    use casteljau::oracle::check_intersections;
     use casteljau::strategies::{binary64, intersections as hard};
 
     fn pairs(a: &BezierCurve<BigRational>, b: &BezierCurve<BigRational>) -> Vec<(RealAlgebraic, RealAlgebraic, usize)> {
@@ -499,13 +499,13 @@ mod hard_cases {
         let (fa, fb) = (binary64::points(a), binary64::points(b));
         let exact = intersect_polynomial(a, b, Domain::Unit).unwrap();
         let right: Vec<(f64, f64)> = exact.intersections.iter().map(|i| (i.s_float, i.t_float)).collect();
-        prop_assert_eq!(check_intersections_f64(&fa, &fb, &right, 1e-12, Domain::Unit).unwrap(), vec![]);
-        let none = check_intersections_f64(&fa, &fb, &[], 1e-12, Domain::Unit).unwrap();
+        prop_assert_eq!(check_intersections(&fa, &fb, &right, 1e-12, Domain::Unit).unwrap(), vec![]);
+        let none = check_intersections(&fa, &fb, &[], 1e-12, Domain::Unit).unwrap();
         prop_assert_eq!(none.len(), exact.intersections.len());
         let mut doubled = right.clone();
         doubled.extend(right.first().copied());
         doubled.push((7.0, 7.0));
-        let d = check_intersections_f64(&fa, &fb, &doubled, 1e-12, Domain::Unit).unwrap();
+        let d = check_intersections(&fa, &fb, &doubled, 1e-12, Domain::Unit).unwrap();
         prop_assert_eq!(d.len(), 1 + usize::from(!right.is_empty()));
         Ok(())
     }

@@ -3,19 +3,21 @@
 //! injected wrong one, and `casteljau check` reports them with exit 1.
 
 use crate::common::{TempDir, run, stderr, stdout};
-use casteljau::classify::oracle::{FloatAnswers, Kind, Tolerances, check_f64, compare};
 use casteljau::classify::{Classification, NodeType, classify};
+use casteljau::oracle::{
+    DisagreementKind, FloatClassification, Tolerances, check_classification, compare_classification,
+};
 use casteljau::strategies::binary64;
 use casteljau::{Scalar, rat};
 use proptest::prelude::*;
 
 /// What a perfect float library would answer: the exact answers rounded to `f64`, parameters
 /// on `[0, 1]` only.
-fn perfect(k: &Classification) -> FloatAnswers {
+fn perfect(k: &Classification) -> FloatClassification {
     let unit = |ps: &[casteljau::classify::Parameter]| -> Vec<f64> {
         ps.iter().map(|p| p.to_f64()).filter(|t| (0.0..=1.0).contains(t)).collect()
     };
-    FloatAnswers {
+    FloatClassification {
         node_type: Some(k.node_type.map(|n| n.as_str().to_string())),
         category: Some(k.segment.category.as_str().into()),
         has_loop: Some(k.segment.has_loop),
@@ -105,9 +107,9 @@ proptest! {
         let k = classify(&curve).unwrap();
         let right = perfect(&k);
         let tol = Tolerances::default();
-        prop_assert_eq!(check_f64(&pts, &right, &tol).unwrap(), vec![]);
-        let caught = |wrong: FloatAnswers, field: &str| {
-            let d = compare(&k, &wrong, &tol);
+        prop_assert_eq!(check_classification(&pts, &right, &tol).unwrap(), vec![]);
+        let caught = |wrong: FloatClassification, field: &str| {
+            let d = compare_classification(&k, &wrong, &tol).unwrap();
             d.iter().any(|d| d.field == field)
         };
         let mut w = right.clone();
@@ -127,15 +129,15 @@ proptest! {
         if let Some(&first) = ips.first() {
             let mut w = right.clone();
             w.inflection_parameters = Some(ips[1..].to_vec());
-            prop_assert!(compare(&k, &w, &tol).iter().any(|d| d.kind == Kind::Missed));
+            prop_assert!(compare_classification(&k, &w, &tol).unwrap().iter().any(|d| d.kind == DisagreementKind::Missed));
             let mut w = right.clone();
             // one more copy than there are exact parameters: at least one is a duplicate
             w.inflection_parameters = Some(vec![first; ips.len() + 1]);
-            prop_assert!(compare(&k, &w, &tol).iter().any(|d| d.kind == Kind::Duplicate));
+            prop_assert!(compare_classification(&k, &w, &tol).unwrap().iter().any(|d| d.kind == DisagreementKind::Duplicate));
         }
         let mut w = right.clone();
         w.cusp_parameters = Some(vec![7.5]);
-        prop_assert!(compare(&k, &w, &tol).iter().any(|d| d.kind == Kind::Spurious && d.field == "cusp_parameters"));
+        prop_assert!(compare_classification(&k, &w, &tol).unwrap().iter().any(|d| d.kind == DisagreementKind::Spurious && d.field == "cusp_parameters"));
         if let Some([x, y]) = right.double_point {
             let mut w = right.clone();
             w.double_point = Some([x + 1.0, y]);
@@ -150,17 +152,17 @@ fn oracle_decides_the_tolerance_exactly() {
     // 0 (a tolerance is never tighter than one ulp); the f64 four steps below the nearest one of
     // the first parameter is more than an ulp away: it needs tolerance 1e-16
     let pts = [[0.0, 0.0], [2.0, 2.0], [-1.0, 2.0], [1.0, 0.0]];
-    let answers = |s0: f64| FloatAnswers {
+    let answers = |s0: f64| FloatClassification {
         self_intersection_parameters: Some(vec![s0, 0.8872983346207417]),
         ..Default::default()
     };
     let tol = |t: f64| Tolerances { parameter: t, point: 0.0 };
-    assert!(check_f64(&pts, &answers(0.11270166537925831), &tol(0.0)).unwrap().is_empty());
+    assert!(check_classification(&pts, &answers(0.11270166537925831), &tol(0.0)).unwrap().is_empty());
     let a = answers(f64::from_bits(0.11270166537925831f64.to_bits() - 4));
-    assert!(check_f64(&pts, &a, &tol(1e-16)).unwrap().is_empty());
-    assert_eq!(check_f64(&pts, &a, &tol(0.0)).unwrap().len(), 2); // one spurious, one missed
-    assert!(check_f64(&pts, &a, &tol(-1.0)).is_err());
-    assert!(check_f64(&[[f64::NAN, 0.0], [1.0, 1.0]], &a, &tol(0.0)).is_err());
+    assert!(check_classification(&pts, &a, &tol(1e-16)).unwrap().is_empty());
+    assert_eq!(check_classification(&pts, &a, &tol(0.0)).unwrap().len(), 2); // one spurious, one missed
+    assert!(check_classification(&pts, &a, &tol(-1.0)).is_err());
+    assert!(check_classification(&[[f64::NAN, 0.0], [1.0, 1.0]], &a, &tol(0.0)).is_err());
 }
 
 /// A file in `dir`, removed with it when the test ends (also when it fails).

@@ -270,7 +270,7 @@ proptest! {
 
 #[test]
 fn the_oracle_accepts_a_right_float_answer_and_catches_wrong_ones() {
-    use casteljau::shape::check_against;
+    use casteljau::oracle::check_against;
     use casteljau::work::Budget;
     let (a, b) = (shape("M0 0 H2 V2 H0 Z"), shape("M1 1 H3 V3 H1 Z"));
     let o = BooleanOptions::default();

@@ -1,9 +1,9 @@
 //! kurbo's answers about cubics, checked by casteljau's exact oracle: inflection parameters through
-//! `classify::oracle` (the engine of `casteljau check`), bounding boxes through the exact extrema.
+//! `oracle::check_classification` (the engine of `casteljau check`), bounding boxes through the exact extrema.
 //! Control points are small dyadic numbers, so kurbo's `f64` inputs are exactly the curves
 //! casteljau decides.
 
-use casteljau::classify::oracle::{FloatAnswers, Tolerances, check_f64};
+use casteljau::oracle::{FloatClassification, Tolerances, check_classification};
 use casteljau::rational::bounding_box_polynomial;
 use casteljau::{BezierCurve, Point};
 use casteljau_dependant::within;
@@ -34,8 +34,8 @@ fn exact_cubic(c: &[[f64; 2]; 4]) -> BezierCurve<BigRational> {
 fn kurbo_inflections_agree_with_the_exact_ones_within_1e_9() {
     for c in &CUBICS {
         let inflections: Vec<f64> = kurbo_cubic(c).inflections().into_iter().filter(|t| (0.0..=1.0).contains(t)).collect();
-        let answers = FloatAnswers { inflection_parameters: Some(inflections), ..Default::default() };
-        let d = check_f64(c, &answers, &Tolerances::default()).unwrap();
+        let answers = FloatClassification { inflection_parameters: Some(inflections), ..Default::default() };
+        let d = check_classification(c, &answers, &Tolerances::default()).unwrap();
         assert!(d.is_empty(), "{c:?}: {d:?}");
     }
 }
@@ -47,8 +47,8 @@ fn oracle_reports_a_wrong_inflection_list() {
     let mut t = kurbo_cubic(c).inflections().to_vec();
     assert_eq!(t, [0.5]);
     t[0] += 1e-6;
-    let answers = FloatAnswers { inflection_parameters: Some(t), ..Default::default() };
-    let d = check_f64(c, &answers, &Tolerances::default()).unwrap();
+    let answers = FloatClassification { inflection_parameters: Some(t), ..Default::default() };
+    let d = check_classification(c, &answers, &Tolerances::default()).unwrap();
     let kinds: Vec<&str> = d.iter().map(|x| x.kind.as_str()).collect();
     assert_eq!(kinds, ["spurious", "missed"], "{d:?}");
 }

@@ -1,5 +1,5 @@
 //! `casteljau check --against ANSWERS.jsonl [CURVES]`: a float library's answers, one JSON object
-//! per curve, checked against the exact classification (`casteljau::classify::oracle`). Every
+//! per curve, checked against the exact classification (`casteljau::oracle::compare_classification`). Every
 //! disagreement is reported with the exact value, the float value and the curve; exit 1 when
 //! there is any, 2 for bad input.
 //!
@@ -9,11 +9,11 @@
 //! curve of CURVES; without CURVES every answer needs `points`.
 
 use crate::args::CheckArgs;
-use casteljau::classify::oracle::{self, Disagreement, FloatAnswers, Tolerances};
 use casteljau::curve::BezierCurve;
 use casteljau::error::{Error, Position, Result};
 use casteljau::num::Point;
 use casteljau::num::{NumberMode, parse_number_in, parse_points_in};
+use casteljau::oracle::{ClassificationDisagreement, FloatClassification, Tolerances, compare_classification};
 use num_rational::BigRational;
 use std::collections::BTreeMap;
 use std::io::{BufRead, Write};
@@ -26,14 +26,14 @@ struct AnswerLine {
     #[serde(default)]
     line: Option<usize>,
     #[serde(flatten)]
-    answers: FloatAnswers,
+    answers: FloatClassification,
 }
 
 /// One answer line, checked.
 struct Checked {
     curve_line: Option<usize>,
     points: Vec<Point<BigRational>>,
-    disagreements: Vec<Disagreement>,
+    disagreements: Vec<ClassificationDisagreement>,
 }
 
 /// One reported disagreement, with where it comes from.
@@ -46,7 +46,7 @@ struct Report<'a> {
     curve_line: Option<usize>,
     points: &'a [Point<BigRational>],
     #[serde(flatten)]
-    disagreement: &'a Disagreement,
+    disagreement: &'a ClassificationDisagreement,
 }
 
 fn points_from_json(v: &[Vec<serde_json::Value>], line: usize, mode: NumberMode) -> Result<Vec<Point<BigRational>>> {
@@ -130,7 +130,8 @@ impl Against<'_> {
                 (Some(*n), parse_points_in(text, 2, Some(*n), self.mode)?)
             }
         };
-        let d = oracle::check(&BezierCurve::new(points.clone())?, &a.answers, &self.tol)?;
+        let d =
+            compare_classification(&casteljau::classify(&BezierCurve::new(points.clone())?)?, &a.answers, &self.tol)?;
         Ok(Checked { curve_line, points, disagreements: d })
     }
 }

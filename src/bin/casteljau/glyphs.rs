@@ -21,9 +21,10 @@ use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{Font, Segment, close_for_fill, fill_path, font_count};
 use casteljau::num::NumberMode;
+use casteljau::oracle::Agreement;
+use casteljau::oracle::check_against;
 use casteljau::path::{ClosedPath, FillRule};
-use casteljau::shape::check_against;
-use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Direction, Shape, Verdict, boolean_within};
+use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Direction, Shape, boolean_within};
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -99,7 +100,7 @@ impl FloatAnswers {
 
 /// How a glyph's exact result compares with a float library's.
 enum Judged {
-    Verdict(Verdict),
+    Verdict(Agreement),
     /// The float library gave no result (its `error`, or no line for the glyph).
     NoResult(String),
 }

@@ -6,7 +6,7 @@
 //! JSON of `boolean` (one object per question): `op`, `fill`, then the fields of
 //! `casteljau::shape::BooleanResult` as it serializes them (`contours`, `path`, `area`,
 //! `area_float`, `parents`, `orientation`, `pieces`), and with `--against` a `verdict` object
-//! (the fields of `casteljau::shape::Verdict`).
+//! (the fields of `casteljau::oracle::Agreement`).
 
 use crate::args::{ArrangeArgs, BooleanArgs};
 use crate::batch::{Answer, Json, batch_lines};
@@ -14,10 +14,11 @@ use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{close_for_fill, fill_path, read_svg};
 use casteljau::num::{NumberMode, parse_points_in};
+use casteljau::oracle::check_against;
 use casteljau::path::ClosedPath;
 use casteljau::shape::{
     Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Edge, Face, InputPiece, Location, Shape, Vertex,
-    boolean_within, check_against,
+    boolean_within,
 };
 use casteljau::work::Budget;
 use num_rational::BigRational;

@@ -3,8 +3,9 @@
 
 use crate::batch::option_number;
 use casteljau::error::{Error, Result};
+use casteljau::oracle::Agreement;
 use casteljau::path::FillRule;
-use casteljau::shape::{BooleanOp, BooleanResult, Verdict};
+use casteljau::shape::{BooleanOp, BooleanResult};
 use num_rational::BigRational;
 use num_traits::Signed;
 
@@ -18,7 +19,7 @@ pub(crate) fn tolerance(text: &str) -> Result<BigRational> {
 }
 
 /// `"agree"` or `"disagree: <problems>"`.
-pub(crate) fn verdict_text(v: &Verdict) -> String {
+pub(crate) fn verdict_text(v: &Agreement) -> String {
     if v.agree { "agree".into() } else { format!("disagree: {}", v.problems.join("; ")) }
 }
 
@@ -31,7 +32,7 @@ pub(crate) fn result_json(head: &str, op: BooleanOp, fill: FillRule, r: &Boolean
 }
 
 /// `,"verdict":{…}` (or nothing).
-pub(crate) fn verdict_json(v: Option<&Verdict>) -> String {
+pub(crate) fn verdict_json(v: Option<&Agreement>) -> String {
     v.map(|v| format!(",\"verdict\":{}", serde_json::to_string(v).expect("exact strings and finite floats serialize")))
         .unwrap_or_default()
 }

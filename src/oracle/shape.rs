@@ -28,9 +28,6 @@
 //! The answers agree when the counts and depths are equal, no witness exists, and the distance
 //! bound is at most `tol`.
 
-use super::boolean::{BooleanOp, BooleanOptions, BooleanResult};
-use super::segment::Seg;
-use super::{Arrangement, HalfEdge, Shape};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
@@ -38,6 +35,8 @@ use crate::num::scalar::{rat, ratio_to_f64};
 use crate::path::PathWinding;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
+use crate::shape::segment::Seg;
+use crate::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, HalfEdge, Shape};
 use crate::work::Budget;
 use num_rational::BigRational;
 use num_traits::Signed;
@@ -62,7 +61,7 @@ pub struct Witness {
 /// `depths_found`, `witness` (or null), `distance_bound` (binary64 upper bound on the distance
 /// between the boundaries), `problems` (one sentence each).
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Verdict {
+pub struct Agreement {
     /// No disagreement found.
     pub agree: bool,
     /// Contours of the exact result.
@@ -90,7 +89,8 @@ pub struct Verdict {
 ///
 /// # Example
 /// ```
-/// use casteljau::shape::{boolean, check_against, BooleanOp, BooleanOptions, Shape};
+/// use casteljau::shape::{boolean, BooleanOp, BooleanOptions, Shape};
+/// use casteljau::oracle::check_against;
 /// use casteljau::{ratio, work::Budget};
 /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
 /// let b: Shape = "M1 1 H3 V3 H1 Z".parse().unwrap();
@@ -114,7 +114,7 @@ pub fn check_against(
     found: &Shape,
     tol: &BigRational,
     budget: &Budget,
-) -> Result<Verdict> {
+) -> Result<Agreement> {
     if tol.is_negative() {
         return Err(Error::InvalidArgument { message: format!("the tolerance is not negative, not {tol}") });
     }
@@ -151,7 +151,7 @@ pub fn check_against(
     if distance_bound > ratio_to_f64(tol) {
         problems.push(format!("the boundaries are up to {distance_bound} apart (bound), more than the tolerance"));
     }
-    Ok(Verdict {
+    Ok(Agreement {
         agree: problems.is_empty(),
         contours: result.contours,
         contours_found,

@@ -2,7 +2,7 @@
 //! the exact classification — every disagreement, per field, with the exact value and the float
 //! one (the engine of `casteljau check`).
 //!
-//! The answers ([`FloatAnswers`], JSON with any subset of the fields, unknown fields ignored):
+//! The answers ([`FloatClassification`], JSON with any subset of the fields, unknown fields ignored):
 //!
 //! | field | meaning | compared |
 //! | --- | --- | --- |
@@ -29,29 +29,28 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::classify::oracle::{FloatAnswers, check_f64, Tolerances};
+//! use casteljau::oracle::{FloatClassification, Tolerances, check_classification};
 //! // a cusp exactly at t = 1/2; a float library that says "arch" and misses it
-//! let answers: FloatAnswers = serde_json::from_str(r#"{"category": "arch", "cusp_parameters": []}"#).unwrap();
-//! let d = check_f64(&[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]], &answers, &Tolerances::default()).unwrap();
+//! let answers: FloatClassification = serde_json::from_str(r#"{"category": "arch", "cusp_parameters": []}"#).unwrap();
+//! let d = check_classification(&[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]], &answers, &Tolerances::default()).unwrap();
 //! assert_eq!(d.len(), 2);
 //! assert_eq!((d[0].field, d[0].kind.as_str(), d[0].exact.as_str()), ("category", "mismatch", "cusp"));
 //! assert_eq!((d[1].field, d[1].kind.as_str(), d[1].exact.as_str()), ("cusp_parameters", "missed", "1/2"));
 //! ```
 
+use super::matching::{Unmatched, Window, check_tolerance, exact_curve, match_floats};
 use crate::classify::{Classification, NodeType, Parameter, classify};
-use crate::curve::bezier::BezierCurve;
 use crate::error::Result;
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, Scalar};
-use crate::oracle::{Unmatched, Window, check_tolerance, exact_curve, match_floats};
 use num_rational::BigRational;
 
-pub use crate::oracle::{FloatValue, Kind};
+use super::matching::{DisagreementKind, FloatValue};
 
 /// A float library's answers about one curve (see the module table); absent fields are not
 /// checked.
 #[derive(Clone, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
-pub struct FloatAnswers {
+pub struct FloatClassification {
     /// The node type, or `None` inside `Some` for "not a genuine cubic" (JSON `null`).
     #[serde(default, deserialize_with = "explicit_null", skip_serializing_if = "Option::is_none")]
     pub node_type: Option<Option<String>>,
@@ -105,11 +104,11 @@ impl Default for Tolerances {
 /// `exact` (the exact value as a string, `""` when there is none, e.g. for a spurious parameter),
 /// `exact_float` (its nearest `f64`, when it is a number), `float` (the library's value).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct Disagreement {
+pub struct ClassificationDisagreement {
     /// The answer field (`category`, `inflection_parameters`, …).
     pub field: &'static str,
     /// What kind of disagreement.
-    pub kind: Kind,
+    pub kind: DisagreementKind,
     /// The exact value.
     pub exact: String,
     /// The exact value's nearest `f64`, for numbers.
@@ -119,33 +118,58 @@ pub struct Disagreement {
     pub float: FloatValue,
 }
 
-/// [`check`] for `f64` control points, each taken exactly.
+/// Every disagreement between `answers` and the exact classification of the planar curve of
+/// degree ≤ 3 with control points `points` (each `f64` taken exactly), in the order of the
+/// module table.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a non-finite coordinate; otherwise as [`check`].
-pub fn check_f64(points: &[[f64; 2]], answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a non-finite coordinate or a
+/// negative or non-finite tolerance; otherwise as [`classify`].
+pub fn check_classification(
+    points: &[[f64; 2]],
+    answers: &FloatClassification,
+    tol: &Tolerances,
+) -> Result<Vec<ClassificationDisagreement>> {
     let curve = exact_curve(points, |x| format!("control point coordinate {x} is not finite"))?;
-    check(&curve, answers, tol)
+    compare_classification(&classify(&curve)?, answers, tol)
 }
 
-/// Every disagreement between `answers` and the exact classification of `curve` (planar,
-/// degree ≤ 3), in the order of the module table.
+/// [`check_classification`] on a classification already computed (of an exact curve, say, or
+/// to compare several libraries' answers with one exact classification).
 ///
 /// # Errors
-/// As [`classify`]; [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a negative or non-finite tolerance.
-pub fn check(curve: &BezierCurve<BigRational>, answers: &FloatAnswers, tol: &Tolerances) -> Result<Vec<Disagreement>> {
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a negative or non-finite
+/// tolerance.
+///
+/// ```
+/// use casteljau::{BezierCurve, classify, num::parse_points};
+/// use casteljau::oracle::{FloatClassification, Tolerances, compare_classification};
+/// let exact = classify(&BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap()).unwrap();
+/// let says_arch = FloatClassification { category: Some("arch".into()), ..Default::default() };
+/// assert_eq!(compare_classification(&exact, &says_arch, &Tolerances::default()).unwrap().len(), 1);
+/// ```
+pub fn compare_classification(
+    k: &Classification,
+    answers: &FloatClassification,
+    tol: &Tolerances,
+) -> Result<Vec<ClassificationDisagreement>> {
     for t in [tol.parameter, tol.point] {
         check_tolerance(t)?;
     }
-    let k = classify(curve)?;
-    Ok(compare(&k, answers, tol))
+    Ok(compare(k, answers, tol))
 }
 
-/// The comparison itself, on a classification already computed.
-pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> Vec<Disagreement> {
+/// The comparison itself (tolerances checked by the caller).
+fn compare(k: &Classification, answers: &FloatClassification, tol: &Tolerances) -> Vec<ClassificationDisagreement> {
     let mut out = vec![];
     let mut differ = |field, exact: String, float: FloatValue| {
-        out.push(Disagreement { field, kind: Kind::Mismatch, exact, exact_float: None, float })
+        out.push(ClassificationDisagreement {
+            field,
+            kind: DisagreementKind::Mismatch,
+            exact,
+            exact_float: None,
+            float,
+        })
     };
     if let Some(n) = &answers.node_type {
         let exact = k.node_type.map(NodeType::as_str);
@@ -186,9 +210,9 @@ pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> 
     }
     if let Some(p) = answers.double_point {
         match &k.double_point {
-            None => out.push(Disagreement {
+            None => out.push(ClassificationDisagreement {
                 field: "double_point",
-                kind: Kind::Spurious,
+                kind: DisagreementKind::Spurious,
                 exact: String::new(),
                 exact_float: None,
                 float: p.into(),
@@ -199,9 +223,9 @@ pub fn compare(k: &Classification, answers: &FloatAnswers, tol: &Tolerances) -> 
                     None => false,
                 });
                 if !near {
-                    out.push(Disagreement {
+                    out.push(ClassificationDisagreement {
                         field: "double_point",
-                        kind: Kind::Mismatch,
+                        kind: DisagreementKind::Mismatch,
                         exact: d.to_string(),
                         exact_float: None,
                         float: p.into(),
@@ -222,7 +246,13 @@ fn within(e: &Parameter, p: &BigRational, tol: f64) -> bool {
 /// in ascending order each float takes the smallest unmatched exact parameter within `tol`
 /// ([`crate::oracle`]'s matching); what is left over is spurious, duplicate or missed (an exact
 /// parameter on `[0, 1]`).
-fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[Parameter], float: &[f64], tol: f64) {
+fn match_parameters(
+    out: &mut Vec<ClassificationDisagreement>,
+    field: &'static str,
+    exact: &[Parameter],
+    float: &[f64],
+    tol: f64,
+) {
     let mut sorted: Vec<f64> = float.to_vec();
     sorted.sort_by(f64::total_cmp);
     let floats = sorted.into_iter().map(|p| (p, BigRational::from_float(p)));
@@ -230,16 +260,16 @@ fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[P
         match_floats(exact.len(), floats, |i, (_, q)| q.as_ref().is_some_and(|q| within(&exact[i], q, tol)));
     for ((p, q), why) in unmatched {
         out.push(match why {
-            Unmatched::Duplicate(i) => Disagreement {
+            Unmatched::Duplicate(i) => ClassificationDisagreement {
                 field,
-                kind: Kind::Duplicate,
+                kind: DisagreementKind::Duplicate,
                 exact: exact[i].to_string(),
                 exact_float: Some(exact[i].to_f64()),
                 float: p.into(),
             },
-            Unmatched::Spurious => Disagreement {
+            Unmatched::Spurious => ClassificationDisagreement {
                 field,
-                kind: Kind::Spurious,
+                kind: DisagreementKind::Spurious,
                 exact: String::new(),
                 exact_float: None,
                 // a non-finite float is written out as text
@@ -247,10 +277,10 @@ fn match_parameters(out: &mut Vec<Disagreement>, field: &'static str, exact: &[P
             },
         });
     }
-    for e in missed.into_iter().map(|i| &exact[i]).filter(|e| super::in_unit_interval(e)) {
-        out.push(Disagreement {
+    for e in missed.into_iter().map(|i| &exact[i]).filter(|e| crate::classify::in_unit_interval(e)) {
+        out.push(ClassificationDisagreement {
             field,
-            kind: Kind::Missed,
+            kind: DisagreementKind::Missed,
             exact: e.to_string(),
             exact_float: Some(e.to_f64()),
             float: FloatValue::Null,

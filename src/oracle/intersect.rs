@@ -1,9 +1,9 @@
 //! The intersection oracle for float code: a float library's intersection parameters checked
 //! against the exact answer, on the shared matching of [`crate::oracle`].
 
-use super::{Domain, intersect_polynomial};
+use super::matching::{DisagreementKind, Unmatched, Window, check_tolerance, exact_curve, match_floats};
 use crate::error::Result;
-use crate::oracle::{Kind, Unmatched, Window, check_tolerance, exact_curve, match_floats};
+use crate::intersect::{Domain, intersect_polynomial};
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;
 
@@ -16,18 +16,18 @@ use num_rational::BigRational;
 ///
 /// # Example
 /// ```
-/// use casteljau::intersect::{check_intersections_f64, Domain};
+/// use casteljau::{intersect::Domain, oracle::check_intersections};
 /// let parabola = [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]];
 /// let line = [[0.0, 1.0], [2.0, 1.0]];
 /// // a float library that misses the tangency at (1/2, 1/2)
-/// let d = check_intersections_f64(&parabola, &line, &[], 1e-9, Domain::Unit).unwrap();
+/// let d = check_intersections(&parabola, &line, &[], 1e-9, Domain::Unit).unwrap();
 /// assert_eq!((d.len(), d[0].kind.as_str(), d[0].s.as_str()), (1, "missed", "1/2"));
-/// assert!(check_intersections_f64(&parabola, &line, &[(0.5, 0.5)], 1e-9, Domain::Unit).unwrap().is_empty());
+/// assert!(check_intersections(&parabola, &line, &[(0.5, 0.5)], 1e-9, Domain::Unit).unwrap().is_empty());
 /// ```
 ///
 /// # Errors
-/// As [`intersect`](super::intersect); [`Error::InvalidArgument`](crate::Error::InvalidArgument) for non-finite coordinates or tolerance.
-pub fn check_intersections_f64(
+/// As [`intersect`](crate::intersect::intersect); [`Error::InvalidArgument`](crate::Error::InvalidArgument) for non-finite coordinates or tolerance.
+pub fn check_intersections(
     a: &[[f64; 2]],
     b: &[[f64; 2]],
     float: &[(f64, f64)],
@@ -64,7 +64,7 @@ pub fn check_intersections_f64(
             Unmatched::Duplicate(i) => {
                 let e = &r.intersections[i];
                 IntersectionDisagreement {
-                    kind: Kind::Duplicate,
+                    kind: DisagreementKind::Duplicate,
                     s: e.s.to_string(),
                     t: e.t.to_string(),
                     float: Some((s, t)),
@@ -76,7 +76,7 @@ pub fn check_intersections_f64(
     }
     for e in missed.into_iter().map(|i| &r.intersections[i]) {
         out.push(IntersectionDisagreement {
-            kind: Kind::Missed,
+            kind: DisagreementKind::Missed,
             s: e.s.to_string(),
             t: e.t.to_string(),
             float: None,
@@ -86,13 +86,13 @@ pub fn check_intersections_f64(
     Ok(out)
 }
 
-/// One disagreement of [`check_intersections_f64`]. JSON: `kind` (`missed`, `spurious`,
+/// One disagreement of [`check_intersections`]. JSON: `kind` (`missed`, `spurious`,
 /// `duplicate`), `s`, `t` (exact strings; empty for a spurious pair), `float` (the library's
 /// pair), `exact_float`.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct IntersectionDisagreement {
     /// What kind of disagreement.
-    pub kind: Kind,
+    pub kind: DisagreementKind,
     /// The exact `s` (empty when spurious).
     pub s: String,
     /// The exact `t` (empty when spurious).
@@ -106,7 +106,7 @@ pub struct IntersectionDisagreement {
 impl IntersectionDisagreement {
     fn spurious(s: f64, t: f64) -> Self {
         IntersectionDisagreement {
-            kind: Kind::Spurious,
+            kind: DisagreementKind::Spurious,
             s: String::new(),
             t: String::new(),
             float: Some((s, t)),

@@ -1,22 +1,12 @@
 //! The float oracle's shared core: a float library's answer compared with the exact one, within
 //! a tolerance on the float side only — the window `[p − tol, p + tol]` around the float `p`,
 //! taken exactly, must hold the exact value — and float answers matched to exact ones, every
-//! disagreement named by a [`Kind`] and carrying the float value as a [`FloatValue`].
+//! disagreement named by a [`DisagreementKind`] and carrying the float value as a [`FloatValue`].
 //!
-//! Two oracles use it: [`crate::classify::oracle`] (a float library's answers about one cubic:
-//! parameters, counts, the double point) and [`crate::intersect::check_intersections_f64`] (a
-//! float library's intersection parameters of two curves). It lives here, at the crate root
-//! beside [`crate::error`] and [`crate::work`], because it needs only exact rationals and curves
-//! (`num`, `curve`), which lie below both: `classify` and `intersect` are siblings and import
-//! neither each other nor a module above them, so the matching they share sits below both.
-//!
-//! # Matching
-//! Float answers are taken in the caller's order; each takes the first exact value (in the exact
-//! values' order) it is near and that no earlier float took. A float near only exact values
-//! already taken is a **duplicate** (of the first of them), a float near none is **spurious**,
-//! and an exact value no float took is **missed** (where the caller says it could have been
-//! found). Floats in ascending order against exact values in ascending order, with windows of one
-//! width, this matches as many as possible.
+//! Two oracles use it: [`super::check_classification`] (a float library's answers about one
+//! cubic: parameters, counts, the double point) and [`super::check_intersections`] (a float
+//! library's intersection parameters of two curves).
+//! The matching rule is stated in the [layer's documentation](super#the-shared-matching).
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
@@ -26,7 +16,7 @@ use std::fmt;
 
 /// What kind of disagreement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Kind {
+pub enum DisagreementKind {
     /// A value (class, count, flag, point) differs.
     Mismatch,
     /// An exact answer has no float answer within the tolerance.
@@ -37,19 +27,19 @@ pub enum Kind {
     Duplicate,
 }
 
-impl Kind {
+impl DisagreementKind {
     /// `mismatch`, `missed`, `spurious` or `duplicate`.
     pub fn as_str(self) -> &'static str {
         match self {
-            Kind::Mismatch => "mismatch",
-            Kind::Missed => "missed",
-            Kind::Spurious => "spurious",
-            Kind::Duplicate => "duplicate",
+            DisagreementKind::Mismatch => "mismatch",
+            DisagreementKind::Missed => "missed",
+            DisagreementKind::Spurious => "spurious",
+            DisagreementKind::Duplicate => "duplicate",
         }
     }
 }
 
-impl serde::Serialize for Kind {
+impl serde::Serialize for DisagreementKind {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         s.serialize_str(self.as_str())
     }
