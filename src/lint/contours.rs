@@ -27,7 +27,7 @@ use crate::format::close_for_fill;
 use crate::num::scalar::rat;
 use crate::path::ClosedPath;
 use crate::poly::algebraic::RealAlgebraic;
-use crate::shape::{Arrangement, Direction, Shape};
+use crate::shape::{Arrangement, Orientation, Shape};
 use std::cmp::Ordering;
 
 /// A piece's parameter at a vertex: (input, segment index in its contour, parameter).
@@ -232,8 +232,8 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
         for i in 0..n {
             let area = &areas[i];
             let found = match area.cmp(&rat(0)) {
-                Ordering::Greater => Direction::Ccw,
-                Ordering::Less => Direction::Cw,
+                Ordering::Greater => Orientation::Ccw,
+                Ordering::Less => Orientation::Cw,
                 Ordering::Equal => continue,
             };
             // contours drawn twice count once (their duplicate is overlapping_segments)
@@ -247,7 +247,7 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
             if found == expected {
                 continue;
             }
-            let name = |d: Direction| if d == Direction::Ccw { "counter-clockwise" } else { "clockwise" };
+            let name = |d: Orientation| if d == Orientation::Ccw { "counter-clockwise" } else { "clockwise" };
             let role = if depth % 2 == 0 { "an outer contour" } else { "a hole" };
             let start = start_point(g, contour_of[i]);
             let message = format!(

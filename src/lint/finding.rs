@@ -3,7 +3,7 @@
 
 use super::exact::ExactValue;
 use super::{Kind, Severity};
-use crate::shape::Direction;
+use crate::shape::Orientation;
 use num_rational::BigRational;
 use serde::Serialize;
 use serde::ser::{Impossible, SerializeStruct, Serializer};
@@ -16,7 +16,7 @@ use serde::ser::{Impossible, SerializeStruct, Serializer};
 /// use casteljau::lint::{Evidence, Glyph, LintOptions, lint};
 /// // the right square's left edge covers the middle of the left square's right edge
 /// let c = casteljau::format::parse_path("M0 0 H4 V4 H0 Z M4 1 H8 V3 H4 Z", casteljau::num::NumberMode::Exact).unwrap();
-/// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap();
+/// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Orientation::Ccw)).unwrap();
 /// let shared = f.iter().find_map(|f| match &f.evidence {
 ///     Evidence::OverlappingSegments { shared } => Some(shared),
 ///     _ => None,
@@ -81,12 +81,12 @@ impl std::fmt::Display for Axis {
 /// # Example
 /// ```
 /// use casteljau::lint::{Evidence, Glyph, Kind, LintOptions, lint};
-/// use casteljau::shape::Direction;
+/// use casteljau::shape::Orientation;
 /// // a 6 × 6 hole drawn counter-clockwise, like its outer contour
 /// let c = casteljau::format::parse_path("M0 0 H10 V10 H0 Z M2 2 H8 V8 H2 Z", casteljau::num::NumberMode::Exact).unwrap();
-/// let f = &lint(&Glyph::new(c), &LintOptions::new(Direction::Ccw)).unwrap()[0];
+/// let f = &lint(&Glyph::new(c), &LintOptions::new(Orientation::Ccw)).unwrap()[0];
 /// let Evidence::Direction { area, depth, expected } = &f.evidence else { panic!("{f:?}") };
-/// assert_eq!((area.to_string(), *depth, *expected), ("36".to_string(), 1, Direction::Cw));
+/// assert_eq!((area.to_string(), *depth, *expected), ("36".to_string(), 1, Orientation::Cw));
 /// assert_eq!(f.evidence.kind(), Kind::Direction);
 /// assert_eq!(
 ///     serde_json::to_string(&f.evidence).unwrap(),
@@ -105,7 +105,7 @@ pub enum Evidence {
         /// How many other contours contain this one.
         depth: usize,
         /// The orientation expected at that depth.
-        expected: Direction,
+        expected: Orientation,
     },
     /// A contour meets itself (the point in [`Finding::at`], the parameter on the segment
     /// [`Finding::index`] in [`Finding::parameters`]).
@@ -199,7 +199,7 @@ impl Evidence {
 /// ```
 /// use casteljau::lint::{Evidence, Glyph, Kind, LintOptions, lint};
 /// let c = casteljau::format::parse_path("M0 0 H5 H10 V10 H0 Z", casteljau::num::NumberMode::Exact).unwrap();
-/// let f = &lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap()[0];
+/// let f = &lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Orientation::Ccw)).unwrap()[0];
 /// assert_eq!((f.kind(), &f.evidence), (Kind::CollinearPoints, &Evidence::CollinearPoints));
 /// assert_eq!(
 ///     serde_json::to_string(f).unwrap(),
@@ -274,7 +274,7 @@ impl Finding {
     /// ```
     /// use casteljau::lint::{Glyph, Kind, LintOptions, lint};
     /// let c = casteljau::format::parse_path("M0 0 Q5 0 10 0 V10 H0 Z", casteljau::num::NumberMode::Exact).unwrap();
-    /// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap();
+    /// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Orientation::Ccw)).unwrap();
     /// assert_eq!(f[0].kind(), Kind::DegenerateCurve);
     /// ```
     pub fn kind(&self) -> Kind {
@@ -288,7 +288,7 @@ impl Finding {
     /// ```
     /// use casteljau::lint::{Glyph, Kind, LintOptions, lint};
     /// let c = casteljau::format::parse_path("M0 0 H10 H10 V10 Z", casteljau::num::NumberMode::Exact).unwrap();
-    /// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Direction::Ccw)).unwrap();
+    /// let f = lint(&Glyph::new(c), &LintOptions::new(casteljau::shape::Orientation::Ccw)).unwrap();
     /// assert_eq!(f[0].kind(), Kind::ZeroLengthSegment);
     /// assert!(f[0].fails(&[Kind::ZeroLengthSegment]) && !f[0].fails(&[Kind::Kink]));
     /// ```
@@ -446,7 +446,7 @@ mod tests {
         let x = || ExactValue::from(rat(1));
         let four = || Box::new([x(), x(), x(), x()]);
         let all = [
-            Evidence::Direction { area: rat(1), depth: 0, expected: Direction::Ccw },
+            Evidence::Direction { area: rat(1), depth: 0, expected: Orientation::Ccw },
             Evidence::SelfIntersection,
             Evidence::Overlap,
             Evidence::Touching,

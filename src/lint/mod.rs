@@ -44,11 +44,11 @@
 //! ```
 //! use casteljau::lint::{Axis, Evidence, Glyph, Kind, LintOptions, lint};
 //! use casteljau::num::NumberMode;
-//! use casteljau::shape::Direction;
+//! use casteljau::shape::Orientation;
 //! // a counter-clockwise square, and a curve with its top (t = 1/2) not a node
 //! let contours = casteljau::format::parse_path("M0 0 H100 V100 H0 Z M200 0 Q250 100 300 0 Z", NumberMode::Exact).unwrap();
 //! let glyph = Glyph::new(contours);
-//! let findings = lint(&glyph, &LintOptions::new(Direction::Ccw)).unwrap();
+//! let findings = lint(&glyph, &LintOptions::new(Orientation::Ccw)).unwrap();
 //! let kinds: Vec<Kind> = findings.iter().map(|f| f.kind()).collect();
 //! // the curve contour is clockwise (the area under a cap closed by a line drawn right to left)
 //! assert_eq!(kinds, [Kind::Direction, Kind::MissingExtremum]);
@@ -72,7 +72,7 @@ pub use finding::{Axis, Evidence, Finding, SharedPiece};
 
 use crate::error::{Error, Result};
 use crate::format::{Contour, PointNumbers, Segment, point_numbers};
-use crate::shape::Direction;
+use crate::shape::Orientation;
 use crate::work::Budget;
 use num_rational::BigRational;
 use serde::Serialize;
@@ -281,9 +281,9 @@ impl Glyph {
 /// What to check and how.
 #[derive(Clone, Debug)]
 pub struct LintOptions {
-    /// The orientation of outer contours (holes the other way): [`Direction::Cw`] for TrueType
-    /// (`glyf`), [`Direction::Ccw`] for CFF, CFF2 and SVG.
-    pub outer: Direction,
+    /// The orientation of outer contours (holes the other way): [`Orientation::Cw`] for TrueType
+    /// (`glyf`), [`Orientation::Ccw`] for CFF, CFF2 and SVG.
+    pub outer: Orientation,
     /// The kinds to decide (others are not computed).
     pub kinds: Vec<Kind>,
     /// The kink angle in degrees (`0 < α < 90`; default 10).
@@ -303,10 +303,10 @@ impl LintOptions {
     ///
     /// # Example
     /// ```
-    /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw);
+    /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Orientation::Cw);
     /// assert_eq!((o.kinds.len(), o.kink_degrees), (14, 10.0));
     /// ```
-    pub fn new(outer: Direction) -> Self {
+    pub fn new(outer: Orientation) -> Self {
         let mut o = LintOptions {
             outer,
             kinds: Kind::ALL.to_vec(),
@@ -329,10 +329,10 @@ impl LintOptions {
     ///
     /// # Example
     /// ```
-    /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw).with_kink_angle(45.0).unwrap();
+    /// let o = casteljau::lint::LintOptions::new(casteljau::shape::Orientation::Cw).with_kink_angle(45.0).unwrap();
     /// let (one, tiny) = (casteljau::rat(1), casteljau::rat(1) / casteljau::rat(1 << 40));
     /// assert!(o.kink_tangent > &one - &tiny && o.kink_tangent < one + tiny); // tan 45° within 2^-40
-    /// assert!(casteljau::lint::LintOptions::new(casteljau::shape::Direction::Cw).with_kink_angle(90.0).is_err());
+    /// assert!(casteljau::lint::LintOptions::new(casteljau::shape::Orientation::Cw).with_kink_angle(90.0).is_err());
     /// ```
     pub fn with_kink_angle(mut self, degrees: f64) -> Result<Self> {
         if !(degrees > 0.0 && degrees < 90.0) {
@@ -363,10 +363,10 @@ impl LintOptions {
 /// # Example
 /// ```
 /// use casteljau::lint::{Evidence, Glyph, Kind, LintOptions, lint};
-/// use casteljau::shape::Direction;
+/// use casteljau::shape::Orientation;
 /// // two squares side by side sharing the edge x = 10
 /// let c = casteljau::format::parse_path("M0 0 H10 V10 H0 Z M10 0 H20 V10 H10 Z", casteljau::num::NumberMode::Exact).unwrap();
-/// let f = lint(&Glyph::new(c), &LintOptions::new(Direction::Ccw)).unwrap();
+/// let f = lint(&Glyph::new(c), &LintOptions::new(Orientation::Ccw)).unwrap();
 /// let kinds: Vec<Kind> = f.iter().map(|f| f.kind()).collect();
 /// assert_eq!(kinds, [Kind::Touching, Kind::OverlappingSegments]);
 /// assert!(matches!(&f[1].evidence, Evidence::OverlappingSegments { shared } if shared.len() == 2));

@@ -23,15 +23,18 @@
 //! assert_eq!(r.area.unwrap().to_string(), "2");
 //! ```
 
+mod area;
 pub(crate) mod arrangement;
 mod boolean;
 mod germ;
+mod hermite;
 mod pairs;
 mod ray;
+mod render;
 pub(crate) mod segment;
 
 pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, MAX_ARRANGEMENT_SEGMENTS, Vertex};
-pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Direction, boolean, boolean_within};
+pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean, boolean_within};
 
 use crate::error::Result;
 use crate::num::point::Point;

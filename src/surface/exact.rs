@@ -38,19 +38,19 @@ impl Serialize for RationalPatch {
 /// A parameter direction of a patch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum Direction {
+pub enum ParameterAxis {
     /// The first parameter (rows).
     U,
     /// The second parameter (columns).
     V,
 }
 
-impl Direction {
+impl ParameterAxis {
     /// `"u"` or `"v"`.
     pub fn as_str(self) -> &'static str {
         match self {
-            Direction::U => "u",
-            Direction::V => "v",
+            ParameterAxis::U => "u",
+            ParameterAxis::V => "v",
         }
     }
 }
@@ -59,7 +59,7 @@ impl Direction {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PatchSplit {
     /// The direction split.
-    pub direction: Direction,
+    pub direction: ParameterAxis,
     /// Where.
     #[serde(serialize_with = "serial::string")]
     pub at: BigRational,
@@ -147,16 +147,16 @@ impl RationalPatch {
     /// As [`RationalPatch::subdivide_u`] and [`RationalPatch::subdivide_v`].
     ///
     /// ```
-    /// use casteljau::{num::parse_points, ratio, surface::{RationalPatch, Direction}};
+    /// use casteljau::{num::parse_points, ratio, surface::{ParameterAxis, RationalPatch}};
     /// let net = parse_points("0 0 0, 1 0 1, 0 1 1, 1 1 0", 3, None).unwrap();
     /// let p = RationalPatch::from_net(&net, (1, 1), None).unwrap();
-    /// let s = p.split(Direction::U, &ratio(1, 2)).unwrap();
+    /// let s = p.split(ParameterAxis::U, &ratio(1, 2)).unwrap();
     /// assert_eq!(s.first.homogeneous()[1][0].to_string(), "(0, 1/2, 1/2, 1)");
     /// ```
-    pub fn split(&self, direction: Direction, at: &BigRational) -> Result<PatchSplit> {
+    pub fn split(&self, direction: ParameterAxis, at: &BigRational) -> Result<PatchSplit> {
         let (first, second) = match direction {
-            Direction::U => self.subdivide_u(at)?,
-            Direction::V => self.subdivide_v(at)?,
+            ParameterAxis::U => self.subdivide_u(at)?,
+            ParameterAxis::V => self.subdivide_v(at)?,
         };
         Ok(PatchSplit { direction, at: at.clone(), first, second })
     }

@@ -7,7 +7,7 @@
 
 pub(crate) mod exact;
 
-pub use exact::{Direction, MAX_CONTOUR_SAMPLES, PatchContour, PatchSplit};
+pub use exact::{MAX_CONTOUR_SAMPLES, ParameterAxis, PatchContour, PatchSplit};
 
 use crate::error::{Error, Result};
 use crate::num::point::Point;

@@ -6,13 +6,13 @@
 use casteljau::format::{Contour, Segment, parse_path};
 use casteljau::lint::{Axis, Evidence, ExactValue, Finding, Glyph, Kind, LintOptions, Severity, lint};
 use casteljau::num::NumberMode;
-use casteljau::shape::Direction;
+use casteljau::shape::Orientation;
 use casteljau::{BezierCurve, Point, RealAlgebraic, rat};
 use num_rational::BigRational;
 use proptest::prelude::*;
 
 fn findings(d: &str) -> Vec<Finding> {
-    lint(&Glyph::new(parse_path(d, NumberMode::Exact).unwrap()), &LintOptions::new(Direction::Ccw)).unwrap()
+    lint(&Glyph::new(parse_path(d, NumberMode::Exact).unwrap()), &LintOptions::new(Orientation::Ccw)).unwrap()
 }
 
 fn kinds(fs: &[Finding]) -> Vec<Kind> {
@@ -55,7 +55,7 @@ fn lint_missing_extremum_within_half_a_unit_is_rounding() {
     assert_eq!(f.severity, Severity::Info);
     assert!(!f.fails(&Kind::ALL));
     // --extremum-min: an exact threshold on the extent (1/52 beyond the end points)
-    let mut o = LintOptions::new(Direction::Ccw);
+    let mut o = LintOptions::new(Orientation::Ccw);
     o.extremum_min = Some(rat(1) / rat(52));
     let g = Glyph::new(parse_path("M100 0 Q150 -1 200 50 V100 H100 Z", NumberMode::Exact).unwrap());
     assert_eq!(lint(&g, &o).unwrap().iter().filter(|f| f.kind() == Kind::MissingExtremum).count(), 1);
@@ -76,7 +76,7 @@ fn lint_kink_against_the_angle_and_the_grid() {
     let k = fs.iter().find(|f| f.kind() == Kind::Kink).unwrap();
     assert!(k.rounding);
     // below the angle only: a 1° limit does not flag a 2° turn
-    let o = LintOptions::new(Direction::Ccw).with_kink_angle(1.0).unwrap();
+    let o = LintOptions::new(Orientation::Ccw).with_kink_angle(1.0).unwrap();
     let g = Glyph::new(parse_path("M0 200 Q200 200 400 400 Q607 593 800 593 V0 H0 Z", NumberMode::Exact).unwrap());
     assert!(lint(&g, &o).unwrap().iter().all(|f| f.kind() != Kind::Kink));
     // exactly collinear, same direction: smooth, no finding
@@ -139,11 +139,11 @@ fn lint_a_quartic_segment_is_refused() {
             contours: vec![Contour { segments: vec![Segment::Bezier(pts.clone())], closed: true }],
             ..Default::default()
         };
-        let e = lint(&g, &LintOptions::new(Direction::Ccw)).unwrap_err();
+        let e = lint(&g, &LintOptions::new(Orientation::Ccw)).unwrap_err();
         assert!(e.to_string().contains("degrees 1 to 3"), "{e}");
         // numbered by Glyph::new too: refused the same way, no panic
         let g = Glyph::new(vec![Contour { segments: vec![Segment::Bezier(pts)], closed: true }]);
-        assert!(lint(&g, &LintOptions::new(Direction::Ccw)).is_err());
+        assert!(lint(&g, &LintOptions::new(Orientation::Ccw)).is_err());
     }
 }
 
@@ -173,7 +173,7 @@ fn lint_contours_cross_touch_share_and_nest() {
     let fs = findings("M0 0 H10 V10 H0 Z M2 2 H8 V8 H2 Z");
     assert_eq!(kinds(&fs), [Kind::Direction]);
     assert_eq!(fs[0].contour, Some(1));
-    assert_eq!(fs[0].evidence, Evidence::Direction { area: rat(36), depth: 1, expected: Direction::Cw });
+    assert_eq!(fs[0].evidence, Evidence::Direction { area: rat(36), depth: 1, expected: Orientation::Cw });
     // a glyph drawn twice (a duplicated component): its hole lies in two copies of one outer
     // contour, depth 1 not 2; the duplicate is what is reported
     let fs = findings("M0 0 H10 V10 H0 Z M2 2 V8 H8 V2 Z M0 0 H10 V10 H0 Z M2 2 V8 H8 V2 Z");
@@ -211,7 +211,7 @@ fn lint_bbox_against_stored_and_head_boxes() {
 }
 
 fn findings_of(g: &Glyph) -> Vec<Finding> {
-    let mut o = LintOptions::new(Direction::Cw);
+    let mut o = LintOptions::new(Orientation::Cw);
     o.kinds = vec![Kind::Bbox];
     lint(g, &o).unwrap()
 }
@@ -259,7 +259,7 @@ fn neg(v: &ExactValue) -> ExactValue {
 }
 
 fn only(kinds: &[Kind]) -> LintOptions {
-    let mut o = LintOptions::new(Direction::Ccw);
+    let mut o = LintOptions::new(Orientation::Ccw);
     o.kinds = kinds.to_vec();
     o
 }

@@ -12,7 +12,7 @@
 //! their order cannot be decided exactly) skips the case; any other error fails it.
 
 use casteljau::path::{ClosedPath, FillRule, PathWinding};
-use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Location, Shape, boolean};
+use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Location, Orientation, Shape, boolean};
 use casteljau::{Point, RationalBezier, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -123,7 +123,7 @@ fn fill_rule() -> impl Strategy<Value = FillRule> {
 /// The operation, or `None` for a documented refusal (a tangential vertex whose order around
 /// it cannot be decided exactly).
 fn run(op: BooleanOp, inputs: &[Shape], fill: FillRule) -> Option<BooleanResult> {
-    match boolean(op, inputs, BooleanOptions { fill, direction: Direction::Ccw }) {
+    match boolean(op, inputs, BooleanOptions { fill, orientation: Orientation::Ccw }) {
         Ok(r) => Some(r),
         Err(e) if e.to_string().contains("tangentially") => {
             eprintln!("skipped, refused: {e}");
@@ -207,7 +207,7 @@ fn check_orientation(r: &BooleanResult) -> std::result::Result<(), TestCaseError
             d += 1;
             j = p;
         }
-        let want = if d % 2 == 0 { Direction::Ccw } else { Direction::Cw };
+        let want = if d % 2 == 0 { Orientation::Ccw } else { Orientation::Cw };
         prop_assert_eq!(r.orientation[i], want, "contour {} at depth {}", i, d);
     }
     Ok(())

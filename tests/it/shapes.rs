@@ -3,7 +3,7 @@
 //! inputs' winding numbers (an independent route: `path::winding`).
 
 use casteljau::path::{ClosedPath, FillRule, PathWinding};
-use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Location, Shape, boolean};
+use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Location, Orientation, Shape, boolean};
 use casteljau::{Point, RationalBezier, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -14,7 +14,7 @@ fn shape(d: &str) -> Shape {
 
 fn run(op: BooleanOp, inputs: &[&str], fill: FillRule) -> BooleanResult {
     let shapes: Vec<Shape> = inputs.iter().map(|d| shape(d)).collect();
-    boolean(op, &shapes, BooleanOptions { fill, direction: Direction::Ccw })
+    boolean(op, &shapes, BooleanOptions { fill, orientation: Orientation::Ccw })
         .unwrap_or_else(|e| panic!("{inputs:?}: {e}"))
 }
 
@@ -38,7 +38,7 @@ fn squares_sharing_an_edge_unite_into_one_contour() {
     assert_eq!(r.contours, 1);
     assert_eq!(area(&r), rat(2));
     assert_eq!(r.path, "M0 0L1 0L2 0L2 1L1 1L0 1Z"); // pieces of both squares
-    assert_eq!(r.orientation, vec![Direction::Ccw]);
+    assert_eq!(r.orientation, vec![Orientation::Ccw]);
     // the intersection is the shared edge only: empty
     assert_eq!(nz(BooleanOp::Intersection, &["M0 0 H1 V1 H0 Z", "M1 0 H2 V1 H1 Z"]).contours, 0);
 }
@@ -164,7 +164,7 @@ fn figure_eight_under_both_rules() {
     for fill in [FillRule::NonZero, FillRule::EvenOdd] {
         let r = run(BooleanOp::Simplify, &[eight], fill);
         assert_eq!((r.contours, area(&r)), (2, rat(2)), "{fill}");
-        assert_eq!(r.orientation, vec![Direction::Ccw, Direction::Ccw]);
+        assert_eq!(r.orientation, vec![Orientation::Ccw, Orientation::Ccw]);
     }
 }
 
@@ -175,7 +175,7 @@ fn nested_holes_by_orientation_and_rule() {
     let hole = nz(BooleanOp::Simplify, &[&format!("{outer} {cw}")]);
     assert_eq!((hole.contours, area(&hole)), (2, rat(12)));
     assert_eq!(hole.parents, vec![None, Some(0)]);
-    assert_eq!(hole.orientation, vec![Direction::Ccw, Direction::Cw]);
+    assert_eq!(hole.orientation, vec![Orientation::Ccw, Orientation::Cw]);
     let filled = nz(BooleanOp::Simplify, &[&format!("{outer} {ccw}")]);
     assert_eq!((filled.contours, area(&filled)), (1, rat(16)));
     let eo = run(BooleanOp::Simplify, &[&format!("{outer} {ccw}")], FillRule::EvenOdd);
@@ -186,9 +186,9 @@ fn nested_holes_by_orientation_and_rule() {
     assert_eq!(r.parents, vec![None, Some(0), Some(1)]);
     assert_eq!(area(&r), rat(13));
     // clockwise output
-    let o = BooleanOptions { fill: FillRule::NonZero, direction: Direction::Cw };
+    let o = BooleanOptions { fill: FillRule::NonZero, orientation: Orientation::Cw };
     let c = boolean(BooleanOp::Simplify, &[shape(&format!("{outer} {cw}"))], o).unwrap();
-    assert_eq!(c.orientation, vec![Direction::Cw, Direction::Ccw]);
+    assert_eq!(c.orientation, vec![Orientation::Cw, Orientation::Ccw]);
     assert_eq!(area(&c), rat(-12));
 }
 
@@ -235,7 +235,7 @@ proptest! {
         let (Some(sa), Some(sb)) = (to_shape(&a), to_shape(&b)) else { return Ok(()) };
         let fill = if even { FillRule::EvenOdd } else { FillRule::NonZero };
         for op in [BooleanOp::Union, BooleanOp::Intersection, BooleanOp::Difference, BooleanOp::Xor] {
-            let r = boolean(op, &[sa.clone(), sb.clone()], BooleanOptions { fill, direction: Direction::Ccw }).unwrap();
+            let r = boolean(op, &[sa.clone(), sb.clone()], BooleanOptions { fill, orientation: Orientation::Ccw }).unwrap();
             for &(x, y) in &qs {
                 let q = p(ratio(x, 2) + ratio(1, 7), ratio(y, 2) + ratio(1, 11));
                 let (Some(ia), Some(ib)) = (inside(sa.path(), &q, fill), inside(sb.path(), &q, fill)) else { continue };
@@ -244,7 +244,7 @@ proptest! {
             }
         }
         // area(A ∪ B) + area(A ∩ B) = area(A) + area(B), exactly
-        let o = BooleanOptions { fill, direction: Direction::Ccw };
+        let o = BooleanOptions { fill, orientation: Orientation::Ccw };
         let ar = |op, s: &[Shape]| boolean(op, s, o).unwrap().area.unwrap();
         let both = [sa.clone(), sb.clone()];
         prop_assert_eq!(ar(BooleanOp::Union, &both) + ar(BooleanOp::Intersection, &both),

@@ -5,7 +5,7 @@
 use casteljau::classify::{Classified, ClassifyOptions};
 use casteljau::num::parse_points;
 use casteljau::rational::ParameterInterval;
-use casteljau::surface::Direction;
+use casteljau::surface::ParameterAxis;
 use casteljau::surface::RationalPatch;
 use casteljau::work::Budget;
 use casteljau::{BezierCurve, Error, RationalBezier, rat, ratio};
@@ -134,8 +134,8 @@ fn patch_split_in_u_and_in_v_of_the_transpose_agree() {
     let net = parse_points("0 0 0, 1 0 1, 2 0 0, 0 1 1, 1 1 2, 2 1 1", 3, None).unwrap();
     let p = RationalPatch::from_net(&net, (1, 2), Some(&[rat(1), rat(2), rat(1), rat(1), rat(3), rat(1)])).unwrap();
     let x = ratio(1, 3);
-    let u = p.split(Direction::U, &x).unwrap();
-    let v = p.transpose().split(Direction::V, &x).unwrap();
+    let u = p.split(ParameterAxis::U, &x).unwrap();
+    let v = p.transpose().split(ParameterAxis::V, &x).unwrap();
     assert_eq!(u.first, v.first.transpose());
     assert_eq!(u.second, v.second.transpose());
 }

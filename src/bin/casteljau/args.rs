@@ -675,7 +675,7 @@ pub struct LintArgs {
     /// (ccw: positive signed area). Default: cw for TrueType glyf fonts, ccw for CFF, CFF2, SVG
     /// and path data.
     #[arg(long, value_enum)]
-    pub direction: Option<Orientation>,
+    pub direction: Option<OrientationArg>,
     /// The kink angle in degrees (0 < angle < 90): a node whose tangents turn by less than this,
     /// but not by zero, is a kink (decided exactly against the binary64 value of its tangent).
     #[arg(long, default_value_t = 10.0)]
@@ -898,18 +898,18 @@ impl From<Fill> for casteljau::path::FillRule {
 
 /// `--direction`.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Orientation {
+pub enum OrientationArg {
     /// Outer contours counter-clockwise, holes clockwise (SVG, CFF).
     Ccw,
     /// Outer contours clockwise, holes counter-clockwise (TrueType).
     Cw,
 }
 
-impl From<Orientation> for casteljau::shape::Direction {
-    fn from(o: Orientation) -> Self {
+impl From<OrientationArg> for casteljau::shape::Orientation {
+    fn from(o: OrientationArg) -> Self {
         match o {
-            Orientation::Ccw => casteljau::shape::Direction::Ccw,
-            Orientation::Cw => casteljau::shape::Direction::Cw,
+            OrientationArg::Ccw => casteljau::shape::Orientation::Ccw,
+            OrientationArg::Cw => casteljau::shape::Orientation::Cw,
         }
     }
 }
@@ -929,7 +929,7 @@ pub struct BooleanArgs {
     /// The orientation of the result's outer contours (holes run the other way). Default: ccw,
     /// and for fonts the font's convention (cw for TrueType glyf outlines, ccw for CFF).
     #[arg(long, value_enum)]
-    pub direction: Option<Orientation>,
+    pub direction: Option<OrientationArg>,
     /// Fonts: only these glyphs (names, comma-separated); an unknown name is an error.
     #[arg(long, value_delimiter = ',')]
     pub glyphs: Vec<String>,

@@ -7,7 +7,7 @@ use crate::batch::{batch, rational_batch};
 use crate::options::{Weights, option_number, patch_of, rational_curve, weights_family};
 use crate::render::{Answer, Json};
 use casteljau::error::{Error, Result};
-use casteljau::surface::Direction;
+use casteljau::surface::ParameterAxis;
 use casteljau::surface::RationalPatch;
 use std::io::Write;
 
@@ -34,8 +34,8 @@ pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
         }
         SurfaceOp::Subdivide { u, v, patch } => {
             let at = match (&u, &v) {
-                (Some(u), None) => option_number("--u", u).map(|x| (Direction::U, x)),
-                (None, Some(v)) => option_number("--v", v).map(|x| (Direction::V, x)),
+                (Some(u), None) => option_number("--u", u).map(|x| (ParameterAxis::U, x)),
+                (None, Some(v)) => option_number("--v", v).map(|x| (ParameterAxis::V, x)),
                 _ => Err(Error::InvalidArgument { message: "give exactly one of --u and --v".into() }),
             };
             run_patch(patch, out, &|p| {

@@ -24,7 +24,7 @@ use casteljau::num::NumberMode;
 use casteljau::oracle::Agreement;
 use casteljau::oracle::check_against;
 use casteljau::path::{ClosedPath, FillRule};
-use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Direction, Shape, boolean_within};
+use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Orientation, Shape, boolean_within};
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -129,7 +129,7 @@ impl Judged {
 /// What the run needs for every glyph.
 struct Context<'a> {
     fill: FillRule,
-    direction: Option<Direction>,
+    direction: Option<Orientation>,
     budget: Budget,
     tol: BigRational,
     mode: NumberMode,
@@ -369,8 +369,8 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
         face.map(|f| format!("\"face\":{f},")).unwrap_or_default(),
         name.as_deref().map_or_else(|| "null".to_string(), js)
     );
-    let direction = ctx.direction.unwrap_or(if font.is_cff() { Direction::Ccw } else { Direction::Cw });
-    let options = BooleanOptions { fill: ctx.fill, direction };
+    let direction = ctx.direction.unwrap_or(if font.is_cff() { Orientation::Ccw } else { Orientation::Cw });
+    let options = BooleanOptions { fill: ctx.fill, orientation: direction };
     let op = BooleanOp::Simplify;
     let answer = || -> Result<(usize, BooleanResult, bool, Option<Judged>)> {
         let shape = glyph_shape(font, gid)?;

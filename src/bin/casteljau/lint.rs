@@ -16,7 +16,7 @@ use crate::lint_units::{FileReport, Tally, Unit};
 use casteljau::format::{Element, Font, Source, font_count, parse_path, read_svg};
 use casteljau::lint::{Finding, Glyph, Kind, LintOptions, Severity, lint};
 use casteljau::num::NumberMode;
-use casteljau::shape::Direction;
+use casteljau::shape::Orientation;
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -26,7 +26,7 @@ use std::io::{IsTerminal, Write};
 struct Linter {
     kinds: Vec<Kind>,
     deny: Vec<Kind>,
-    direction: Option<Direction>,
+    direction: Option<Orientation>,
     kink_angle: f64,
     extremum_min: Option<BigRational>,
     max_work: f64,
@@ -35,7 +35,7 @@ struct Linter {
 }
 
 impl Linter {
-    fn options(&self, outer: Direction) -> LintOptions {
+    fn options(&self, outer: Orientation) -> LintOptions {
         let mut o = LintOptions::new(self.direction.unwrap_or(outer))
             .with_kink_angle(self.kink_angle)
             .expect("checked before the run");
@@ -45,7 +45,7 @@ impl Linter {
         o
     }
 
-    fn check(&self, at: Source<'static>, label: String, glyph: Glyph, outer: Direction) -> Unit {
+    fn check(&self, at: Source<'static>, label: String, glyph: Glyph, outer: Orientation) -> Unit {
         match lint(&glyph, &self.options(outer)) {
             Ok(findings) => Unit { at, label, glyph, findings, error: None, skipped: None },
             Err(e) => Unit { at, label, glyph, findings: vec![], error: Some(e.to_string()), skipped: None },
@@ -158,7 +158,7 @@ fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
     if args.files.is_empty() && args.path.is_none() {
         return Err("lint needs FILE arguments or --path".into());
     }
-    LintOptions::new(Direction::Ccw).with_kink_angle(args.kink_angle).map_err(|e| format!("--kink-angle: {e}"))?;
+    LintOptions::new(Orientation::Ccw).with_kink_angle(args.kink_angle).map_err(|e| format!("--kink-angle: {e}"))?;
     let extremum_min = args
         .extremum_min
         .as_deref()
@@ -217,7 +217,7 @@ fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
         let mut kept = vec![];
         let at = Source { element: Some(Element::Index(0)), ..Source::new("<path>") };
         let unit = match parse_path(d, linter.mode) {
-            Ok(contours) => linter.check(at, "path".into(), Glyph::new(contours), Direction::Ccw),
+            Ok(contours) => linter.check(at, "path".into(), Glyph::new(contours), Orientation::Ccw),
             Err(e) => Unit {
                 at,
                 label: "path".into(),
@@ -309,7 +309,7 @@ fn lint_font(
             f.set_variation(v).map_err(|e| format!("{file}: --variation: {e}"))?;
         }
         let gids = crate::glyphs::select(&f, names).map_err(|e| format!("{file}: {e}"))?;
-        let outer = if f.is_cff() { Direction::Ccw } else { Direction::Cw };
+        let outer = if f.is_cff() { Orientation::Ccw } else { Orientation::Cw };
         let rat4 = |b: [i16; 4]| b.map(|x| BigRational::from_integer(x.into()));
         // an instance moves the outline away from the default instance's head box
         let font_box = if variation.is_none() { f.head_box().map(rat4) } else { None };
@@ -380,7 +380,7 @@ fn lint_svg(
                     };
                     let at = Source { file, element: Some(element), tag: Some(s.tag.clone()), ..Default::default() };
                     match &s.contours {
-                        Ok(contours) => linter.check(at, label, Glyph::new(contours.clone()), Direction::Ccw),
+                        Ok(contours) => linter.check(at, label, Glyph::new(contours.clone()), Orientation::Ccw),
                         // not an error of the file: listed as skipped, as scan lists it
                         Err(e) if e.is_skipped() => Unit {
                             at,

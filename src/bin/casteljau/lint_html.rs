@@ -25,7 +25,7 @@
 use crate::lint_units::{FileReport, Unit};
 use casteljau::format::Element;
 use casteljau::lint::{Axis, Evidence, ExactValue, Finding, Kind, Severity};
-use casteljau::shape::Direction;
+use casteljau::shape::Orientation;
 use std::fmt::Write as _;
 
 use crate::lint_draw::{drawing, esc};
@@ -493,7 +493,7 @@ fn evidence(f: &Finding) -> String {
         Evidence::Direction { area, depth, expected } => {
             rows.push(("signed area", code(area)));
             rows.push(("depth", depth.to_string()));
-            let expected = if *expected == Direction::Cw { "clockwise" } else { "counter-clockwise" };
+            let expected = if *expected == Orientation::Cw { "clockwise" } else { "counter-clockwise" };
             rows.push(("expected", expected.into()));
         }
         Evidence::MissingExtremum { axis, extent } => {

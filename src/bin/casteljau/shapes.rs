@@ -17,8 +17,8 @@ use casteljau::num::{NumberMode, parse_points_in};
 use casteljau::oracle::check_against;
 use casteljau::path::ClosedPath;
 use casteljau::shape::{
-    Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Edge, Face, InputPiece, Location, Shape, Vertex,
-    boolean_within,
+    Arrangement, BooleanOp, BooleanOptions, BooleanResult, Edge, Face, InputPiece, Location, Orientation, Shape,
+    Vertex, boolean_within,
 };
 use casteljau::work::Budget;
 use num_rational::BigRational;
@@ -189,7 +189,7 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
     }
     let tol = tolerance(&args.tol)?;
     let options =
-        BooleanOptions { fill: args.fill.into(), direction: args.direction.map_or(Direction::Ccw, Into::into) };
+        BooleanOptions { fill: args.fill.into(), orientation: args.direction.map_or(Orientation::Ccw, Into::into) };
     let single = match args.operands.len() {
         0 => None,
         n if n == op.inputs() => {
