@@ -386,7 +386,7 @@ pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>
 /// use casteljau::{Point, rat};
 /// let path = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
 /// assert_eq!(path.contours().len(), 2);
-/// let PathWinding::Off(w) = path.winding(&Point::new(vec![rat(2), rat(2)]), &casteljau::work::Budget::unlimited()).unwrap() else { panic!() };
+/// let PathWinding::Off(w) = path.winding(&casteljau::num::Point2::new(rat(2), rat(2)), &casteljau::work::Budget::unlimited()).unwrap() else { panic!() };
 /// assert_eq!(w.winding(), 2);
 /// assert!(!w.inside(FillRule::EvenOdd));
 /// ```

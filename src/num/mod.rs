@@ -31,7 +31,7 @@ pub use parse::{
     MAX_BINARY_EXPONENT, MAX_EXPONENT, MAX_TOKEN_LEN, NumberMode, parse_number, parse_number_in, parse_numbers,
     parse_points, parse_points_in,
 };
-pub use point::Point;
+pub use point::{Point, Point2};
 pub use quadratic_field::{QuadraticExt, Radical, nearest_f64};
 pub use scalar::{Exact, Rational, Scalar, integer_sqrt, rat, ratio, ratio_to_f64, rational_sqrt};
 pub use small::{SmallRational, checked};

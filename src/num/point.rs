@@ -111,3 +111,97 @@ impl<S: fmt::Display> fmt::Display for Point<S> {
         write!(f, ")")
     }
 }
+
+/// A point (or vector) of the plane, `(x, y)`, with coordinates in `S`.
+///
+/// Planar code takes and returns `Point2`: the query points of winding numbers
+/// ([`crate::path::ClosedPath::winding`]), of arrangements and of boolean results, and the
+/// points of the float oracles. Unlike [`Point`] it cannot have the wrong dimension, so those
+/// APIs have no dimension error. Curves keep [`Point`], as they have any dimension;
+/// `Point2::try_from` converts (refusing a point that is not planar) and `Point::from` back.
+///
+/// `Copy` when `S` is (`Point2<f64>`). Serializes as [`Point`] does: an array of two exact
+/// strings.
+///
+/// # Example
+/// ```
+/// use casteljau::{Point, num::Point2, rat, ratio};
+/// let p = Point2::new(ratio(1, 2), rat(3));
+/// assert_eq!(p.to_string(), "(1/2, 3)");
+/// assert_eq!(Point::from(p.clone()), Point::new(vec![ratio(1, 2), rat(3)]));
+/// assert_eq!(Point2::try_from(&Point::new(vec![ratio(1, 2), rat(3)])).unwrap(), p);
+/// assert!(Point2::try_from(&Point::new(vec![rat(1), rat(2), rat(3)])).is_err());
+/// assert_eq!(p.to_f64(), Point2::new(0.5, 3.0));
+/// assert_eq!(serde_json::to_string(&p).unwrap(), r#"["1/2","3"]"#);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Point2<S> {
+    /// The first coordinate.
+    pub x: S,
+    /// The second coordinate.
+    pub y: S,
+}
+
+impl<S> Point2<S> {
+    /// The point `(x, y)`.
+    pub fn new(x: S, y: S) -> Self {
+        Point2 { x, y }
+    }
+}
+
+impl<S: Scalar> Point2<S> {
+    /// The point with coordinates converted to `f64`.
+    pub fn to_f64(&self) -> Point2<f64> {
+        Point2 { x: self.x.to_f64(), y: self.y.to_f64() }
+    }
+
+    /// `self − other`.
+    pub fn sub(&self, other: &Self) -> Self {
+        Point2 { x: self.x.clone() - &other.x, y: self.y.clone() - &other.y }
+    }
+
+    /// The cross product `self.x·other.y − self.y·other.x` (twice the signed area of the
+    /// triangle `0, self, other`).
+    pub fn cross(&self, other: &Self) -> S {
+        self.x.clone() * &other.y - self.y.clone() * &other.x
+    }
+}
+
+impl<S> From<[S; 2]> for Point2<S> {
+    fn from([x, y]: [S; 2]) -> Self {
+        Point2 { x, y }
+    }
+}
+
+impl<S> From<Point2<S>> for [S; 2] {
+    fn from(p: Point2<S>) -> Self {
+        [p.x, p.y]
+    }
+}
+
+impl<S: Scalar> From<Point2<S>> for Point<S> {
+    fn from(p: Point2<S>) -> Self {
+        Point::new(vec![p.x, p.y])
+    }
+}
+
+impl<S: Scalar> TryFrom<&Point<S>> for Point2<S> {
+    type Error = Error;
+    /// The planar point of a [`Point`] of dimension 2.
+    ///
+    /// # Errors
+    /// [`Error::DimensionMismatch`] for any other dimension.
+    fn try_from(p: &Point<S>) -> Result<Self> {
+        match p.coords.as_slice() {
+            [x, y] => Ok(Point2 { x: x.clone(), y: y.clone() }),
+            c => Err(Error::DimensionMismatch { expected: 2, found: c.len() }),
+        }
+    }
+}
+
+impl<S: fmt::Display> fmt::Display for Point2<S> {
+    /// `(x, y)` with each coordinate in its exact form.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "({}, {})", self.x, self.y)
+    }
+}

@@ -12,7 +12,7 @@
 //! assert_eq!(serde_json::to_string(&x).unwrap(), r#""1/2 + 1/6*sqrt(5)""#);
 //! ```
 
-use crate::num::point::Point;
+use crate::num::point::{Point, Point2};
 use crate::num::quadratic_field::QuadraticExt;
 use crate::num::scalar::{Exact, Scalar};
 use serde::Serialize;
@@ -63,6 +63,13 @@ impl<S: Scalar> Serialize for Point<S> {
     /// An array of exact strings, one per coordinate.
     fn serialize<Z: Serializer>(&self, s: Z) -> Result<Z::Ok, Z::Error> {
         strings(&self.coords, s)
+    }
+}
+
+impl<S: Scalar> Serialize for Point2<S> {
+    /// An array of two exact strings.
+    fn serialize<Z: Serializer>(&self, s: Z) -> Result<Z::Ok, Z::Error> {
+        strings(&[&self.x, &self.y], s)
     }
 }
 

@@ -30,7 +30,7 @@
 
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
-use crate::num::point::Point;
+use crate::num::point::{Point, Point2};
 use crate::num::scalar::{rat, ratio_to_f64};
 use crate::path::PathWinding;
 use crate::poly::Poly;
@@ -47,8 +47,7 @@ use serde::Serialize;
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Witness {
     /// The point, exactly.
-    #[serde(serialize_with = "crate::num::serial::strings")]
-    pub point: Vec<BigRational>,
+    pub point: Point2<BigRational>,
     /// The point, rounded.
     pub point_float: [f64; 2],
     /// Whether it is inside the exact result.
@@ -187,8 +186,11 @@ fn contour_parents(s: &Shape) -> Result<Vec<Option<usize>>> {
     let n = cs.len();
     let mut encloses = vec![vec![false; n]; n];
     for (j, cj) in cs.iter().enumerate() {
-        let probes: Vec<Point<BigRational>> =
-            cj.iter().filter_map(|seg| seg.eval(&BigRational::new(1.into(), 3.into())).ok()).collect();
+        let probes: Vec<Point2<BigRational>> = cj
+            .iter()
+            .filter_map(|seg| seg.eval(&BigRational::new(1.into(), 3.into())).ok())
+            .filter_map(|p| Point2::try_from(&p).ok())
+            .collect();
         for (i, ci) in cs.iter().enumerate() {
             if i == j {
                 continue;
@@ -212,7 +214,7 @@ fn contour_parents(s: &Shape) -> Result<Vec<Option<usize>>> {
 fn memberships(
     inputs: &[Shape],
     found: &Shape,
-    q: &Point<BigRational>,
+    q: &Point2<BigRational>,
     op: BooleanOp,
     options: BooleanOptions,
 ) -> Result<Option<(bool, bool)>> {
@@ -252,7 +254,7 @@ fn find_witness(
         let mut m = rat(1);
         for s in &arr.segs {
             for p in s.hull.iter().flatten() {
-                for c in &p.coords {
+                for c in [&p.x, &p.y] {
                     if c.abs() > m {
                         m = c.abs();
                     }
@@ -271,11 +273,11 @@ fn find_witness(
             let d = axis.unit();
             let mut s = step0.clone();
             while s < scale {
-                let q = Point::new(vec![&p.coords[0] + &s * &d[0], &p.coords[1] + &s * &d[1]]);
+                let q = Point2::new(&p.x + &s * &d[0], &p.y + &s * &d[1]);
                 if let Some((ie, ir)) = memberships(inputs, found, &q, op, options)? {
                     if ie != ir && far_from(exact, &q, tol) {
-                        let point_float = [ratio_to_f64(&q.coords[0]), ratio_to_f64(&q.coords[1])];
-                        return Ok(Some(Witness { point: q.coords, point_float, inside_exact: ie, inside_found: ir }));
+                        let point_float = [ratio_to_f64(&q.x), ratio_to_f64(&q.y)];
+                        return Ok(Some(Witness { point: q, point_float, inside_exact: ie, inside_found: ir }));
                     }
                     if ie == ir {
                         break; // stepped out of the difference
@@ -291,10 +293,10 @@ fn find_witness(
 /// `|C(t) − q| > tol` for every `t` of every piece, proved exactly.
 fn far_from(
     pieces: &[(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)],
-    q: &Point<BigRational>,
+    q: &Point2<BigRational>,
     tol: &BigRational,
 ) -> bool {
-    let (qf, tf) = ([ratio_to_f64(&q.coords[0]), ratio_to_f64(&q.coords[1])], ratio_to_f64(tol));
+    let (qf, tf) = ([ratio_to_f64(&q.x), ratio_to_f64(&q.y)], ratio_to_f64(tol));
     for (s, lo, hi) in pieces {
         if let Some([x0, y0, x1, y1]) = s.bbox
             && (qf[0] < x0 - 2.0 * tf || qf[0] > x1 + 2.0 * tf || qf[1] < y0 - 2.0 * tf || qf[1] > y1 + 2.0 * tf)
@@ -302,8 +304,8 @@ fn far_from(
             continue; // the box is farther than tol (with room for rounding)
         }
         // |C(t) − q|² − tol² times W²: (X − q_x W)² + (Y − q_y W)² − tol² W²
-        let fx = s.x() - &s.w().scale(&q.coords[0]);
-        let fy = s.y() - &s.w().scale(&q.coords[1]);
+        let fx = s.x() - &s.w().scale(&q.x);
+        let fy = s.y() - &s.w().scale(&q.y);
         let g: Poly<BigRational> = &(&(&fx * &fx) + &(&fy * &fy)) - &(s.w() * s.w()).scale(&(tol * tol));
         let (a, _) = lo.interval();
         let (_, b) = hi.interval();
@@ -336,8 +338,8 @@ impl FloatPiece {
         fp.speed = match (&s.hull, s.polynomial) {
             (Some(ps), true) => {
                 let legs = ps.windows(2).map(|w| {
-                    let dx = ratio_to_f64(&(&w[1].coords[0] - &w[0].coords[0]));
-                    let dy = ratio_to_f64(&(&w[1].coords[1] - &w[0].coords[1]));
+                    let dx = ratio_to_f64(&(&w[1].x - &w[0].x));
+                    let dy = ratio_to_f64(&(&w[1].y - &w[0].y));
                     dx.hypot(dy)
                 });
                 s.degree() as f64 * legs.fold(0.0, f64::max) * (1.0 + 1e-12)
@@ -389,7 +391,7 @@ fn float_points(s: &Seg) -> Option<Vec<[f64; 2]>> {
     if !s.polynomial {
         return None;
     }
-    s.hull.as_ref().map(|ps| ps.iter().map(|p| [ratio_to_f64(&p.coords[0]), ratio_to_f64(&p.coords[1])]).collect())
+    s.hull.as_ref().map(|ps| ps.iter().map(|p| [ratio_to_f64(&p.x), ratio_to_f64(&p.y)]).collect())
 }
 
 /// The binary64 curve of control points `ps`.

@@ -6,7 +6,7 @@ use super::MAX_PATH_SEGMENTS;
 use super::winding::{Winding, check_closed, winding_estimate, winding_number_rational};
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
-use crate::num::point::Point;
+use crate::num::point::Point2;
 use crate::num::scalar::rat;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::rational::RationalBezier;
@@ -83,7 +83,7 @@ impl std::str::FromStr for FillRule {
 /// # Example
 /// ```
 /// use casteljau::path::{ClosedPath, PathWinding};
-/// use casteljau::{BezierCurve, Point, num::parse_points, rat};
+/// use casteljau::{BezierCurve, num::{Point2, parse_points}, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let square = |a: i64, b: i64| {
 ///     let p = |x: i64, y: i64| format!("{x} {y}");
@@ -92,7 +92,7 @@ impl std::str::FromStr for FillRule {
 /// };
 /// let path = ClosedPath::from_polynomial(vec![square(0, 3), square(1, 2)]).unwrap();
 /// assert_eq!(path.segments(), 8);
-/// let w = path.winding(&Point::new(vec![rat(3) / rat(2), rat(3) / rat(2)]), &casteljau::work::Budget::unlimited()).unwrap();
+/// let w = path.winding(&Point2::new(rat(3) / rat(2), rat(3) / rat(2)), &casteljau::work::Budget::unlimited()).unwrap();
 /// assert!(matches!(w, PathWinding::Off(n) if n.winding() == 2));
 /// assert!(ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 1")]]).is_err()); // not closed
 /// ```
@@ -188,12 +188,12 @@ impl ClosedPath {
     /// # Example
     /// ```
     /// use casteljau::path::ClosedPath;
-    /// use casteljau::{BezierCurve, Point, num::parse_points, rat};
+    /// use casteljau::{BezierCurve, num::{Point2, parse_points}, rat};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
-    /// assert!(path.winding_estimate(&Point::new(vec![rat(1), rat(1)])) > 0.0);
+    /// assert!(path.winding_estimate(&Point2::new(rat(1), rat(1))) > 0.0);
     /// ```
-    pub fn winding_estimate(&self, q: &Point<BigRational>) -> f64 {
+    pub fn winding_estimate(&self, q: &Point2<BigRational>) -> f64 {
         self.contours.iter().map(|c| winding_estimate(c, q)).sum()
     }
 
@@ -203,22 +203,21 @@ impl ClosedPath {
     /// none). See the [module documentation](super) for how it is decided.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] when `q` is not planar; [`Error::WorkLimit`] when the
-    /// estimate exceeds `budget`.
+    /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// # Example
     /// ```
     /// use casteljau::path::{ClosedPath, PathWinding};
-    /// use casteljau::{BezierCurve, Point, num::parse_points, rat, work::Budget};
+    /// use casteljau::{BezierCurve, num::{Point2, parse_points}, rat, work::Budget};
     /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
     /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
-    /// let on = path.winding(&Point::new(vec![rat(1), rat(0)]), &Budget::unlimited()).unwrap();
+    /// let on = path.winding(&Point2::new(rat(1), rat(0)), &Budget::unlimited()).unwrap();
     /// assert!(matches!(on, PathWinding::OnBoundary { on_boundary } if on_boundary.segment == 1));
-    /// assert!(path.winding(&Point::new(vec![rat(1), rat(0)]), &Budget::new(10.0, "--max-work")).is_err());
-    /// let w = path.winding(&Point::new(vec![rat(1), rat(1) / rat(2)]), &Budget::unlimited()).unwrap();
+    /// assert!(path.winding(&Point2::new(rat(1), rat(0)), &Budget::new(10.0, "--max-work")).is_err());
+    /// let w = path.winding(&Point2::new(rat(1), rat(1) / rat(2)), &Budget::unlimited()).unwrap();
     /// assert_eq!(serde_json::to_string(&w).unwrap(), r#"{"even_odd":true,"inside":true,"winding":-1}"#);
     /// ```
-    pub fn winding(&self, q: &Point<BigRational>, budget: &Budget) -> Result<PathWinding> {
+    pub fn winding(&self, q: &Point2<BigRational>, budget: &Budget) -> Result<PathWinding> {
         budget
             .check(format!("the winding number of a path of {} segments", self.segments()), self.winding_estimate(q))?;
         let mut total = 0i64;
@@ -242,10 +241,10 @@ impl ClosedPath {
 /// # Example
 /// ```
 /// use casteljau::path::{ClosedPath, PathWinding};
-/// use casteljau::{BezierCurve, Point, num::parse_points, rat};
+/// use casteljau::{BezierCurve, num::{Point2, parse_points}, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
-/// let on = path.winding(&Point::new(vec![rat(1), rat(1)]), &casteljau::work::Budget::unlimited()).unwrap();
+/// let on = path.winding(&Point2::new(rat(1), rat(1)), &casteljau::work::Budget::unlimited()).unwrap();
 /// assert_eq!(serde_json::to_string(&on).unwrap(), r#"{"on_boundary":{"segment":0,"subpath":0,"t":"1/2","t_float":0.5}}"#);
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -327,10 +326,10 @@ impl WindingNumber {
 /// # Example
 /// ```
 /// use casteljau::path::{ClosedPath, PathWinding};
-/// use casteljau::{BezierCurve, Point, num::parse_points, rat};
+/// use casteljau::{BezierCurve, num::{Point2, parse_points}, rat};
 /// let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 /// let path = ClosedPath::from_polynomial(vec![vec![seg("0 0, 2 0"), seg("2 0, 0 2"), seg("0 2, 0 0")]]).unwrap();
-/// let PathWinding::OnBoundary { on_boundary: b } = path.winding(&Point::new(vec![rat(1), rat(1)]), &casteljau::work::Budget::unlimited()).unwrap() else { panic!() };
+/// let PathWinding::OnBoundary { on_boundary: b } = path.winding(&Point2::new(rat(1), rat(1)), &casteljau::work::Budget::unlimited()).unwrap() else { panic!() };
 /// assert_eq!((b.subpath, b.segment, b.t.to_string(), b.t_float), (0, 1, "1/2".to_string(), 0.5));
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -18,11 +18,11 @@
 //! # Example
 //! ```
 //! use casteljau::path::{ClosedPath, FillRule, PathWinding};
-//! use casteljau::{BezierCurve, Point, num::parse_points, rat, ratio, work::Budget};
+//! use casteljau::{BezierCurve, num::{Point2, parse_points}, rat, ratio, work::Budget};
 //! let seg = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
 //! // the lens between the parabola 0 0, 1 2, 2 0 and the chord back (clockwise)
 //! let lens = ClosedPath::from_polynomial(vec![vec![seg("0 0, 1 2, 2 0"), seg("2 0, 0 0")]]).unwrap();
-//! let at = |x, y| lens.winding(&Point::new(vec![x, y]), &Budget::unlimited()).unwrap();
+//! let at = |x, y| lens.winding(&Point2::new(x, y), &Budget::unlimited()).unwrap();
 //! assert!(matches!(at(rat(1), ratio(1, 2)), PathWinding::Off(w) if w.winding() == -1 && w.inside(FillRule::NonZero)));
 //! assert!(matches!(at(rat(1), rat(2)), PathWinding::Off(w) if w.winding() == 0));
 //! assert!(matches!(at(rat(1), rat(1)), PathWinding::OnBoundary { on_boundary } if on_boundary.segment == 0));

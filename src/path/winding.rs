@@ -13,7 +13,7 @@
 //! The public face of this algorithm is [`super::ClosedPath::winding`].
 
 use crate::error::{Error, Result};
-use crate::num::point::Point;
+use crate::num::point::{Point, Point2};
 use crate::num::scalar::rat;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
@@ -49,8 +49,8 @@ pub(crate) enum Event {
 
 /// The estimated work of [`winding_number_rational`]: [`crate::work::winding_segment`] summed
 /// over the segments (the query point's bits counted in each).
-pub(crate) fn winding_estimate(path: &[RationalBezier<BigRational>], q: &Point<BigRational>) -> f64 {
-    let qb = q.coords.iter().map(crate::work::bits).sum::<u64>();
+pub(crate) fn winding_estimate(path: &[RationalBezier<BigRational>], q: &Point2<BigRational>) -> f64 {
+    let qb = crate::work::bits(&q.x) + crate::work::bits(&q.y);
     path.iter()
         .map(|s| crate::work::winding_segment(s.degree(), crate::work::max_bits(s.homogeneous().points()) + qb))
         .sum()
@@ -89,7 +89,10 @@ pub(super) fn check_closed(path: &[RationalBezier<BigRational>]) -> Result<()> {
 /// not start where the previous one ends, or the last does not end at the first's start);
 /// [`Error::WeightsVanish`] for a rational segment undefined on `[0, 1]`; [`Error::TooLarge`]
 /// beyond [`MAX_PATH_SEGMENTS`].
-pub(crate) fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &Point<BigRational>) -> Result<Winding> {
+pub(crate) fn winding_number_rational(
+    path: &[RationalBezier<BigRational>],
+    q: &Point2<BigRational>,
+) -> Result<Winding> {
     let bad = |m: String| Error::InvalidArgument { message: m };
     if path.is_empty() {
         return Err(bad("an empty path".into()));
@@ -97,14 +100,14 @@ pub(crate) fn winding_number_rational(path: &[RationalBezier<BigRational>], q: &
     if path.len() > MAX_PATH_SEGMENTS {
         return Err(Error::TooLarge { what: "segments in a path", value: path.len(), limit: MAX_PATH_SEGMENTS });
     }
-    if q.dim() != 2 || path.iter().any(|s| s.dim() != 2) {
+    if path.iter().any(|s| s.dim() != 2) {
         return Err(bad("winding numbers are for planar paths and points".into()));
     }
     for s in path {
         s.check_defined(&rat(0), &rat(1))?;
     }
     check_closed(path)?;
-    let (qx, qy) = (&q.coords[0], &q.coords[1]);
+    let (qx, qy) = (&q.x, &q.y);
     let mut events: Vec<Event> = vec![];
     for (i, s) in path.iter().enumerate() {
         let [x, y, w]: [Poly<BigRational>; 3] =

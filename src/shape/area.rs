@@ -168,8 +168,7 @@ fn whole_area(s: &Seg) -> Option<BigRational> {
         (None, Some(p)) => {
             for i in 0..=n {
                 for j in i + 1..=n {
-                    let (a, b) = (&p[i].coords, &p[j].coords);
-                    total += &k[i][j] * (&a[0] * &b[1] - &b[0] * &a[1]);
+                    total += &k[i][j] * p[i].cross(&p[j]);
                 }
             }
         }

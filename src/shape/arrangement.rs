@@ -31,7 +31,7 @@ use super::ray::{Axis, Origin, Piece, RayWinding, whole, winding};
 use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::intersect::Domain;
-use crate::num::point::Point;
+use crate::num::point::Point2;
 use crate::num::scalar::rat;
 use crate::path::ClosedPath;
 use crate::poly::algebraic::RealAlgebraic;
@@ -171,7 +171,7 @@ pub(crate) struct EdgeData {
 /// # Example
 /// ```
 /// use casteljau::shape::{Arrangement, Location, Shape};
-/// use casteljau::{Point, rat};
+/// use casteljau::{num::Point2, rat};
 /// // two unit squares side by side share the edge x = 1
 /// let a: Shape = "M0 0 H1 V1 H0 Z".parse().unwrap();
 /// let b: Shape = "M1 0 H2 V1 H1 Z".parse().unwrap();
@@ -180,7 +180,7 @@ pub(crate) struct EdgeData {
 /// assert_eq!(arr.edges().len(), 7); // the shared edge is one edge carrying two pieces
 /// let shared = arr.edges().into_iter().find(|e| e.pieces.len() == 2).unwrap();
 /// assert_eq!((shared.winding_left.clone(), shared.winding_right.clone()), (vec![1, 0], vec![0, 1]));
-/// let p = |x, y| Point::new(vec![x, y]);
+/// let p = Point2::new;
 /// let faces = arr.faces().unwrap();
 /// assert_eq!(faces.len(), 3); // two squares and the outside
 /// let Location::Face { winding, .. } = arr.locate(&p(rat(3) / rat(2), rat(1) / rat(2))).unwrap() else { panic!() };
@@ -253,7 +253,7 @@ fn inner_parameter(s: &Seg, lo: &RealAlgebraic, hi: &RealAlgebraic) -> BigRation
     let mut t = RealAlgebraic::rational_between(lo, hi);
     for _ in 0..64 {
         let d = s.direction_at(&t);
-        if !(d[0].is_zero() && d[1].is_zero()) {
+        if !(d.x.is_zero() && d.y.is_zero()) {
             return t;
         }
         t = RealAlgebraic::rational_between(lo, &RealAlgebraic::from(t));
@@ -484,7 +484,7 @@ impl Arrangement {
                     });
                     return Ordering::Equal;
                 };
-                let v2 = [p.coords[0].clone(), p.coords[1].clone()];
+                let v2 = p.clone();
                 match compare_tangent(&out[i].1, &out[j].1, &angles[i], &angles[j], &v2) {
                     Ok(o) => o,
                     Err(e) => {
@@ -513,12 +513,12 @@ impl Arrangement {
     }
 
     /// A rational point inside the edge of `h` and an axis direction pointing to `h`'s left.
-    pub(crate) fn beside_point(&self, h: HalfEdge) -> (Point<BigRational>, Axis) {
+    pub(crate) fn beside_point(&self, h: HalfEdge) -> (Point2<BigRational>, Axis) {
         let e = &self.edges[h.edge];
         let s = &self.segs[e.seg];
         let t = inner_parameter(s, &e.lo, &e.hi);
         let d = s.direction_at(&t);
-        let n = if h.forward { [-d[1].clone(), d[0].clone()] } else { [d[1].clone(), -d[0].clone()] };
+        let n = if h.forward { [-d.y.clone(), d.x.clone()] } else { [d.y.clone(), -d.x.clone()] };
         (s.point_at(&t), Axis::toward(&n))
     }
 
@@ -528,7 +528,7 @@ impl Arrangement {
     }
 
     /// The winding number of cycles around a rational point not on them.
-    pub(crate) fn winding_around(&self, cycles: &[Vec<HalfEdge>], q: &Point<BigRational>) -> Result<i64> {
+    pub(crate) fn winding_around(&self, cycles: &[Vec<HalfEdge>], q: &Point2<BigRational>) -> Result<i64> {
         let pieces: Vec<Vec<Piece<'_>>> = cycles.iter().map(|c| c.iter().map(|&x| self.piece(x)).collect()).collect();
         match winding(&pieces, q, Axis::PosX, Origin::Free)? {
             RayWinding::Off(w) => Ok(w),
@@ -693,12 +693,9 @@ impl Arrangement {
     /// input's winding number there). Faces are numbered as [`Self::faces`] lists them.
     ///
     /// # Errors
-    /// As [`Self::faces`]; [`Error::InvalidArgument`] for a point that is not planar.
-    pub fn locate(&self, q: &Point<BigRational>) -> Result<Location> {
-        if q.dim() != 2 {
-            return Err(Error::InvalidArgument { message: "points to locate are planar".into() });
-        }
-        let (qx, qy) = (crate::num::scalar::ratio_to_f64(&q.coords[0]), crate::num::scalar::ratio_to_f64(&q.coords[1]));
+    /// As [`Self::faces`].
+    pub fn locate(&self, q: &Point2<BigRational>) -> Result<Location> {
+        let (qx, qy) = (crate::num::scalar::ratio_to_f64(&q.x), crate::num::scalar::ratio_to_f64(&q.y));
         for (v, (k, t)) in self.vertex_at.iter().enumerate() {
             let f = self.segs[*k].point_float(t);
             if (f[0] - qx).abs() <= 1e-300_f64.max(f[0].abs() * 4.0 * f64::EPSILON)

@@ -23,6 +23,7 @@ use super::arrangement::{Arrangement, HalfEdge, InputPiece};
 use super::render::svg_path;
 use super::segment::Seg;
 use crate::error::{Error, Result};
+use crate::num::point::Point2;
 use crate::num::scalar::{rat, ratio_to_f64};
 use crate::path::FillRule;
 use crate::poly::algebraic::RealAlgebraic;
@@ -186,25 +187,22 @@ impl BooleanResult {
     /// `None` when the point lies on the boundary. Computed from the exact pieces alone.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a point that is not planar.
+    /// As the arrangement's ray casting (none for a point off the boundary).
     ///
     /// # Example
     /// ```
     /// use casteljau::shape::{boolean, BooleanOp, BooleanOptions, Shape};
-    /// use casteljau::{Point, rat, ratio};
+    /// use casteljau::{num::Point2, rat, ratio};
     /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
     /// let b: Shape = "M1 1 H3 V3 H1 Z".parse().unwrap();
     /// let d = boolean(BooleanOp::Difference, &[a, b], BooleanOptions::default()).unwrap();
-    /// let p = |x, y| Point::new(vec![x, y]);
+    /// let p = Point2::new;
     /// assert_eq!(d.winding(&p(ratio(1, 2), ratio(1, 2))).unwrap(), Some(1));
     /// assert_eq!(d.winding(&p(ratio(3, 2), ratio(3, 2))).unwrap(), Some(0));
     /// assert_eq!(d.winding(&p(rat(1), ratio(3, 2))).unwrap(), None); // on the boundary
     /// ```
-    pub fn winding(&self, q: &crate::num::point::Point<BigRational>) -> Result<Option<i64>> {
+    pub fn winding(&self, q: &Point2<BigRational>) -> Result<Option<i64>> {
         use super::ray::{Axis, Origin, Piece, RayWinding, winding};
-        if q.dim() != 2 {
-            return Err(Error::InvalidArgument { message: "points are planar".into() });
-        }
         let (segs, cycles) = &self.exact;
         let pieces: Vec<Vec<Piece<'_>>> = cycles
             .iter()
@@ -239,12 +237,12 @@ impl BooleanResult {
     /// # Example
     /// ```
     /// use casteljau::shape::{boolean, BooleanOp, BooleanOptions, Shape};
-    /// use casteljau::{Point, ratio};
+    /// use casteljau::{num::Point2, ratio};
     /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
     /// let r = boolean(BooleanOp::Simplify, &[a], BooleanOptions::default()).unwrap();
-    /// assert_eq!(r.contains(&Point::new(vec![ratio(1, 2), ratio(1, 3)])).unwrap(), Some(true));
+    /// assert_eq!(r.contains(&Point2::new(ratio(1, 2), ratio(1, 3))).unwrap(), Some(true));
     /// ```
-    pub fn contains(&self, q: &crate::num::point::Point<BigRational>) -> Result<Option<bool>> {
+    pub fn contains(&self, q: &Point2<BigRational>) -> Result<Option<bool>> {
         Ok(self.winding(q)?.map(|w| w != 0))
     }
 }
@@ -334,7 +332,7 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     let mut encloses = vec![vec![false; n]; n];
     for (j, cj) in cycles.iter().enumerate() {
         let (probe, _) = arr.beside_point(cj[0]);
-        let q = [ratio_to_f64(&probe.coords[0]), ratio_to_f64(&probe.coords[1])];
+        let q = [ratio_to_f64(&probe.x), ratio_to_f64(&probe.y)];
         for (i, ci) in cycles.iter().enumerate() {
             let b = boxes[i];
             if i == j || q[0] < b[0] || q[0] > b[2] || q[1] < b[1] || q[1] > b[3] {

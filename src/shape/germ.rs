@@ -18,6 +18,7 @@
 
 use super::segment::Seg;
 use crate::error::{Error, Result};
+use crate::num::point::Point2;
 use crate::num::scalar::rat;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
@@ -94,14 +95,14 @@ pub(crate) fn compare_tangent(
     h: &Germ<'_>,
     ga: &Angle,
     ha: &Angle,
-    v: &[BigRational; 2],
+    v: &Point2<BigRational>,
 ) -> Result<Ordering> {
     let refuse = || Error::InvalidArgument {
         message: format!(
             "two curves leave the vertex ({}, {}) tangentially where their order around it cannot be decided \
              exactly (an irrational parameter or a cusp there)",
-            crate::num::scalar::ratio_to_f64(&v[0]),
-            crate::num::scalar::ratio_to_f64(&v[1])
+            crate::num::scalar::ratio_to_f64(&v.x),
+            crate::num::scalar::ratio_to_f64(&v.y)
         ),
     };
     let (Some(s), Some(t)) = (g.t0.to_rational(), h.t0.to_rational()) else { return Err(refuse()) };
@@ -109,7 +110,7 @@ pub(crate) fn compare_tangent(
         return Err(refuse());
     }
     let d = g.seg.direction_at(s);
-    let d = if g.sigma < 0 { [-d[0].clone(), -d[1].clone()] } else { d };
+    let d = if g.sigma < 0 { [-d.x.clone(), -d.y.clone()] } else { [d.x, d.y] };
     let n = [-d[1].clone(), d[0].clone()];
     let order = g.seg.degree() * h.seg.degree() + SERIES_MARGIN;
     let a = graph_series(g, s, v, &d, &n, order);
@@ -129,14 +130,14 @@ pub(crate) fn compare_tangent(
 fn graph_series(
     g: &Germ<'_>,
     t0: &BigRational,
-    v: &[BigRational; 2],
+    v: &Point2<BigRational>,
     d: &[BigRational; 2],
     n: &[BigRational; 2],
     order: usize,
 ) -> Poly<BigRational> {
     let s = g.seg;
-    let px = s.x() - &s.w().scale(&v[0]);
-    let py = s.y() - &s.w().scale(&v[1]);
+    let px = s.x() - &s.w().scale(&v.x);
+    let py = s.y() - &s.w().scale(&v.y);
     let along = |k: &[BigRational; 2]| &px.scale(&k[0]) + &py.scale(&k[1]);
     // the edge's local parameter τ: t = t0 + σ·τ
     let local = |p: &Poly<BigRational>| if g.sigma < 0 { p.shift(t0).reflect() } else { p.shift(t0) };

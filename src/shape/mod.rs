@@ -37,7 +37,7 @@ pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, M
 pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean, boolean_within};
 
 use crate::error::Result;
-use crate::num::point::Point;
+use crate::num::point::Point2;
 use crate::path::ClosedPath;
 use crate::rational::RationalBezier;
 use num_rational::BigRational;
@@ -95,30 +95,32 @@ impl Shape {
     /// The shape of closed polygons (each a list of vertices; the closing side is implied).
     ///
     /// # Errors
-    /// [`crate::Error::InvalidArgument`] for a polygon of fewer than two vertices or a vertex
-    /// that is not planar.
+    /// [`crate::Error::InvalidArgument`] for a polygon of fewer than two vertices.
     ///
     /// # Example
     /// ```
     /// use casteljau::shape::Shape;
-    /// use casteljau::{Point, rat};
-    /// let p = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
+    /// use casteljau::{num::Point2, rat};
+    /// let p = |x: i64, y: i64| Point2::new(rat(x), rat(y));
     /// let s = Shape::polygons(vec![vec![p(0, 0), p(1, 0), p(0, 1)]]).unwrap();
     /// assert_eq!(s.path().segments(), 3);
     /// ```
-    pub fn polygons(polygons: Vec<Vec<Point<BigRational>>>) -> Result<Self> {
+    pub fn polygons(polygons: Vec<Vec<Point2<BigRational>>>) -> Result<Self> {
         let one = || crate::num::scalar::rat(1);
         let mut contours = vec![];
         for poly in polygons {
-            if poly.len() < 2 || poly.iter().any(|p| p.dim() != 2) {
+            if poly.len() < 2 {
                 return Err(crate::Error::InvalidArgument {
-                    message: format!("a polygon needs at least two planar vertices, not {}", poly.len()),
+                    message: format!("a polygon needs at least two vertices, not {}", poly.len()),
                 });
             }
             let n = poly.len();
             contours.push(
                 (0..n)
-                    .map(|i| RationalBezier::new(vec![poly[i].clone(), poly[(i + 1) % n].clone()], vec![one(), one()]))
+                    .map(|i| {
+                        let (a, b) = (poly[i].clone().into(), poly[(i + 1) % n].clone().into());
+                        RationalBezier::new(vec![a, b], vec![one(), one()])
+                    })
                     .collect::<Result<Vec<_>>>()?,
             );
         }

@@ -6,7 +6,7 @@
 //! small integer coordinates (doubled, see [`Seg::small`]) every test runs in `i64`/`i128`.
 
 use super::segment::Seg;
-use crate::num::point::Point;
+use crate::num::point::Point2;
 use crate::num::scalar::rat;
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;
@@ -15,23 +15,23 @@ use num_traits::{Signed, Zero};
 /// Whether every point of `xs` is strictly on the negative side of the line through `p` with
 /// normal `n`, and every point of `ys` strictly on the positive side (points equal to `p` aside).
 fn separated_at(
-    p: &Point<BigRational>,
+    p: &Point2<BigRational>,
     n: &[BigRational; 2],
-    xs: &[Point<BigRational>],
-    ys: &[Point<BigRational>],
+    xs: &[Point2<BigRational>],
+    ys: &[Point2<BigRational>],
 ) -> bool {
-    let dot = |q: &Point<BigRational>| (&q.coords[0] - &p.coords[0]) * &n[0] + (&q.coords[1] - &p.coords[1]) * &n[1];
+    let dot = |q: &Point2<BigRational>| (&q.x - &p.x) * &n[0] + (&q.y - &p.y) * &n[1];
     xs.iter().filter(|q| *q != p).all(|q| dot(q).is_negative())
         && ys.iter().filter(|q| *q != p).all(|q| dot(q).is_positive())
 }
 
 /// Two segments sharing the end point `p`: a line through `p` with their other control points
 /// strictly on opposite sides.
-fn split_at_common_point(p: &Point<BigRational>, a: &[Point<BigRational>], b: &[Point<BigRational>]) -> bool {
-    let away = |ps: &[Point<BigRational>]| -> Option<[BigRational; 2]> {
+fn split_at_common_point(p: &Point2<BigRational>, a: &[Point2<BigRational>], b: &[Point2<BigRational>]) -> bool {
+    let away = |ps: &[Point2<BigRational>]| -> Option<[BigRational; 2]> {
         // the control point nearest to p along the polygon that differs from it
         let first = if ps[0] == *p { ps.iter().find(|q| *q != p) } else { ps.iter().rev().find(|q| *q != p) };
-        first.map(|q| [&q.coords[0] - &p.coords[0], &q.coords[1] - &p.coords[1]])
+        first.map(|q| [&q.x - &p.x, &q.y - &p.y])
     };
     let (Some(da), Some(db)) = (away(a), away(b)) else { return false };
     let l1 = |v: &[BigRational; 2]| v[0].abs() + v[1].abs();
@@ -89,9 +89,9 @@ fn hulls_separated_small(a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
 /// Whether a line strictly separates the convex hulls of `a` and `b` (tested on the normals of
 /// every chord of either point set: a separating axis of two convex polygons is normal to one of
 /// their edges).
-fn hulls_separated(a: &[Point<BigRational>], b: &[Point<BigRational>]) -> bool {
-    let proj = |n: &[BigRational; 2], ps: &[Point<BigRational>]| -> (BigRational, BigRational) {
-        let mut it = ps.iter().map(|q| &q.coords[0] * &n[0] + &q.coords[1] * &n[1]);
+fn hulls_separated(a: &[Point2<BigRational>], b: &[Point2<BigRational>]) -> bool {
+    let proj = |n: &[BigRational; 2], ps: &[Point2<BigRational>]| -> (BigRational, BigRational) {
+        let mut it = ps.iter().map(|q| &q.x * &n[0] + &q.y * &n[1]);
         let first = it.next().expect("control points");
         it.fold((first.clone(), first), |(lo, hi), v| {
             (if v < lo { v.clone() } else { lo }, if v > hi { v } else { hi })
@@ -100,7 +100,7 @@ fn hulls_separated(a: &[Point<BigRational>], b: &[Point<BigRational>]) -> bool {
     for set in [a, b] {
         for i in 0..set.len() {
             for j in i + 1..set.len() {
-                let n = [&set[i].coords[1] - &set[j].coords[1], &set[j].coords[0] - &set[i].coords[0]];
+                let n = [&set[i].y - &set[j].y, &set[j].x - &set[i].x];
                 if n[0].is_zero() && n[1].is_zero() {
                     continue;
                 }
@@ -125,18 +125,13 @@ pub(crate) fn injective(s: &Seg) -> bool {
     let polynomial = s.curve.weights().windows(2).all(|w| w[0] == w[1]);
     if !polynomial {
         if s.degree() == 2 {
-            let d = |i: usize, j: usize, k: usize| {
-                (&ps[j].coords[0] - &ps[i].coords[0]) * (&ps[k].coords[1] - &ps[i].coords[1])
-            };
-            let e = |i: usize, j: usize, k: usize| {
-                (&ps[j].coords[1] - &ps[i].coords[1]) * (&ps[k].coords[0] - &ps[i].coords[0])
-            };
+            let d = |i: usize, j: usize, k: usize| (&ps[j].x - &ps[i].x) * (&ps[k].y - &ps[i].y);
+            let e = |i: usize, j: usize, k: usize| (&ps[j].y - &ps[i].y) * (&ps[k].x - &ps[i].x);
             return d(0, 1, 2) != e(0, 1, 2);
         }
         return false;
     }
-    let h: Vec<[BigRational; 2]> =
-        ps.windows(2).map(|w| [&w[1].coords[0] - &w[0].coords[0], &w[1].coords[1] - &w[0].coords[1]]).collect();
+    let h: Vec<[BigRational; 2]> = ps.windows(2).map(|w| [&w[1].x - &w[0].x, &w[1].y - &w[0].y]).collect();
     let mut candidates: Vec<[BigRational; 2]> = h.clone();
     let sum = h.iter().fold([rat(0), rat(0)], |acc, v| [&acc[0] + &v[0], &acc[1] + &v[1]]);
     candidates.push(sum);

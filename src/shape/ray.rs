@@ -11,7 +11,7 @@
 
 use super::segment::Seg;
 use crate::error::{Error, Result};
-use crate::num::point::Point;
+use crate::num::point::Point2;
 use crate::num::scalar::rat;
 use crate::path::winding::{Event, count_crossings};
 use crate::poly::Poly;
@@ -111,11 +111,11 @@ pub(crate) enum RayWinding {
 /// through the origin (the origin must be a point where the pieces cross the ray).
 pub(crate) fn winding(
     cycles: &[Vec<Piece<'_>>],
-    q: &Point<BigRational>,
+    q: &Point2<BigRational>,
     axis: Axis,
     origin: Origin,
 ) -> Result<RayWinding> {
-    let (qu, qv) = axis.rotate(&q.coords[0], &q.coords[1]);
+    let (qu, qv) = axis.rotate(&q.x, &q.y);
     let (qu_lo, qu_hi) = super::segment::outward(&qu);
     let (qv_lo, qv_hi) = super::segment::outward(&qv);
     let mut total = 0i64;
@@ -166,8 +166,8 @@ fn end_sides(piece: &Piece<'_>, qv: &BigRational, axis: Axis) -> Option<(Orderin
     if piece.lo.to_rational() != Some(&zero) || piece.hi.to_rational() != Some(&one) {
         return None;
     }
-    let side = |p: &Point<BigRational>| {
-        let (_, v) = axis.rotate(&p.coords[0], &p.coords[1]);
+    let side = |p: &Point2<BigRational>| {
+        let (_, v) = axis.rotate(&p.x, &p.y);
         v.cmp(qv)
     };
     let (a, b) = (side(&piece.seg.start), side(&piece.seg.end));

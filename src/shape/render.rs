@@ -59,7 +59,7 @@ fn sub_curve(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> Vec<Vec<[f64;
     let polynomial = s.polynomial;
     if polynomial && let (Some(a), Some(b), Some(ps)) = (from.to_rational(), to.to_rational(), &s.hull) {
         let (zero, one) = (rat(0), rat(1));
-        let f = |p: &crate::num::point::Point<BigRational>| [ratio_to_f64(&p.coords[0]), ratio_to_f64(&p.coords[1])];
+        let f = |p: &crate::num::point::Point2<BigRational>| [ratio_to_f64(&p.x), ratio_to_f64(&p.y)];
         if *a == zero && *b == one {
             return vec![ps.iter().map(f).collect()];
         }

@@ -1,7 +1,7 @@
 //! One input segment prepared for the arrangement: its homogeneous power form, the direction of
 //! its tangent as a polynomial vector, an outward-rounded box, and exact evaluation.
 
-use crate::num::point::Point;
+use crate::num::point::Point2;
 use crate::num::scalar::rat;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
@@ -68,12 +68,12 @@ pub(crate) struct Seg {
     /// weights have one sign (then the curve lies in their convex hull).
     pub bbox: Option<[f64; 4]>,
     /// The control points when the hull property holds.
-    pub hull: Option<Vec<Point<BigRational>>>,
+    pub hull: Option<Vec<Point2<BigRational>>>,
     /// A single point (every control point the same): no region, ignored.
     pub degenerate: bool,
     /// The first control point (its start) and the last (its end), exactly.
-    pub start: Point<BigRational>,
-    pub end: Point<BigRational>,
+    pub start: Point2<BigRational>,
+    pub end: Point2<BigRational>,
     /// Twice the control points, when those are integers of at most 24 bits (font coordinates,
     /// with TrueType's implied on-curve points at half-integers): then the hull tests and the
     /// areas run in `i64`/`i128`, exactly.
@@ -81,11 +81,11 @@ pub(crate) struct Seg {
 }
 
 /// The outward-rounded box of points.
-fn boxed(ps: &[Point<BigRational>]) -> [f64; 4] {
+fn boxed(ps: &[Point2<BigRational>]) -> [f64; 4] {
     let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
     for p in ps {
-        for k in 0..2 {
-            let (lo, hi) = outward(&p.coords[k]);
+        for (k, c) in [&p.x, &p.y].into_iter().enumerate() {
+            let (lo, hi) = outward(c);
             b[k] = b[k].min(lo);
             b[k + 2] = b[k + 2].max(hi);
         }
@@ -94,7 +94,7 @@ fn boxed(ps: &[Point<BigRational>]) -> [f64; 4] {
 }
 
 /// Twice the points as small integers (`|2c| < 2²⁴`), when they are.
-fn small_points(ps: &[Point<BigRational>]) -> Option<Vec<[i64; 2]>> {
+fn small_points(ps: &[Point2<BigRational>]) -> Option<Vec<[i64; 2]>> {
     const LIMIT: i64 = 1 << 24;
     ps.iter()
         .map(|p| {
@@ -105,7 +105,7 @@ fn small_points(ps: &[Point<BigRational>]) -> Option<Vec<[i64; 2]>> {
                 }
                 two.to_integer().to_i64().filter(|x| x.abs() < LIMIT)
             };
-            Some([c(&p.coords[0])?, c(&p.coords[1])?])
+            Some([c(&p.x)?, c(&p.y)?])
         })
         .collect()
 }
@@ -121,22 +121,22 @@ impl Seg {
         let polynomial = h.iter().all(|p| p.coords[2] == h[0].coords[2]) && !h[0].coords[2].is_zero();
         let weights = curve.weights();
         let positive = weights.iter().all(|w| w.is_positive()) || weights.iter().all(|w| w.is_negative());
-        let hull: Option<Vec<Point<BigRational>>> = if polynomial {
+        let hull: Option<Vec<Point2<BigRational>>> = if polynomial {
             let w0 = &h[0].coords[2];
             let one = w0 == &rat(1);
             Some(
                 h.iter()
                     .map(|p| {
                         if one {
-                            Point::new(vec![p.coords[0].clone(), p.coords[1].clone()])
+                            Point2::new(p.coords[0].clone(), p.coords[1].clone())
                         } else {
-                            Point::new(vec![&p.coords[0] / w0, &p.coords[1] / w0])
+                            Point2::new(&p.coords[0] / w0, &p.coords[1] / w0)
                         }
                     })
                     .collect(),
             )
         } else if positive {
-            curve.points().into_iter().collect::<Option<Vec<_>>>()
+            curve.points().iter().map(|p| p.as_ref().and_then(|p| Point2::try_from(p).ok())).collect::<Option<Vec<_>>>()
         } else {
             None
         };
@@ -144,7 +144,7 @@ impl Seg {
         let small = hull.as_ref().and_then(|ps| small_points(ps));
         let (start, end) = match &hull {
             Some(ps) => (ps[0].clone(), ps[ps.len() - 1].clone()),
-            None => (curve.eval(&rat(0))?, curve.eval(&rat(1))?),
+            None => (Point2::try_from(&curve.eval(&rat(0))?)?, Point2::try_from(&curve.eval(&rat(1))?)?),
         };
         let forms = std::sync::OnceLock::new();
         let degenerate = match &hull {
@@ -189,14 +189,14 @@ impl Seg {
     }
 
     /// The point at a rational parameter.
-    pub(crate) fn point_at(&self, t: &BigRational) -> Point<BigRational> {
+    pub(crate) fn point_at(&self, t: &BigRational) -> Point2<BigRational> {
         let w = self.w().eval(t);
-        Point::new(vec![self.x().eval(t) / &w, self.y().eval(t) / &w])
+        Point2::new(self.x().eval(t) / &w, self.y().eval(t) / &w)
     }
 
     /// The tangent direction at a rational parameter (zero at a cusp).
-    pub(crate) fn direction_at(&self, t: &BigRational) -> [BigRational; 2] {
-        [self.dx().eval(t), self.dy().eval(t)]
+    pub(crate) fn direction_at(&self, t: &BigRational) -> Point2<BigRational> {
+        Point2::new(self.dx().eval(t), self.dy().eval(t))
     }
 
     /// The point at an algebraic parameter, each coordinate an exact real algebraic number.
@@ -204,7 +204,7 @@ impl Seg {
         match t.to_rational() {
             Some(r) => {
                 let p = self.point_at(r);
-                [p.coords[0].clone().into(), p.coords[1].clone().into()]
+                [p.x.clone().into(), p.y.clone().into()]
             }
             None => [t.map_rational(self.x(), self.w()), t.map_rational(self.y(), self.w())],
         }
@@ -215,7 +215,7 @@ impl Seg {
         match t.to_rational() {
             Some(r) => {
                 let p = self.point_at(r);
-                [crate::num::scalar::ratio_to_f64(&p.coords[0]), crate::num::scalar::ratio_to_f64(&p.coords[1])]
+                [crate::num::scalar::ratio_to_f64(&p.x), crate::num::scalar::ratio_to_f64(&p.y)]
             }
             None => {
                 let [x, y] = self.point_at_algebraic(t);
@@ -225,9 +225,9 @@ impl Seg {
     }
 
     /// Whether the point at `t` is `q`, exactly.
-    pub(crate) fn passes_through(&self, t: &RealAlgebraic, q: &Point<BigRational>) -> bool {
-        let fx = self.x() - &self.w().scale(&q.coords[0]);
-        let fy = self.y() - &self.w().scale(&q.coords[1]);
+    pub(crate) fn passes_through(&self, t: &RealAlgebraic, q: &Point2<BigRational>) -> bool {
+        let fx = self.x() - &self.w().scale(&q.x);
+        let fy = self.y() - &self.w().scale(&q.y);
         t.sign_of(&fx) == Ordering::Equal && t.sign_of(&fy) == Ordering::Equal
     }
 

@@ -378,7 +378,7 @@ mod winding {
     /// The winding number of one closed contour around `q` (`Some`), `None` on the contour.
     fn winding_number(contour: &[BezierCurve<BigRational>], q: &Point<BigRational>) -> casteljau::Result<Option<i64>> {
         let p = ClosedPath::from_polynomial(vec![contour.to_vec()])?;
-        Ok(match p.winding(q, &Budget::unlimited())? {
+        Ok(match p.winding(&q.try_into()?, &Budget::unlimited())? {
             PathWinding::Off(w) => Some(w.winding()),
             PathWinding::OnBoundary { .. } => None,
         })
@@ -386,7 +386,11 @@ mod winding {
 
     /// The segment of the contour through `q`, when it is on it.
     fn on_segment(contour: &[BezierCurve<BigRational>], q: &Point<BigRational>) -> Option<usize> {
-        match ClosedPath::from_polynomial(vec![contour.to_vec()]).unwrap().winding(q, &Budget::unlimited()).unwrap() {
+        match ClosedPath::from_polynomial(vec![contour.to_vec()])
+            .unwrap()
+            .winding(&q.try_into().unwrap(), &Budget::unlimited())
+            .unwrap()
+        {
             PathWinding::OnBoundary { on_boundary } => Some(on_boundary.segment),
             PathWinding::Off(_) => None,
         }
@@ -657,7 +661,7 @@ fn winding_fill_path_closes_open_subpaths_and_fill_rules_decide_inside() {
     let open = fill_path("M0 0 L4 0 L4 4 L0 4 M1 1 L3 1 L3 3 L1 3", NumberMode::Exact).unwrap();
     let closed = fill_path("M0 0 L4 0 L4 4 L0 4 Z M1 1 L3 1 L3 3 L1 3 Z", NumberMode::Exact).unwrap();
     assert_eq!(open, closed);
-    let at = |x: i64, y: i64| Point::new(vec![rat(x), rat(y)]);
+    let at = |x: i64, y: i64| casteljau::num::Point2::new(rat(x), rat(y));
     let PathWinding::Off(hole) = open.winding(&at(2, 2), &casteljau::work::Budget::unlimited()).unwrap() else {
         panic!("off the path")
     };

@@ -11,6 +11,7 @@
 //! A refusal documented by `Arrangement::faces` (two curves leaving a vertex tangentially where
 //! their order cannot be decided exactly) skips the case; any other error fails it.
 
+use casteljau::num::Point2;
 use casteljau::path::{ClosedPath, FillRule, PathWinding};
 use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Location, Orientation, Shape, boolean};
 use casteljau::{Point, RationalBezier, rat, ratio};
@@ -33,6 +34,11 @@ fn cases(n: u32) -> u32 {
 
 fn pt(x: &Q, y: &Q) -> Point<Q> {
     Point::new(vec![x.clone(), y.clone()])
+}
+
+/// A query point.
+fn qpt(x: &Q, y: &Q) -> Point2<Q> {
+    Point2::new(x.clone(), y.clone())
 }
 
 fn bezier(s: &Seg) -> RationalBezier<Q> {
@@ -110,9 +116,9 @@ fn coarse_shape() -> impl Strategy<Value = Sh> {
 }
 
 /// Rational sample points off the half-integer grid, in about −7.5..7.5.
-fn points(n: usize) -> impl Strategy<Value = Vec<Point<Q>>> {
+fn points(n: usize) -> impl Strategy<Value = Vec<Point2<Q>>> {
     prop::collection::vec((-15i64..=14, -15i64..=14), n).prop_map(|v| {
-        v.into_iter().map(|(x, y)| pt(&(ratio(x, 2) + ratio(1, 7)), &(ratio(y, 2) + ratio(1, 11)))).collect()
+        v.into_iter().map(|(x, y)| qpt(&(ratio(x, 2) + ratio(1, 7)), &(ratio(y, 2) + ratio(1, 11)))).collect()
     })
 }
 
@@ -137,7 +143,7 @@ fn run(op: BooleanOp, inputs: &[Shape], fill: FillRule) -> Option<BooleanResult>
 }
 
 /// Inside by the fill rule, or `None` on the boundary.
-fn inside(path: &ClosedPath, q: &Point<Q>, fill: FillRule) -> Option<bool> {
+fn inside(path: &ClosedPath, q: &Point2<Q>, fill: FillRule) -> Option<bool> {
     match path.winding(q, &casteljau::work::Budget::unlimited()).unwrap() {
         PathWinding::Off(w) => Some(w.inside(fill)),
         PathWinding::OnBoundary { .. } => None,
@@ -151,7 +157,7 @@ fn check_membership(
     op: BooleanOp,
     inputs: &[&ClosedPath],
     fill: FillRule,
-    qs: &[Point<Q>],
+    qs: &[Point2<Q>],
 ) -> std::result::Result<usize, TestCaseError> {
     let mut n = 0;
     for q in qs {
@@ -214,7 +220,7 @@ fn check_orientation(r: &BooleanResult) -> std::result::Result<(), TestCaseError
 }
 
 /// Same membership (on the boundary included) at every sample point.
-fn same_region(a: &BooleanResult, b: &BooleanResult, qs: &[Point<Q>]) -> std::result::Result<(), TestCaseError> {
+fn same_region(a: &BooleanResult, b: &BooleanResult, qs: &[Point2<Q>]) -> std::result::Result<(), TestCaseError> {
     for q in qs {
         prop_assert_eq!(a.contains(q).unwrap(), b.contains(q).unwrap(), "at {}", q);
     }
@@ -234,9 +240,9 @@ impl Affine {
     fn apply(&self, (x, y): &(Q, Q)) -> (Q, Q) {
         (&self.m[0][0] * x + &self.m[0][1] * y + &self.v.0, &self.m[1][0] * x + &self.m[1][1] * y + &self.v.1)
     }
-    fn point(&self, q: &Point<Q>) -> Point<Q> {
-        let (x, y) = self.apply(&(q.coords[0].clone(), q.coords[1].clone()));
-        pt(&x, &y)
+    fn point(&self, q: &Point2<Q>) -> Point2<Q> {
+        let (x, y) = self.apply(&(q.x.clone(), q.y.clone()));
+        qpt(&x, &y)
     }
     fn shape(&self, sh: &Sh) -> Sh {
         sh.iter().map(|c| c.iter().map(|s| s.iter().map(|p| self.apply(p)).collect()).collect()).collect()
@@ -309,13 +315,13 @@ fn named(e: TestCaseError, a: &Sh, b: &Sh) -> TestCaseError {
 }
 
 /// Rational sample points off the integer grid in about −2.5..2.5.
-fn coarse_points(n: usize) -> impl Strategy<Value = Vec<Point<Q>>> {
+fn coarse_points(n: usize) -> impl Strategy<Value = Vec<Point2<Q>>> {
     prop::collection::vec((-10i64..=9, -10i64..=9), n).prop_map(|v| {
-        v.into_iter().map(|(x, y)| pt(&(ratio(x, 4) + ratio(1, 7)), &(ratio(y, 4) + ratio(1, 11)))).collect()
+        v.into_iter().map(|(x, y)| qpt(&(ratio(x, 4) + ratio(1, 7)), &(ratio(y, 4) + ratio(1, 11)))).collect()
     })
 }
 
-fn membership_of(a: &Sh, b: &Sh, fill: FillRule, qs: &[Point<Q>]) -> std::result::Result<(), TestCaseError> {
+fn membership_of(a: &Sh, b: &Sh, fill: FillRule, qs: &[Point2<Q>]) -> std::result::Result<(), TestCaseError> {
     {
         let (sa, sb) = (to_shape(a), to_shape(b));
         let qs = qs.to_vec();
@@ -346,7 +352,7 @@ fn inputs_of(op: BooleanOp, a: &Shape, b: &Shape) -> Vec<Shape> {
 }
 
 /// The same region: contour count, nesting depths, area and membership at the sample points.
-fn same_result(r: &BooleanResult, s: &BooleanResult, qs: &[Point<Q>]) -> std::result::Result<(), TestCaseError> {
+fn same_result(r: &BooleanResult, s: &BooleanResult, qs: &[Point2<Q>]) -> std::result::Result<(), TestCaseError> {
     prop_assert_eq!(r.contours, s.contours, "{} vs {}", r.path, s.path);
     prop_assert_eq!(depths(r), depths(s));
     same_area(r, s, &rat(1))?;
@@ -558,7 +564,7 @@ proptest! {
                 let near = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1)]
                     .iter()
                     .all(|&(i, j)| {
-                        let n = pt(&(&q.coords[0] + &d * rat(i)), &(&q.coords[1] + &d * rat(j)));
+                        let n = qpt(&(&q.x + &d * rat(i)), &(&q.y + &d * rat(j)));
                         r.contains(&n).unwrap() == Some(w)
                     });
                 if near {

@@ -2,6 +2,7 @@
 //! each with its exact answer, and properties that cross-check the boolean result against the
 //! inputs' winding numbers (an independent route: `path::winding`).
 
+use casteljau::num::Point2;
 use casteljau::path::{ClosedPath, FillRule, PathWinding};
 use casteljau::shape::{Arrangement, BooleanOp, BooleanOptions, BooleanResult, Location, Orientation, Shape, boolean};
 use casteljau::{Point, RationalBezier, rat, ratio};
@@ -26,8 +27,8 @@ fn area(r: &BooleanResult) -> BigRational {
     r.area.clone().expect("a rational area")
 }
 
-fn p(x: BigRational, y: BigRational) -> Point<BigRational> {
-    Point::new(vec![x, y])
+fn p(x: BigRational, y: BigRational) -> Point2<BigRational> {
+    Point2::new(x, y)
 }
 
 const SQUARE: &str = "M0 0 L2 0 L2 2 L0 2 Z";
@@ -208,7 +209,7 @@ fn cusps_collinear_cubics_and_zero_length_segments() {
     assert_eq!((z.contours, area(&z)), (1, rat(4)));
 }
 
-fn inside(path: &ClosedPath, q: &Point<BigRational>, fill: FillRule) -> Option<bool> {
+fn inside(path: &ClosedPath, q: &Point2<BigRational>, fill: FillRule) -> Option<bool> {
     match path.winding(q, &casteljau::work::Budget::unlimited()).unwrap() {
         PathWinding::Off(w) => Some(w.inside(fill)),
         PathWinding::OnBoundary { .. } => None,
@@ -221,7 +222,7 @@ fn polygon() -> impl Strategy<Value = Vec<(i64, i64)>> {
 }
 
 fn to_shape(poly: &[(i64, i64)]) -> Option<Shape> {
-    let pts: Vec<Point<BigRational>> = poly.iter().map(|&(x, y)| p(rat(x), rat(y))).collect();
+    let pts: Vec<Point2<BigRational>> = poly.iter().map(|&(x, y)| p(rat(x), rat(y))).collect();
     Shape::polygons(vec![pts]).ok()
 }
 

@@ -117,7 +117,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
 pub fn run_winding(args: &crate::args::WindingArgs, out: &mut dyn Write) -> i32 {
     let mode: NumberMode = args.batch.numbers.into();
     let q = match parse_points_in(&args.point, 2, None, mode) {
-        Ok(p) if p.len() == 1 => p.into_iter().next().expect("one point"),
+        Ok(p) if p.len() == 1 => casteljau::num::Point2::try_from(&p[0]).expect("read with dimension 2"),
         Ok(p) => {
             eprintln!("casteljau: --point takes one point \"x y\", got {}", p.len());
             return 2;

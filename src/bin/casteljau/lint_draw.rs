@@ -6,7 +6,7 @@ use crate::lint_units::Unit;
 use casteljau::curve::BezierCurve;
 use casteljau::format::Segment;
 use casteljau::lint::{Axis, Evidence, ExactValue, Finding, Kind};
-use casteljau::num::Point;
+use casteljau::num::{Point, Point2};
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use std::fmt::Write as _;
@@ -17,7 +17,7 @@ const HEIGHT: f64 = 440.0;
 const MIN_ASPECT: f64 = 0.45;
 const MAX_ASPECT: f64 = 1.9;
 
-type P = (f64, f64);
+type P = Point2<f64>;
 
 /// One segment for drawing, in screen coordinates (y flipped for fonts).
 struct Seg {
@@ -49,7 +49,7 @@ impl Outline {
         let flip = u.is_font();
         let f = |p: &Point<BigRational>| {
             let [x, y] = xy(p).map(casteljau::num::ratio_to_f64);
-            (x, if flip { -y } else { y })
+            Point2::new(x, if flip { -y } else { y })
         };
         let contours = u
             .glyph
@@ -84,7 +84,7 @@ impl Outline {
     }
 
     fn point(&self, p: [f64; 2]) -> P {
-        (p[0], if self.flip { -p[1] } else { p[1] })
+        Point2::new(p[0], if self.flip { -p[1] } else { p[1] })
     }
 
     fn segment(&self, contour: Option<usize>, index: Option<usize>) -> Option<&Seg> {
@@ -108,19 +108,18 @@ fn fmt(v: f64, dec: usize) -> String {
 
 /// The binary64 curve of control points `pts`.
 fn curve(pts: &[P]) -> BezierCurve<f64> {
-    BezierCurve::new(pts.iter().map(|p| Point::new(vec![p.0, p.1])).collect()).expect("a control point")
+    BezierCurve::new(pts.iter().map(|p| Point::from(*p)).collect()).expect("a control point")
 }
 
 fn eval(pts: &[P], t: f64) -> P {
-    let p = curve(pts).eval(&t);
-    (p.coords[0], p.coords[1])
+    Point2::try_from(&curve(pts).eval(&t)).expect("planar")
 }
 
 /// The control points of the piece `[a, b]` of a Bézier curve, running from the smaller
 /// parameter to the larger.
 fn piece(pts: &[P], a: f64, b: f64) -> Vec<P> {
     let (a, b) = if a <= b { (a, b) } else { (b, a) };
-    curve(pts).subsegment(&a, &b).points().iter().map(|p| (p.coords[0], p.coords[1])).collect()
+    curve(pts).subsegment(&a, &b).points().iter().map(|p| Point2::try_from(p).expect("planar")).collect()
 }
 
 /// A drawing's scale: user units per CSS pixel and the decimals of its numbers.
@@ -134,7 +133,7 @@ impl Pen {
         fmt(v, self.dec)
     }
     fn p(&self, p: P) -> String {
-        format!("{} {}", self.n(p.0), self.n(p.1))
+        format!("{} {}", self.n(p.x), self.n(p.y))
     }
     /// Path data of a Bézier segment continuing from its first point.
     fn seg(&self, pts: &[P], d: &mut String) {
@@ -149,12 +148,12 @@ impl Pen {
     }
     fn circle(&self, class: &str, c: P, r_px: f64) -> String {
         let cls = if class.is_empty() { String::new() } else { format!(" class=\"{class}\"") };
-        format!("<circle{cls} cx=\"{}\" cy=\"{}\" r=\"{}\"/>", self.n(c.0), self.n(c.1), self.n(r_px * self.u))
+        format!("<circle{cls} cx=\"{}\" cy=\"{}\" r=\"{}\"/>", self.n(c.x), self.n(c.y), self.n(r_px * self.u))
     }
 }
 
 fn finite(p: P) -> bool {
-    p.0.is_finite() && p.1.is_finite()
+    p.x.is_finite() && p.y.is_finite()
 }
 
 /// The stored and computed boxes of a `bbox` finding, in screen coordinates (none for other
@@ -166,7 +165,7 @@ fn boxes(f: &Finding, o: &Outline) -> Vec<(P, P)> {
         .map(|b| {
             let v: Vec<f64> = b.iter().map(ExactValue::to_f64).collect();
             let (p, q) = (o.point([v[0], v[1]]), o.point([v[2], v[3]]));
-            ((p.0.min(q.0), p.1.min(q.1)), (p.0.max(q.0), p.1.max(q.1)))
+            (Point2::new(p.x.min(q.x), p.y.min(q.y)), Point2::new(p.x.max(q.x), p.y.max(q.y)))
         })
         .collect()
 }
@@ -186,7 +185,7 @@ fn view(o: &Outline, marked: &[&Finding]) -> Option<([f64; 4], [f64; 2])> {
         return None;
     }
     let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for (x, y) in pts {
+    for Point2 { x, y } in pts {
         (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
     }
     let size = (x1 - x0).max(y1 - y0).max(1e-9);
@@ -278,8 +277,8 @@ pub(crate) fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> 
         let _ = write!(
             d,
             "M{} {}a{r} {r} 0 1 0 {} 0a{r} {r} 0 1 0 {} 0",
-            pen.n(c.0 - r),
-            pen.n(c.1),
+            pen.n(c.x - r),
+            pen.n(c.y),
             pen.n(2.0 * r),
             pen.n(-2.0 * r),
             r = pen.n(r)
@@ -289,8 +288,8 @@ pub(crate) fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> 
         let _ = write!(
             d,
             "M{} {}h{}v{}h{}z",
-            pen.n(c.0 - a),
-            pen.n(c.1 - a),
+            pen.n(c.x - a),
+            pen.n(c.y - a),
             pen.n(2.0 * a),
             pen.n(2.0 * a),
             pen.n(-2.0 * a)
@@ -346,13 +345,13 @@ pub(crate) fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> 
     let mut badges: Vec<(P, usize, Kind)> = vec![];
     for (n, f) in marked {
         if let Some(at) = mark(&mut s, &pen, &o, f) {
-            let mut b = (at.0 + 11.0 * pen.u, at.1 - 11.0 * pen.u);
+            let mut b = Point2::new(at.x + 11.0 * pen.u, at.y - 11.0 * pen.u);
             for _ in 0..8 {
-                let near = badges.iter().any(|(q, _, _)| (q.0 - b.0).hypot(q.1 - b.1) < 15.0 * pen.u);
+                let near = badges.iter().any(|(q, _, _)| (q.x - b.x).hypot(q.y - b.y) < 15.0 * pen.u);
                 if !near {
                     break;
                 }
-                b.0 += 16.0 * pen.u;
+                b.x += 16.0 * pen.u;
             }
             badges.push((b, *n, f.kind()));
         }
@@ -366,8 +365,8 @@ pub(crate) fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> 
                 "<g class=\"b k-{}\">{}<text x=\"{}\" y=\"{}\">{n}</text></g>",
                 k.as_str(),
                 pen.circle("", b, r),
-                pen.n(b.0),
-                pen.n(b.1)
+                pen.n(b.x),
+                pen.n(b.y)
             );
         }
         s.push_str("</g>");
@@ -395,20 +394,20 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
             let _ = write!(m, "<path class=\"hl thin\" d=\"{d}\"/>");
             m.push_str(&pen.circle("", start, 5.0));
             if let Some(next) = next {
-                let (dx, dy) = (next.0 - start.0, next.1 - start.1);
+                let (dx, dy) = (next.x - start.x, next.y - start.y);
                 let len = dx.hypot(dy);
                 let (ux, uy) = (dx / len, dy / len);
                 let l = 34.0 * pen.u;
-                let tip = (start.0 + ux * l, start.1 + uy * l);
-                let (hx, hy) = (tip.0 - ux * 10.0 * pen.u, tip.1 - uy * 10.0 * pen.u);
+                let tip = Point2::new(start.x + ux * l, start.y + uy * l);
+                let (hx, hy) = (tip.x - ux * 10.0 * pen.u, tip.y - uy * 10.0 * pen.u);
                 let (nx, ny) = (-uy * 5.0 * pen.u, ux * 5.0 * pen.u);
-                let _ = write!(m, "<path d=\"M{}L{}\"/>", pen.p(start), pen.p((hx, hy)));
+                let _ = write!(m, "<path d=\"M{}L{}\"/>", pen.p(start), pen.p(Point2::new(hx, hy)));
                 let _ = write!(
                     m,
                     "<path class=\"ah\" d=\"M{}L{}L{}Z\"/>",
                     pen.p(tip),
-                    pen.p((hx + nx, hy + ny)),
-                    pen.p((hx - nx, hy - ny))
+                    pen.p(Point2::new(hx + nx, hy + ny)),
+                    pen.p(Point2::new(hx - nx, hy - ny))
                 );
             }
             badge = Some(start);
@@ -417,9 +416,9 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
             let p = *pts.first()?;
             let l = 14.0 * pen.u;
             if *axis == Axis::X {
-                let _ = write!(m, "<path d=\"M{}V{}\"/>", pen.p((p.0, p.1 - l)), pen.n(p.1 + l));
+                let _ = write!(m, "<path d=\"M{}V{}\"/>", pen.p(Point2::new(p.x, p.y - l)), pen.n(p.y + l));
             } else {
-                let _ = write!(m, "<path d=\"M{}H{}\"/>", pen.p((p.0 - l, p.1)), pen.n(p.0 + l));
+                let _ = write!(m, "<path d=\"M{}H{}\"/>", pen.p(Point2::new(p.x - l, p.y)), pen.n(p.x + l));
             }
             m.push_str(&pen.circle("dot", p, 3.2));
         }
@@ -458,10 +457,10 @@ fn mark(s: &mut String, pen: &Pen, o: &Outline, f: &Finding) -> Option<P> {
                     m,
                     "<rect class=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>",
                     if k == 0 { "st" } else { "cp" },
-                    pen.n(a.0),
-                    pen.n(a.1),
-                    pen.n(b.0 - a.0),
-                    pen.n(b.1 - a.1)
+                    pen.n(a.x),
+                    pen.n(a.y),
+                    pen.n(b.x - a.x),
+                    pen.n(b.y - a.y)
                 );
             }
             badge = bx.first().map(|(a, _)| *a);

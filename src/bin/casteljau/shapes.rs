@@ -13,7 +13,7 @@ use crate::batch::{Answer, Json, batch_lines};
 use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{close_for_fill, fill_path, read_svg};
-use casteljau::num::{NumberMode, parse_points_in};
+use casteljau::num::{NumberMode, Point2, parse_points_in};
 use casteljau::oracle::check_against;
 use casteljau::path::ClosedPath;
 use casteljau::shape::{
@@ -315,14 +315,9 @@ struct ArrangementJson<'a> {
 /// A `--locate` point and where it lies (`vertex`, `edge` with `t`, or `face` with `winding`).
 #[derive(Serialize)]
 struct Located<'a> {
-    #[serde(serialize_with = "exact_strings")]
-    point: &'a [BigRational],
+    point: &'a Point2<BigRational>,
     #[serde(flatten)]
     at: &'a Location,
-}
-
-fn exact_strings<S: serde::Serializer>(xs: &&[BigRational], s: S) -> std::result::Result<S::Ok, S::Error> {
-    s.collect_seq(xs.iter().map(|x| x.to_string()))
 }
 
 /// Runs `arrange`; returns the exit code.
@@ -342,7 +337,7 @@ fn run_arrange(args: &ArrangeArgs, out: &mut dyn Write) -> Result<()> {
         .locate
         .iter()
         .map(|s| match parse_points_in(s, 2, None, mode) {
-            Ok(p) if p.len() == 1 => Ok(p.into_iter().next().expect("one point")),
+            Ok(p) if p.len() == 1 => Ok(Point2::try_from(&p[0]).expect("read with dimension 2")),
             Ok(p) => Err(invalid(format!("--locate takes one point \"x y\", got {} in {s:?}", p.len()))),
             Err(e) => Err(invalid(format!("--locate: {e}"))),
         })
@@ -353,7 +348,7 @@ fn run_arrange(args: &ArrangeArgs, out: &mut dyn Write) -> Result<()> {
     let locations = points.iter().map(|q| arr.locate(q)).collect::<Result<Vec<_>>>()?;
     let (vertices, edges) = (arr.vertices(), arr.edges());
     let written = if args.json {
-        let located = points.iter().zip(&locations).map(|(q, at)| Located { point: &q.coords, at }).collect();
+        let located = points.iter().zip(&locations).map(|(q, at)| Located { point: q, at }).collect();
         let j = ArrangementJson { inputs: arr.inputs(), vertices, edges, faces: &faces, locations: located };
         writeln!(out, "{}", serde_json::to_string(&j).expect("exact strings and finite floats serialize"))
     } else {
