@@ -25,6 +25,7 @@
 
 pub(crate) mod arrangement;
 mod boolean;
+mod changed;
 mod germ;
 mod oracle;
 mod pairs;

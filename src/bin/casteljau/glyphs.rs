@@ -8,7 +8,8 @@
 //! glyph that cannot be answered has `error` instead (exit 2 at the end). Text: `name: path`
 //! per glyph (`#id` for a glyph without a name).
 //!
-//! `changed` is false exactly when the result is the outline itself: as many contours, each
+//! `changed` (`casteljau::shape::BooleanResult::changes`) is false exactly when the result is
+//! the outline itself: as many contours, each
 //! made of one outline contour's segments as whole `[0, 1]` pieces, forwards, in the same cyclic
 //! order (zero-length segments, which bound nothing, left out of the comparison).
 //!
@@ -316,43 +317,6 @@ fn glyph_shape(font: &Font<'_>, gid: u32) -> Result<Shape> {
     Ok(Shape::new(ClosedPath::from_polynomial(closed)?))
 }
 
-/// Whether the result differs from the outline (see the module documentation).
-fn changed(shape: &Shape, r: &BooleanResult) -> bool {
-    use casteljau::poly::RealAlgebraic;
-    let cs = shape.path().contours();
-    if r.contours != cs.len() {
-        return true;
-    }
-    let (zero, one) = (RealAlgebraic::from(casteljau::rat(0)), RealAlgebraic::from(casteljau::rat(1)));
-    let mut used = vec![false; cs.len()];
-    for pieces in &r.pieces {
-        let Some(k) = pieces.first().map(|p| p.contour) else { return true };
-        if k >= cs.len() || used[k] {
-            return true;
-        }
-        used[k] = true;
-        if pieces.iter().any(|p| p.input != 0 || p.contour != k || p.from != zero || p.to != one) {
-            return true;
-        }
-        // the contour's segments that bound something, in order
-        let own: Vec<usize> = (0..cs[k].len())
-            .filter(|&i| {
-                let ps = cs[k][i].points();
-                ps.iter().any(|p| p != &ps[0])
-            })
-            .collect();
-        let got: Vec<usize> = pieces.iter().map(|p| p.segment).collect();
-        if own.len() != got.len() {
-            return true;
-        }
-        let Some(shift) = own.iter().position(|&s| s == got[0]) else { return true };
-        if (0..own.len()).any(|i| own[(i + shift) % own.len()] != got[i]) {
-            return true;
-        }
-    }
-    false
-}
-
 /// A JSON string.
 fn js(s: &str) -> String {
     serde_json::to_string(s).expect("a string serializes")
@@ -375,7 +339,7 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
         let shape = glyph_shape(font, gid)?;
         let before = shape.path().contours().len();
         let r = boolean_within(op, std::slice::from_ref(&shape), options, &ctx.budget)?;
-        let changed = changed(&shape, &r);
+        let changed = r.changes(&shape);
         let judged = match ctx.against.map(|a| a.get(file, gid, name.as_deref())) {
             None => None,
             Some(None) => Some(Judged::NoResult("no result for this glyph in --against".into())),
