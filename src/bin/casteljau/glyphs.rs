@@ -8,27 +8,29 @@
 //! glyph that cannot be answered has `error` instead (exit 2 at the end). Text: `name: path`
 //! per glyph (`#id` for a glyph without a name).
 //!
-//! `changed` (`casteljau::shape::BooleanResult::changes`) is false exactly when the result is
-//! the outline itself: as many contours, each
-//! made of one outline contour's segments as whole `[0, 1]` pieces, forwards, in the same cyclic
-//! order (zero-length segments, which bound nothing, left out of the comparison).
+//! The glyph is `casteljau::format::Font::shape`; `changed` is
+//! `casteljau::shape::BooleanResult::changes`: false exactly when the result is the outline
+//! itself (as many contours, each made of one outline contour's segments as whole `[0, 1]`
+//! pieces, forwards, in the same cyclic order; zero-length segments, which bound nothing, left
+//! out of the comparison).
 //!
 //! Contour indices in `pieces` count the outline's non-empty contours; the default
-//! `--direction` is the font's own (clockwise outer contours for TrueType `glyf` outlines,
-//! counter-clockwise for CFF), so an outline already in that form comes back unchanged.
+//! `--direction` is the font's own (`casteljau::format::Font::outer_direction`: clockwise outer
+//! contours for TrueType `glyf` outlines, counter-clockwise for CFF), so an outline already in
+//! that form comes back unchanged.
 
 use crate::args::BooleanArgs;
 use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
-use casteljau::format::{Font, Segment, close_for_fill, fill_path, font_count};
-use casteljau::intersect::{ClosedPath, FillRule};
+use casteljau::format::{Font, fill_path, font_count};
+use casteljau::intersect::FillRule;
 use casteljau::num::NumberMode;
 use casteljau::shape::check_against;
 use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Direction, Shape, Verdict, boolean_within};
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
-use std::collections::{BTreeSet, HashMap};
+use std::collections::HashMap;
 use std::io::{IsTerminal, Write};
 use std::time::Instant;
 
@@ -286,35 +288,7 @@ pub(crate) fn select(font: &Font<'_>, names: &[String]) -> std::result::Result<V
     if names.is_empty() {
         return Ok((0..font.num_glyphs()).collect());
     }
-    let mut ids: HashMap<String, u32> = HashMap::new();
-    for gid in 0..font.num_glyphs() {
-        if let Some(n) = font.glyph_name(gid) {
-            ids.entry(n).or_insert(gid);
-        }
-    }
-    let unknown: Vec<&str> = names.iter().map(String::as_str).filter(|n| !ids.contains_key(*n)).collect();
-    if !unknown.is_empty() {
-        return Err(format!("no glyph named {}", unknown.join(", ")));
-    }
-    let set: BTreeSet<u32> = names.iter().map(|n| ids[n.as_str()]).collect();
-    Ok(set.into_iter().collect())
-}
-
-/// The exact outline of a glyph as a shape (every contour closed, empty ones left out).
-fn glyph_shape(font: &Font<'_>, gid: u32) -> Result<Shape> {
-    let contours = font.outline(gid)?;
-    let mut closed = vec![];
-    for c in &contours {
-        if let Some(Segment::Skipped { reason, .. }) = c.segments.iter().find(|s| matches!(s, Segment::Skipped { .. }))
-        {
-            return Err(Error::InvalidArgument { message: format!("the outline has a skipped piece: {reason}") });
-        }
-        let segs = close_for_fill(c)?;
-        if !segs.is_empty() {
-            closed.push(segs);
-        }
-    }
-    Ok(Shape::new(ClosedPath::from_polynomial(closed)?))
+    font.glyphs_named(names).map_err(|e| e.to_string())
 }
 
 /// A JSON string.
@@ -332,11 +306,11 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
         face.map(|f| format!("\"face\":{f},")).unwrap_or_default(),
         name.as_deref().map_or_else(|| "null".to_string(), js)
     );
-    let direction = ctx.direction.unwrap_or(if font.is_cff() { Direction::Ccw } else { Direction::Cw });
+    let direction = ctx.direction.unwrap_or_else(|| font.outer_direction());
     let options = BooleanOptions { fill: ctx.fill, direction };
     let op = BooleanOp::Simplify;
     let answer = || -> Result<(usize, BooleanResult, bool, Option<Judged>)> {
-        let shape = glyph_shape(font, gid)?;
+        let shape = font.shape(gid)?;
         let before = shape.path().contours().len();
         let r = boolean_within(op, std::slice::from_ref(&shape), options, &ctx.budget)?;
         let changed = r.changes(&shape);

@@ -12,8 +12,7 @@ use crate::args::{ArrangeArgs, BooleanArgs};
 use crate::batch::{Answer, Json, batch_lines};
 use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
 use casteljau::error::{Error, Result};
-use casteljau::format::{close_for_fill, fill_path, read_svg};
-use casteljau::intersect::ClosedPath;
+use casteljau::format::{fill_path, fill_svg};
 use casteljau::num::{NumberMode, parse_points_in};
 use casteljau::shape::{
     Arrangement, BooleanOp, BooleanOptions, BooleanResult, Direction, Edge, Face, InputPiece, Location, Shape, Vertex,
@@ -38,44 +37,18 @@ fn invalid(message: String) -> Error {
     Error::InvalidArgument { message }
 }
 
-/// An operand as a shape: an `.svg` file, or SVG path data (each subpath closed by a line as SVG
-/// fills it; empty text is the empty shape).
+/// An operand as a shape: an `.svg` file (every shape element, [`fill_svg`]), or SVG path data
+/// (each subpath closed by a line as SVG fills it; empty text is the empty shape).
 pub(crate) fn operand(text: &str, mode: NumberMode) -> Result<Shape> {
     let t = text.trim();
     if t.to_ascii_lowercase().ends_with(".svg") {
-        return svg_shape(t, mode);
+        let svg = std::fs::read_to_string(t).map_err(|e| invalid(format!("{t}: cannot read: {e}")))?;
+        return fill_svg(&svg, mode).map_err(|e| invalid(format!("{t}: {e}")));
     }
     if is_font(t) {
         return Err(invalid(format!("{t}: fonts are read by `boolean simplify FONT...` (fonts only)")));
     }
     Ok(Shape::new(fill_path(t, mode)?))
-}
-
-/// Every shape of an SVG document (transforms applied) as one shape; an element that is not
-/// made of polynomial Bézier pieces (an arc, a circle, a rounded corner) or cannot be read is
-/// refused, naming it.
-fn svg_shape(file: &str, mode: NumberMode) -> Result<Shape> {
-    let text = std::fs::read_to_string(file).map_err(|e| invalid(format!("{file}: cannot read: {e}")))?;
-    let shapes = read_svg(&text, mode).map_err(|e| invalid(format!("{file}: {e}")))?;
-    let mut contours = vec![];
-    for s in &shapes {
-        let at = || match &s.id {
-            Some(id) => format!("{file}: line {}: <{} id=\"{id}\">", s.line, s.tag),
-            None => format!("{file}: line {}: <{}> (shape {})", s.line, s.tag, s.index),
-        };
-        match &s.contours {
-            Ok(cs) => {
-                for c in cs {
-                    let segs = close_for_fill(c).map_err(|e| invalid(format!("{}: {e}", at())))?;
-                    if !segs.is_empty() {
-                        contours.push(segs);
-                    }
-                }
-            }
-            Err(problem) => return Err(invalid(format!("{}: {problem}", at()))),
-        }
-    }
-    Ok(Shape::new(ClosedPath::from_polynomial(contours).map_err(|e| invalid(format!("{file}: {e}")))?))
 }
 
 /// The float results of `--against`: one for a single question, or per question line.
