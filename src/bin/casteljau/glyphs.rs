@@ -20,7 +20,7 @@
 //! that form comes back unchanged.
 
 use crate::args::BooleanArgs;
-use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
+use crate::verdicts::{ResultJson, tolerance, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{Font, fill_path, font_count};
 use casteljau::intersect::FillRule;
@@ -30,6 +30,9 @@ use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Direction, Shap
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Deserializer, Serialize};
+use serde_json::Value;
 use std::collections::HashMap;
 use std::io::{IsTerminal, Write};
 use std::time::Instant;
@@ -51,6 +54,32 @@ enum FloatAnswer {
     Error(String),
 }
 
+/// One line of the `--against` file as it is read: a field of another JSON type than the one
+/// expected counts as absent, except `error`, kept whatever it is.
+#[derive(Default, Deserialize)]
+struct AnswerLine {
+    #[serde(default, deserialize_with = "if_typed")]
+    file: Option<String>,
+    #[serde(default, deserialize_with = "if_typed")]
+    glyph: Option<String>,
+    #[serde(default, deserialize_with = "if_typed")]
+    glyph_id: Option<u32>,
+    #[serde(default, deserialize_with = "if_typed")]
+    path: Option<String>,
+    #[serde(default, deserialize_with = "present")]
+    error: Option<Value>,
+}
+
+/// A field's value when it has the type `T`, else `None`.
+fn if_typed<'de, D: Deserializer<'de>, T: DeserializeOwned>(d: D) -> std::result::Result<Option<T>, D::Error> {
+    Ok(T::deserialize(Value::deserialize(d)?).ok())
+}
+
+/// A field's value, `null` included.
+fn present<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<Option<Value>, D::Error> {
+    Value::deserialize(d).map(Some)
+}
+
 /// `--against` for fonts: answers by (file or any file, glyph).
 #[derive(Default)]
 struct FloatAnswers {
@@ -69,23 +98,26 @@ impl FloatAnswers {
                 continue;
             }
             let bad = |m: &str| Error::InvalidArgument { message: format!("--against {file}: line {}: {m}", i + 1) };
-            let v: serde_json::Value = serde_json::from_str(t).map_err(|e| bad(&format!("not JSON: {e}")))?;
-            let answer = match (v.get("path").and_then(|p| p.as_str()), v.get("error")) {
-                (Some(p), _) => FloatAnswer::Path(p.to_string()),
-                (None, Some(e)) => FloatAnswer::Error(e.as_str().map_or_else(|| e.to_string(), str::to_string)),
+            // any JSON value is read; only an object has the fields
+            let v: Value = serde_json::from_str(t).map_err(|e| bad(&format!("not JSON: {e}")))?;
+            let a = match v {
+                Value::Object(_) => AnswerLine::deserialize(v).map_err(|e| bad(&e.to_string()))?,
+                _ => AnswerLine::default(),
+            };
+            let answer = match (a.path, a.error) {
+                (Some(p), _) => FloatAnswer::Path(p),
+                (None, Some(Value::String(e))) => FloatAnswer::Error(e),
+                (None, Some(e)) => FloatAnswer::Error(e.to_string()),
                 (None, None) => return Err(bad("a line needs \"path\" (a string) or \"error\"")),
             };
-            let scope = v.get("file").and_then(|f| f.as_str()).map(str::to_string);
-            let id = v.get("glyph_id").and_then(|g| g.as_u64()).and_then(|g| u32::try_from(g).ok());
-            let name = v.get("glyph").and_then(|g| g.as_str());
-            if id.is_none() && name.is_none() {
+            if a.glyph_id.is_none() && a.glyph.is_none() {
                 return Err(bad("a line needs \"glyph\" (the name) or \"glyph_id\""));
             }
-            if let Some(id) = id {
-                out.by.insert((scope.clone(), Key::Id(id)), answer.clone());
+            if let Some(id) = a.glyph_id {
+                out.by.insert((a.file.clone(), Key::Id(id)), answer.clone());
             }
-            if let Some(name) = name {
-                out.by.insert((scope, Key::Name(name.to_string())), answer);
+            if let Some(name) = a.glyph {
+                out.by.insert((a.file, Key::Name(name)), answer);
             }
         }
         Ok(out)
@@ -100,10 +132,14 @@ impl FloatAnswers {
     }
 }
 
-/// How a glyph's exact result compares with a float library's.
+/// How a glyph's exact result compares with a float library's. JSON: the [`Verdict`], or
+/// `{"agree":false,"problems":[reason]}` without a float result.
+#[derive(Serialize)]
+#[serde(untagged)]
 enum Judged {
     Verdict(Verdict),
     /// The float library gave no result (its `error`, or no line for the glyph).
+    #[serde(serialize_with = "no_result")]
     NoResult(String),
 }
 
@@ -117,15 +153,48 @@ impl Judged {
             Judged::NoResult(reason) => format!("disagree: {reason}"),
         }
     }
-    fn json(&self) -> String {
-        match self {
-            Judged::Verdict(v) => verdict_json(Some(v)),
-            Judged::NoResult(reason) => format!(
-                ",\"verdict\":{{\"agree\":false,\"problems\":[{}]}}",
-                serde_json::to_string(reason).expect("a string serializes")
-            ),
-        }
+}
+
+/// The verdict of a glyph without a float result: a disagreement, the reason its one problem.
+fn no_result<S: serde::Serializer>(reason: &str, s: S) -> std::result::Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct Disagree<'a> {
+        agree: bool,
+        problems: [&'a str; 1],
     }
+    Disagree { agree: false, problems: [reason] }.serialize(s)
+}
+
+/// A glyph's JSON line: where the glyph is, then its answer or its error.
+#[derive(Serialize)]
+struct GlyphLine<'a> {
+    file: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    face: Option<u32>,
+    glyph: Option<&'a str>,
+    glyph_id: u32,
+    #[serde(flatten)]
+    body: GlyphBody<'a>,
+}
+
+/// What a glyph's line says after where the glyph is.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum GlyphBody<'a> {
+    Answer(GlyphAnswer<'a>),
+    /// The glyph could not be answered.
+    Error {
+        error: String,
+    },
+}
+
+/// A glyph's answer: its non-empty contours, whether the result changes them, then the result.
+#[derive(Serialize)]
+struct GlyphAnswer<'a> {
+    contours_before: usize,
+    changed: bool,
+    #[serde(flatten)]
+    result: ResultJson<'a, &'a Judged>,
 }
 
 /// What the run needs for every glyph.
@@ -291,21 +360,11 @@ pub(crate) fn select(font: &Font<'_>, names: &[String]) -> std::result::Result<V
     font.glyphs_named(names).map_err(|e| e.to_string())
 }
 
-/// A JSON string.
-fn js(s: &str) -> String {
-    serde_json::to_string(s).expect("a string serializes")
-}
-
 /// Simplifies one glyph and renders its line.
 fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid: u32) -> Done {
     let name = font.glyph_name(gid);
     let label = name.clone().unwrap_or_else(|| format!("#{gid}"));
-    let head = format!(
-        "\"file\":{},{}\"glyph\":{},\"glyph_id\":{gid},",
-        js(file),
-        face.map(|f| format!("\"face\":{f},")).unwrap_or_default(),
-        name.as_deref().map_or_else(|| "null".to_string(), js)
-    );
+    let line = |body| GlyphLine { file, face, glyph: name.as_deref(), glyph_id: gid, body };
     let direction = ctx.direction.unwrap_or_else(|| font.outer_direction());
     let options = BooleanOptions { fill: ctx.fill, direction };
     let op = BooleanOp::Simplify;
@@ -335,9 +394,10 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
             d.changed = changed;
             d.disagree = judged.as_ref().is_some_and(|j| !j.agree());
             if ctx.json {
-                let head = format!("{head}\"contours_before\":{before},\"changed\":{changed},");
-                let tail = judged.as_ref().map(Judged::json).unwrap_or_default();
-                d.out.extend_from_slice(result_json(&head, op, ctx.fill, &r, &tail).as_bytes());
+                let result = ResultJson { op, fill: ctx.fill, result: &r, verdict: judged.as_ref() };
+                let answer = GlyphAnswer { contours_before: before, changed, result };
+                serde_json::to_writer(&mut d.out, &line(GlyphBody::Answer(answer)))
+                    .expect("exact strings and finite floats serialize");
             } else {
                 let text = judged.as_ref().map_or_else(|| r.path.clone(), Judged::text);
                 d.out.extend_from_slice(format!("{label}: {text}").as_bytes());
@@ -347,7 +407,9 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
         Err(e) => {
             d.error = true;
             if ctx.json {
-                d.out.extend_from_slice(format!("{{{head}\"error\":{}}}\n", js(&e.to_string())).as_bytes());
+                serde_json::to_writer(&mut d.out, &line(GlyphBody::Error { error: e.to_string() }))
+                    .expect("strings serialize");
+                d.out.push(b'\n');
             } else {
                 let _ = writeln!(d.err, "casteljau: {file}: glyph {label} (id {gid}): {e}");
             }

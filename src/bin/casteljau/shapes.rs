@@ -10,7 +10,7 @@
 
 use crate::args::{ArrangeArgs, BooleanArgs};
 use crate::batch::{Answer, Json, batch_lines};
-use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
+use crate::verdicts::{ResultJson, tolerance, verdict_text};
 use casteljau::error::{Error, Result};
 use casteljau::format::{fill_path, fill_svg};
 use casteljau::num::{NumberMode, parse_points_in};
@@ -215,7 +215,8 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
         let failed = verdict.as_ref().is_some_and(|v| !v.agree);
         // only the output asked for is rendered
         Ok(if json {
-            let s = result_json("", op, options.fill, &result, &verdict_json(verdict.as_ref()));
+            let j = ResultJson { op, fill: options.fill, result: &result, verdict: verdict.as_ref() };
+            let s = serde_json::to_string(&j).expect("exact strings and finite floats serialize");
             Answer { text: String::new(), json: Json::Object(s), failed }
         } else {
             let text = verdict.as_ref().map_or_else(|| result.path.clone(), verdict_text);
@@ -287,14 +288,10 @@ struct ArrangementJson<'a> {
 /// A `--locate` point and where it lies (`vertex`, `edge` with `t`, or `face` with `winding`).
 #[derive(Serialize)]
 struct Located<'a> {
-    #[serde(serialize_with = "exact_strings")]
+    #[serde(serialize_with = "casteljau::num::serial::strings")]
     point: &'a [BigRational],
     #[serde(flatten)]
     at: &'a Location,
-}
-
-fn exact_strings<S: serde::Serializer>(xs: &&[BigRational], s: S) -> std::result::Result<S::Ok, S::Error> {
-    s.collect_seq(xs.iter().map(|x| x.to_string()))
 }
 
 /// Runs `arrange`; returns the exit code.
