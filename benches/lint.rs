@@ -8,7 +8,6 @@
 
 use casteljau::format::{Font, Segment};
 use casteljau::lint::{Glyph, Kind, LintOptions, lint};
-use casteljau::shape::Orientation;
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use kurbo::{ParamCurve, ParamCurveDeriv, ParamCurveExtrema, Point};
 use std::hint::black_box;
@@ -63,7 +62,7 @@ fn lint_font(c: &mut Criterion) {
         return;
     };
     let font = Font::open(&data, 0).expect("a font");
-    let outer = if font.is_cff() { Orientation::Ccw } else { Orientation::Cw };
+    let outer = font.outer_orientation();
     // as the command line builds them: with the stored glyph box and the font's head box
     let r4 = |b: [i16; 4]| b.map(|x| num_rational::BigRational::from_integer(x.into()));
     let glyphs: Vec<Glyph> = (0..font.num_glyphs())

@@ -12,7 +12,6 @@
 use casteljau::format::Font;
 use casteljau::lint::{Glyph, LintOptions, lint};
 use casteljau::rat;
-use casteljau::shape::Orientation;
 use std::collections::BTreeMap;
 
 /// Findings of one kind: a line per finding not explained by rounding, and how many are.
@@ -28,7 +27,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let data = std::fs::read(&path)?;
     let font = Font::open(&data, 0)?;
     // outer contours run clockwise in TrueType outlines, counter-clockwise in CFF
-    let options = LintOptions::new(if font.is_cff() { Orientation::Ccw } else { Orientation::Cw });
+    let options = LintOptions::new(font.outer_orientation());
     let exact_box = |b: [i16; 4]| b.map(|x| rat(x.into()));
 
     let mut groups: BTreeMap<&str, Group> = BTreeMap::new();

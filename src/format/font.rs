@@ -265,11 +265,35 @@ impl<'a> Font<'a> {
         Some([h.x_min(), h.y_min(), h.x_max(), h.y_max()])
     }
 
-    /// The glyph as a filled [`crate::shape::Shape`]: its contours ([`Self::outline`]), each
-    /// closed by a line where it does not end where it starts (as [`super::close_for_fill`]).
+    /// The glyph as a filled [`crate::shape::Shape`], the input of [`crate::shape::boolean`]: its
+    /// contours ([`Self::outline`]), every contour closed for fill (a closing line where it does
+    /// not end where it starts, as [`super::close_for_fill`]), empty contours left out. Contour
+    /// `k` of the shape is the glyph's `k`-th non-empty contour, its segments those of
+    /// [`Self::outline`] in order (with the closing line, if any, last).
     ///
     /// # Errors
-    /// As [`Self::outline`]; [`Error::InvalidArgument`] for a piece that is not a Bézier curve.
+    /// As [`Self::outline`]; [`Error::InvalidArgument`] with the reason for a piece that is not a
+    /// polynomial Bézier curve ([`Segment::Skipped`]: the `glyf` and CFF readers make none, so
+    /// this is a safeguard); [`Error::TooLarge`] for a contour of more than
+    /// [`crate::intersect::MAX_PATH_SEGMENTS`] segments.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::format::Font;
+    /// use casteljau::shape::{BooleanOp, BooleanOptions, boolean};
+    /// let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/Tuffy.ttf"));
+    /// let font = Font::open(data, 0).unwrap();
+    /// let o = font.glyphs_named(&["O"]).unwrap()[0];
+    /// let shape = font.shape(o).unwrap();
+    /// assert_eq!(shape.path().contours().len(), 2); // the outer contour and the counter
+    /// // the glyph simplified in the font's own direction is its outline unchanged
+    /// let options = BooleanOptions { orientation: font.outer_orientation(), ..BooleanOptions::default() };
+    /// let r = boolean(BooleanOp::Simplify, std::slice::from_ref(&shape), options).unwrap();
+    /// assert!(!r.changes(&shape));
+    /// // a glyph without contours is the empty shape
+    /// let space = font.glyphs_named(&["space"]).unwrap()[0];
+    /// assert!(font.shape(space).unwrap().path().contours().is_empty());
+    /// ```
     pub fn shape(&self, gid: u32) -> Result<crate::shape::Shape> {
         let mut contours = vec![];
         for c in self.outline(gid)? {
@@ -279,6 +303,59 @@ impl<'a> Font<'a> {
             }
         }
         Ok(crate::shape::Shape::new(crate::path::ClosedPath::from_polynomial(contours)?))
+    }
+
+    /// The direction of the font's outer contours by its format's convention: clockwise for
+    /// TrueType `glyf` outlines, counter-clockwise for CFF and CFF2 (the y axis up, in font
+    /// units). Counters run the other way. It is the direction a well-formed outline already
+    /// has, so `boolean` simplification in it leaves such an outline unchanged, and the one
+    /// `lint` checks contours against.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::format::Font;
+    /// use casteljau::shape::Orientation;
+    /// let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/Tuffy.ttf"));
+    /// assert_eq!(Font::open(data, 0).unwrap().outer_orientation(), Orientation::Cw); // glyf
+    /// let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/NotoSansJP-Regular.subset.otf"));
+    /// assert_eq!(Font::open(data, 0).unwrap().outer_orientation(), Orientation::Ccw); // CFF
+    /// ```
+    pub fn outer_orientation(&self) -> crate::shape::Orientation {
+        if self.is_cff() { crate::shape::Orientation::Ccw } else { crate::shape::Orientation::Cw }
+    }
+
+    /// The ids of the glyphs with the given names ([`Self::glyph_name`]), in glyph order, each
+    /// once: a name given twice counts once, and a name several glyphs carry stands for the
+    /// first of them. No names give no ids.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] listing every name no glyph has (`no glyph named x, y`).
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::format::Font;
+    /// let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/Tuffy.ttf"));
+    /// let font = Font::open(data, 0).unwrap();
+    /// assert_eq!(font.glyphs_named(&["o", "A", "o"]).unwrap(), [36, 82]);
+    /// let e = font.glyphs_named(&["A", "nosuch", "nor_this"]).unwrap_err();
+    /// assert_eq!(e.to_string(), "no glyph named nosuch, nor_this");
+    /// ```
+    pub fn glyphs_named<S: AsRef<str>>(&self, names: &[S]) -> Result<Vec<u32>> {
+        if names.is_empty() {
+            return Ok(vec![]);
+        }
+        let mut ids: std::collections::HashMap<String, u32> = std::collections::HashMap::new();
+        for gid in 0..self.num_glyphs {
+            if let Some(n) = self.glyph_name(gid) {
+                ids.entry(n).or_insert(gid);
+            }
+        }
+        let unknown: Vec<&str> = names.iter().map(AsRef::as_ref).filter(|n| !ids.contains_key(*n)).collect();
+        if !unknown.is_empty() {
+            return Err(fail(format!("no glyph named {}", unknown.join(", "))));
+        }
+        let set: std::collections::BTreeSet<u32> = names.iter().map(|n| ids[n.as_ref()]).collect();
+        Ok(set.into_iter().collect())
     }
 
     /// The underlying `read-fonts` font.

@@ -148,6 +148,54 @@ pub fn read_svg(text: &str, mode: NumberMode) -> Result<Vec<SvgShape>> {
     Ok(out)
 }
 
+/// An SVG document as the one shape its elements fill: every shape element of [`read_svg`]
+/// (transforms applied), in document order, each subpath closed for fill as SVG fills it
+/// ([`close_for_fill`](crate::format::close_for_fill)) and empty ones left out, all in one
+/// [`Shape`](crate::shape::Shape), so where elements overlap their windings add up (the fill
+/// rule is the operation's, e.g. [`crate::shape::BooleanOptions::fill`]). Nothing is
+/// approximated: an element that is not made of polynomial Bézier pieces is refused.
+///
+/// # Errors
+/// As [`read_svg`] for text that is not XML; [`Error::InvalidArgument`] naming the element
+/// (`line 3: <circle id="c">: …`, or `line 3: <circle> (shape 2): …` by its index among the
+/// shape elements when it has no `id`) for an element that is skipped (a circle, an ellipse, a
+/// transform that is not rational), malformed (bad path data, a unit), or holds a piece that is
+/// no polynomial Bézier curve (an arc, a rounded corner); [`Error::TooLarge`] for a contour of
+/// more than [`crate::intersect::MAX_PATH_SEGMENTS`] segments.
+///
+/// # Example
+/// ```
+/// use casteljau::format::fill_svg;
+/// use casteljau::num::NumberMode;
+/// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
+///   <rect width="4" height="4"/>
+///   <g transform="translate(10 0)"><path d="M0 0 L2 0 L1 2"/></g>
+/// </svg>"#;
+/// let shape = fill_svg(svg, NumberMode::Exact).unwrap();
+/// assert_eq!(shape.path().contours().len(), 2); // the rectangle and the closed triangle
+/// let arc = r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 H2 V2 H0 Z"/><circle id="c" r="1"/></svg>"#;
+/// let e = fill_svg(arc, NumberMode::Exact).unwrap_err();
+/// assert!(e.to_string().starts_with(r#"line 1: <circle id="c">: "#), "{e}");
+/// ```
+pub fn fill_svg(text: &str, mode: NumberMode) -> Result<crate::shape::Shape> {
+    let mut contours = vec![];
+    for s in read_svg(text, mode)? {
+        let at = || match &s.id {
+            Some(id) => format!("line {}: <{} id=\"{id}\">", s.line, s.tag),
+            None => format!("line {}: <{}> (shape {})", s.line, s.tag, s.index),
+        };
+        let within =
+            |problem: &dyn std::fmt::Display| Error::InvalidArgument { message: format!("{}: {problem}", at()) };
+        for c in s.contours.as_ref().map_err(|problem| within(problem))? {
+            let segs = svg_path::close_for_fill(c).map_err(|e| within(&e))?;
+            if !segs.is_empty() {
+                contours.push(segs);
+            }
+        }
+    }
+    Ok(crate::shape::Shape::new(crate::path::ClosedPath::from_polynomial(contours)?))
+}
+
 type P = Point<BigRational>;
 
 fn pt(x: BigRational, y: BigRational) -> P {

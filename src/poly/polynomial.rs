@@ -318,9 +318,10 @@ impl Poly<BigRational> {
 
     /// The monic greatest common divisor (zero for `gcd(0, 0)`).
     ///
-    /// Computed on integers by the subresultant sequence ([`super::integer`]): Euclid over `Q`
-    /// reduces a fraction at every step and its coefficients swell, which made a degree-40 gcd
-    /// take seconds; the primitive sequence keeps every remainder's content divided out.
+    /// Computed on integers by the subresultant sequence (the internal `poly::integer`): Euclid
+    /// over `Q` reduces a fraction at every step and its coefficients swell, which made a
+    /// degree-40 gcd take seconds; the primitive sequence keeps every remainder's content
+    /// divided out.
     pub fn gcd(&self, b: &Self) -> Self {
         let g = super::integer::gcd_integer(&self.to_integer(), &b.to_integer());
         match g.last().cloned() {

@@ -26,6 +26,7 @@
 mod area;
 pub(crate) mod arrangement;
 mod boolean;
+mod changed;
 mod germ;
 mod hermite;
 mod pairs;

@@ -8,27 +8,33 @@
 //! glyph that cannot be answered has `error` instead (exit 2 at the end). Text: `name: path`
 //! per glyph (`#id` for a glyph without a name).
 //!
-//! `changed` is false exactly when the result is the outline itself: as many contours, each
-//! made of one outline contour's segments as whole `[0, 1]` pieces, forwards, in the same cyclic
-//! order (zero-length segments, which bound nothing, left out of the comparison).
+//! The glyph is `casteljau::format::Font::shape`; `changed` is
+//! `casteljau::shape::BooleanResult::changes`: false exactly when the result is the outline
+//! itself (as many contours, each made of one outline contour's segments as whole `[0, 1]`
+//! pieces, forwards, in the same cyclic order; zero-length segments, which bound nothing, left
+//! out of the comparison).
 //!
 //! Contour indices in `pieces` count the outline's non-empty contours; the default
-//! `--direction` is the font's own (clockwise outer contours for TrueType `glyf` outlines,
-//! counter-clockwise for CFF), so an outline already in that form comes back unchanged.
+//! `--direction` is the font's own (`casteljau::format::Font::outer_orientation`: clockwise outer
+//! contours for TrueType `glyf` outlines, counter-clockwise for CFF), so an outline already in
+//! that form comes back unchanged.
 
 use crate::args::BooleanArgs;
-use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
+use crate::verdicts::{ResultJson, tolerance, verdict_text};
 use casteljau::error::{Error, Result};
-use casteljau::format::{Font, Segment, close_for_fill, fill_path, font_count};
+use casteljau::format::{Font, fill_path, font_count};
 use casteljau::num::NumberMode;
 use casteljau::oracle::Agreement;
 use casteljau::oracle::check_against;
-use casteljau::path::{ClosedPath, FillRule};
+use casteljau::path::FillRule;
 use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Orientation, Shape, boolean_within};
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
-use std::collections::{BTreeSet, HashMap};
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Deserializer, Serialize};
+use serde_json::Value;
+use std::collections::HashMap;
 use std::io::{IsTerminal, Write};
 use std::time::Instant;
 
@@ -49,6 +55,32 @@ enum FloatAnswer {
     Error(String),
 }
 
+/// One line of the `--against` file as it is read: a field of another JSON type than the one
+/// expected counts as absent, except `error`, kept whatever it is.
+#[derive(Default, Deserialize)]
+struct AnswerLine {
+    #[serde(default, deserialize_with = "if_typed")]
+    file: Option<String>,
+    #[serde(default, deserialize_with = "if_typed")]
+    glyph: Option<String>,
+    #[serde(default, deserialize_with = "if_typed")]
+    glyph_id: Option<u32>,
+    #[serde(default, deserialize_with = "if_typed")]
+    path: Option<String>,
+    #[serde(default, deserialize_with = "present")]
+    error: Option<Value>,
+}
+
+/// A field's value when it has the type `T`, else `None`.
+fn if_typed<'de, D: Deserializer<'de>, T: DeserializeOwned>(d: D) -> std::result::Result<Option<T>, D::Error> {
+    Ok(T::deserialize(Value::deserialize(d)?).ok())
+}
+
+/// A field's value, `null` included.
+fn present<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<Option<Value>, D::Error> {
+    Value::deserialize(d).map(Some)
+}
+
 /// `--against` for fonts: answers by (file or any file, glyph).
 #[derive(Default)]
 struct FloatAnswers {
@@ -67,23 +99,26 @@ impl FloatAnswers {
                 continue;
             }
             let bad = |m: &str| Error::InvalidArgument { message: format!("--against {file}: line {}: {m}", i + 1) };
-            let v: serde_json::Value = serde_json::from_str(t).map_err(|e| bad(&format!("not JSON: {e}")))?;
-            let answer = match (v.get("path").and_then(|p| p.as_str()), v.get("error")) {
-                (Some(p), _) => FloatAnswer::Path(p.to_string()),
-                (None, Some(e)) => FloatAnswer::Error(e.as_str().map_or_else(|| e.to_string(), str::to_string)),
+            // any JSON value is read; only an object has the fields
+            let v: Value = serde_json::from_str(t).map_err(|e| bad(&format!("not JSON: {e}")))?;
+            let a = match v {
+                Value::Object(_) => AnswerLine::deserialize(v).map_err(|e| bad(&e.to_string()))?,
+                _ => AnswerLine::default(),
+            };
+            let answer = match (a.path, a.error) {
+                (Some(p), _) => FloatAnswer::Path(p),
+                (None, Some(Value::String(e))) => FloatAnswer::Error(e),
+                (None, Some(e)) => FloatAnswer::Error(e.to_string()),
                 (None, None) => return Err(bad("a line needs \"path\" (a string) or \"error\"")),
             };
-            let scope = v.get("file").and_then(|f| f.as_str()).map(str::to_string);
-            let id = v.get("glyph_id").and_then(|g| g.as_u64()).and_then(|g| u32::try_from(g).ok());
-            let name = v.get("glyph").and_then(|g| g.as_str());
-            if id.is_none() && name.is_none() {
+            if a.glyph_id.is_none() && a.glyph.is_none() {
                 return Err(bad("a line needs \"glyph\" (the name) or \"glyph_id\""));
             }
-            if let Some(id) = id {
-                out.by.insert((scope.clone(), Key::Id(id)), answer.clone());
+            if let Some(id) = a.glyph_id {
+                out.by.insert((a.file.clone(), Key::Id(id)), answer.clone());
             }
-            if let Some(name) = name {
-                out.by.insert((scope, Key::Name(name.to_string())), answer);
+            if let Some(name) = a.glyph {
+                out.by.insert((a.file, Key::Name(name)), answer);
             }
         }
         Ok(out)
@@ -98,10 +133,14 @@ impl FloatAnswers {
     }
 }
 
-/// How a glyph's exact result compares with a float library's.
+/// How a glyph's exact result compares with a float library's. JSON: the [`Agreement`], or
+/// `{"agree":false,"problems":[reason]}` without a float result.
+#[derive(Serialize)]
+#[serde(untagged)]
 enum Judged {
-    Verdict(Agreement),
+    Verdict(Box<Agreement>),
     /// The float library gave no result (its `error`, or no line for the glyph).
+    #[serde(serialize_with = "no_result")]
     NoResult(String),
 }
 
@@ -115,15 +154,48 @@ impl Judged {
             Judged::NoResult(reason) => format!("disagree: {reason}"),
         }
     }
-    fn json(&self) -> String {
-        match self {
-            Judged::Verdict(v) => verdict_json(Some(v)),
-            Judged::NoResult(reason) => format!(
-                ",\"verdict\":{{\"agree\":false,\"problems\":[{}]}}",
-                serde_json::to_string(reason).expect("a string serializes")
-            ),
-        }
+}
+
+/// The verdict of a glyph without a float result: a disagreement, the reason its one problem.
+fn no_result<S: serde::Serializer>(reason: &str, s: S) -> std::result::Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct Disagree<'a> {
+        agree: bool,
+        problems: [&'a str; 1],
     }
+    Disagree { agree: false, problems: [reason] }.serialize(s)
+}
+
+/// A glyph's JSON line: where the glyph is, then its answer or its error.
+#[derive(Serialize)]
+struct GlyphLine<'a> {
+    file: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    face: Option<u32>,
+    glyph: Option<&'a str>,
+    glyph_id: u32,
+    #[serde(flatten)]
+    body: GlyphBody<'a>,
+}
+
+/// What a glyph's line says after where the glyph is.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum GlyphBody<'a> {
+    Answer(GlyphAnswer<'a>),
+    /// The glyph could not be answered.
+    Error {
+        error: String,
+    },
+}
+
+/// A glyph's answer: its non-empty contours, whether the result changes them, then the result.
+#[derive(Serialize)]
+struct GlyphAnswer<'a> {
+    contours_before: usize,
+    changed: bool,
+    #[serde(flatten)]
+    result: ResultJson<'a, &'a Judged>,
 }
 
 /// What the run needs for every glyph.
@@ -286,97 +358,22 @@ pub(crate) fn select(font: &Font<'_>, names: &[String]) -> std::result::Result<V
     if names.is_empty() {
         return Ok((0..font.num_glyphs()).collect());
     }
-    let mut ids: HashMap<String, u32> = HashMap::new();
-    for gid in 0..font.num_glyphs() {
-        if let Some(n) = font.glyph_name(gid) {
-            ids.entry(n).or_insert(gid);
-        }
-    }
-    let unknown: Vec<&str> = names.iter().map(String::as_str).filter(|n| !ids.contains_key(*n)).collect();
-    if !unknown.is_empty() {
-        return Err(format!("no glyph named {}", unknown.join(", ")));
-    }
-    let set: BTreeSet<u32> = names.iter().map(|n| ids[n.as_str()]).collect();
-    Ok(set.into_iter().collect())
-}
-
-/// The exact outline of a glyph as a shape (every contour closed, empty ones left out).
-fn glyph_shape(font: &Font<'_>, gid: u32) -> Result<Shape> {
-    let contours = font.outline(gid)?;
-    let mut closed = vec![];
-    for c in &contours {
-        if let Some(Segment::Skipped { reason, .. }) = c.segments.iter().find(|s| matches!(s, Segment::Skipped { .. }))
-        {
-            return Err(Error::InvalidArgument { message: format!("the outline has a skipped piece: {reason}") });
-        }
-        let segs = close_for_fill(c)?;
-        if !segs.is_empty() {
-            closed.push(segs);
-        }
-    }
-    Ok(Shape::new(ClosedPath::from_polynomial(closed)?))
-}
-
-/// Whether the result differs from the outline (see the module documentation).
-fn changed(shape: &Shape, r: &BooleanResult) -> bool {
-    use casteljau::poly::RealAlgebraic;
-    let cs = shape.path().contours();
-    if r.contours != cs.len() {
-        return true;
-    }
-    let (zero, one) = (RealAlgebraic::from(casteljau::rat(0)), RealAlgebraic::from(casteljau::rat(1)));
-    let mut used = vec![false; cs.len()];
-    for pieces in &r.pieces {
-        let Some(k) = pieces.first().map(|p| p.contour) else { return true };
-        if k >= cs.len() || used[k] {
-            return true;
-        }
-        used[k] = true;
-        if pieces.iter().any(|p| p.input != 0 || p.contour != k || p.from != zero || p.to != one) {
-            return true;
-        }
-        // the contour's segments that bound something, in order
-        let own: Vec<usize> = (0..cs[k].len())
-            .filter(|&i| {
-                let ps = cs[k][i].points();
-                ps.iter().any(|p| p != &ps[0])
-            })
-            .collect();
-        let got: Vec<usize> = pieces.iter().map(|p| p.segment).collect();
-        if own.len() != got.len() {
-            return true;
-        }
-        let Some(shift) = own.iter().position(|&s| s == got[0]) else { return true };
-        if (0..own.len()).any(|i| own[(i + shift) % own.len()] != got[i]) {
-            return true;
-        }
-    }
-    false
-}
-
-/// A JSON string.
-fn js(s: &str) -> String {
-    serde_json::to_string(s).expect("a string serializes")
+    font.glyphs_named(names).map_err(|e| e.to_string())
 }
 
 /// Simplifies one glyph and renders its line.
 fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid: u32) -> Done {
     let name = font.glyph_name(gid);
     let label = name.clone().unwrap_or_else(|| format!("#{gid}"));
-    let head = format!(
-        "\"file\":{},{}\"glyph\":{},\"glyph_id\":{gid},",
-        js(file),
-        face.map(|f| format!("\"face\":{f},")).unwrap_or_default(),
-        name.as_deref().map_or_else(|| "null".to_string(), js)
-    );
-    let direction = ctx.direction.unwrap_or(if font.is_cff() { Orientation::Ccw } else { Orientation::Cw });
-    let options = BooleanOptions { fill: ctx.fill, orientation: direction };
+    let line = |body| GlyphLine { file, face, glyph: name.as_deref(), glyph_id: gid, body };
+    let orientation = ctx.direction.unwrap_or_else(|| font.outer_orientation());
+    let options = BooleanOptions { fill: ctx.fill, orientation };
     let op = BooleanOp::Simplify;
     let answer = || -> Result<(usize, BooleanResult, bool, Option<Judged>)> {
-        let shape = glyph_shape(font, gid)?;
+        let shape = font.shape(gid)?;
         let before = shape.path().contours().len();
         let r = boolean_within(op, std::slice::from_ref(&shape), options, &ctx.budget)?;
-        let changed = changed(&shape, &r);
+        let changed = r.changes(&shape);
         let judged = match ctx.against.map(|a| a.get(file, gid, name.as_deref())) {
             None => None,
             Some(None) => Some(Judged::NoResult("no result for this glyph in --against".into())),
@@ -387,7 +384,7 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
                         .map_err(|e| Error::InvalidArgument { message: format!("--against: {e}") })?,
                 );
                 let v = check_against(op, std::slice::from_ref(&shape), options, &r, &found, &ctx.tol, &ctx.budget)?;
-                Some(Judged::Verdict(v))
+                Some(Judged::Verdict(Box::new(v)))
             }
         };
         Ok((before, r, changed, judged))
@@ -398,9 +395,10 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
             d.changed = changed;
             d.disagree = judged.as_ref().is_some_and(|j| !j.agree());
             if ctx.json {
-                let head = format!("{head}\"contours_before\":{before},\"changed\":{changed},");
-                let tail = judged.as_ref().map(Judged::json).unwrap_or_default();
-                d.out.extend_from_slice(result_json(&head, op, ctx.fill, &r, &tail).as_bytes());
+                let result = ResultJson { op, fill: ctx.fill, result: &r, verdict: judged.as_ref() };
+                let answer = GlyphAnswer { contours_before: before, changed, result };
+                serde_json::to_writer(&mut d.out, &line(GlyphBody::Answer(answer)))
+                    .expect("exact strings and finite floats serialize");
             } else {
                 let text = judged.as_ref().map_or_else(|| r.path.clone(), Judged::text);
                 d.out.extend_from_slice(format!("{label}: {text}").as_bytes());
@@ -410,7 +408,9 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
         Err(e) => {
             d.error = true;
             if ctx.json {
-                d.out.extend_from_slice(format!("{{{head}\"error\":{}}}\n", js(&e.to_string())).as_bytes());
+                serde_json::to_writer(&mut d.out, &line(GlyphBody::Error { error: e.to_string() }))
+                    .expect("strings serialize");
+                d.out.push(b'\n');
             } else {
                 let _ = writeln!(d.err, "casteljau: {file}: glyph {label} (id {gid}): {e}");
             }

@@ -309,7 +309,7 @@ fn lint_font(
             f.set_variation(v).map_err(|e| format!("{file}: --variation: {e}"))?;
         }
         let gids = crate::glyphs::select(&f, names).map_err(|e| format!("{file}: {e}"))?;
-        let outer = if f.is_cff() { Orientation::Ccw } else { Orientation::Cw };
+        let outer = f.outer_orientation();
         let rat4 = |b: [i16; 4]| b.map(|x| BigRational::from_integer(x.into()));
         // an instance moves the outline away from the default instance's head box
         let font_box = if variation.is_none() { f.head_box().map(rat4) } else { None };

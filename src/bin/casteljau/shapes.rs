@@ -10,12 +10,11 @@
 
 use crate::args::{ArrangeArgs, BooleanArgs};
 use crate::batch::{Answer, Json, batch_lines};
-use crate::verdicts::{result_json, tolerance, verdict_json, verdict_text};
+use crate::verdicts::{ResultJson, tolerance, verdict_text};
 use casteljau::error::{Error, Result};
-use casteljau::format::{close_for_fill, fill_path, read_svg};
+use casteljau::format::{fill_path, fill_svg};
 use casteljau::num::{NumberMode, Point2, parse_points_in};
 use casteljau::oracle::check_against;
-use casteljau::path::ClosedPath;
 use casteljau::shape::{
     Arrangement, BooleanOp, BooleanOptions, BooleanResult, Edge, Face, InputPiece, Location, Orientation, Shape,
     Vertex, boolean_within,
@@ -39,44 +38,18 @@ fn invalid(message: String) -> Error {
     Error::InvalidArgument { message }
 }
 
-/// An operand as a shape: an `.svg` file, or SVG path data (each subpath closed by a line as SVG
-/// fills it; empty text is the empty shape).
+/// An operand as a shape: an `.svg` file (every shape element, [`fill_svg`]), or SVG path data
+/// (each subpath closed by a line as SVG fills it; empty text is the empty shape).
 pub(crate) fn operand(text: &str, mode: NumberMode) -> Result<Shape> {
     let t = text.trim();
     if t.to_ascii_lowercase().ends_with(".svg") {
-        return svg_shape(t, mode);
+        let svg = std::fs::read_to_string(t).map_err(|e| invalid(format!("{t}: cannot read: {e}")))?;
+        return fill_svg(&svg, mode).map_err(|e| invalid(format!("{t}: {e}")));
     }
     if is_font(t) {
         return Err(invalid(format!("{t}: fonts are read by `boolean simplify FONT...` (fonts only)")));
     }
     Ok(Shape::new(fill_path(t, mode)?))
-}
-
-/// Every shape of an SVG document (transforms applied) as one shape; an element that is not
-/// made of polynomial Bézier pieces (an arc, a circle, a rounded corner) or cannot be read is
-/// refused, naming it.
-fn svg_shape(file: &str, mode: NumberMode) -> Result<Shape> {
-    let text = std::fs::read_to_string(file).map_err(|e| invalid(format!("{file}: cannot read: {e}")))?;
-    let shapes = read_svg(&text, mode).map_err(|e| invalid(format!("{file}: {e}")))?;
-    let mut contours = vec![];
-    for s in &shapes {
-        let at = || match &s.id {
-            Some(id) => format!("{file}: line {}: <{} id=\"{id}\">", s.line, s.tag),
-            None => format!("{file}: line {}: <{}> (shape {})", s.line, s.tag, s.index),
-        };
-        match &s.contours {
-            Ok(cs) => {
-                for c in cs {
-                    let segs = close_for_fill(c).map_err(|e| invalid(format!("{}: {e}", at())))?;
-                    if !segs.is_empty() {
-                        contours.push(segs);
-                    }
-                }
-            }
-            Err(problem) => return Err(invalid(format!("{}: {problem}", at()))),
-        }
-    }
-    Ok(Shape::new(ClosedPath::from_polynomial(contours).map_err(|e| invalid(format!("{file}: {e}")))?))
 }
 
 /// The float results of `--against`: one for a single question, or per question line.
@@ -243,7 +216,8 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
         let failed = verdict.as_ref().is_some_and(|v| !v.agree);
         // only the output asked for is rendered
         Ok(if json {
-            let s = result_json("", op, options.fill, &result, &verdict_json(verdict.as_ref()));
+            let j = ResultJson { op, fill: options.fill, result: &result, verdict: verdict.as_ref() };
+            let s = serde_json::to_string(&j).expect("exact strings and finite floats serialize");
             Answer { text: String::new(), json: Json::Object(s), failed }
         } else {
             let text = verdict.as_ref().map_or_else(|| result.path.clone(), verdict_text);

@@ -8,6 +8,7 @@ use casteljau::path::FillRule;
 use casteljau::shape::{BooleanOp, BooleanResult};
 use num_rational::BigRational;
 use num_traits::Signed;
+use serde::Serialize;
 
 /// `--tol`: an exact, non-negative number.
 pub(crate) fn tolerance(text: &str) -> Result<BigRational> {
@@ -23,16 +24,14 @@ pub(crate) fn verdict_text(v: &Agreement) -> String {
     if v.agree { "agree".into() } else { format!("disagree: {}", v.problems.join("; ")) }
 }
 
-/// The JSON object of an answer: `head` (already written fields, each followed by a comma, or
-/// empty), `op`, `fill`, the result's fields, then `tail` fields (each preceded by a comma).
-pub(crate) fn result_json(head: &str, op: BooleanOp, fill: FillRule, r: &BooleanResult, tail: &str) -> String {
-    let body = serde_json::to_string(r).expect("exact strings and finite floats serialize");
-    let fill = serde_json::to_string(&fill).expect("a name serializes");
-    format!("{{{head}\"op\":\"{}\",\"fill\":{fill},{}{tail}}}", op.as_str(), &body[1..body.len() - 1])
-}
-
-/// `,"verdict":{…}` (or nothing).
-pub(crate) fn verdict_json(v: Option<&Agreement>) -> String {
-    v.map(|v| format!(",\"verdict\":{}", serde_json::to_string(v).expect("exact strings and finite floats serialize")))
-        .unwrap_or_default()
+/// The JSON object of an answer: `op`, `fill`, the fields of [`BooleanResult`], then `verdict`
+/// with `--against` (a [`Agreement`], or what the font route puts in its place).
+#[derive(Serialize)]
+pub(crate) struct ResultJson<'a, V = &'a Agreement> {
+    pub(crate) op: BooleanOp,
+    pub(crate) fill: FillRule,
+    #[serde(flatten)]
+    pub(crate) result: &'a BooleanResult,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) verdict: Option<V>,
 }
