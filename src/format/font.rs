@@ -275,7 +275,7 @@ impl<'a> Font<'a> {
     /// As [`Self::outline`]; [`Error::InvalidArgument`] with the reason for a piece that is not a
     /// polynomial Bézier curve ([`Segment::Skipped`]: the `glyf` and CFF readers make none, so
     /// this is a safeguard); [`Error::TooLarge`] for a contour of more than
-    /// [`crate::intersect::MAX_PATH_SEGMENTS`] segments.
+    /// [`crate::path::MAX_PATH_SEGMENTS`] segments.
     ///
     /// # Example
     /// ```

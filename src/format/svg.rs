@@ -161,7 +161,7 @@ pub fn read_svg(text: &str, mode: NumberMode) -> Result<Vec<SvgShape>> {
 /// shape elements when it has no `id`) for an element that is skipped (a circle, an ellipse, a
 /// transform that is not rational), malformed (bad path data, a unit), or holds a piece that is
 /// no polynomial Bézier curve (an arc, a rounded corner); [`Error::TooLarge`] for a contour of
-/// more than [`crate::intersect::MAX_PATH_SEGMENTS`] segments.
+/// more than [`crate::path::MAX_PATH_SEGMENTS`] segments.
 ///
 /// # Example
 /// ```
