@@ -13,7 +13,7 @@
 //! `missed`, `spurious` or a `duplicate` ([`DisagreementKind`]). The path oracle decides regions:
 //! nesting, an exact witness point, and a distance bound between the boundaries.
 //!
-//! The oracles sit above what they check ([`crate::classify`], [`crate::intersect`],
+//! The oracles sit above what they check ([`crate::classify`](mod@crate::classify), [`crate::intersect`](mod@crate::intersect),
 //! [`crate::shape`]) and below the formats; nothing but the command line and users' tests
 //! imports them.
 //!

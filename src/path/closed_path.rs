@@ -183,7 +183,8 @@ impl ClosedPath {
         self.contours.iter().map(Vec::len).sum()
     }
 
-    /// The estimated work of [`Self::winding`]: [`winding_estimate`] summed over the contours.
+    /// The estimated work of [`Self::winding`]: per segment, its degree and the bits of its
+    /// numbers and of `q` ([`crate::work`]), summed over the contours.
     ///
     /// # Example
     /// ```
