@@ -9,10 +9,11 @@
 //! `cargo bench --bench batch` (`-- spline_check` for that group only).
 
 use casteljau::BezierCurve;
-use casteljau::classify::{classify, classify_in};
+use casteljau::classify::classify;
+use casteljau::internal::checked;
+use casteljau::internal::classify_in;
 use casteljau::internal::{classify_json, classify_json_small};
 use casteljau::internal::{integer_cubic, parse_points_small, small_cubic};
-use casteljau::num::checked;
 use casteljau::num::{NumberMode, parse_points};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -339,7 +340,11 @@ fn spline_check(c: &mut Criterion) {
     let in_process = |text: &str, out: &mut Vec<u8>| {
         for line in text.lines() {
             let h = homogeneous_control_points(&parse_points(line, 2, None).unwrap(), None).unwrap();
-            let check = RationalSpline::from_knots(1, h, &knots).unwrap().check_within(&Budget::unlimited()).unwrap();
+            let check = casteljau::spline::SplineCheck::new(
+                &RationalSpline::from_knots(1, h, &knots).unwrap(),
+                &Budget::unlimited(),
+            )
+            .unwrap();
             assert!(check.passed);
             serde_json::to_writer(&mut *out, &check).unwrap();
             out.push(b'\n');

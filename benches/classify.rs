@@ -4,10 +4,11 @@
 //! `classify` (fixed-width route, answer converted to `BigRational`) and the full classification in
 //! `BigRational` throughout, in one run. `cargo bench --bench classify`.
 
-use casteljau::classify::{classify, classify_in};
+use casteljau::classify::classify;
+use casteljau::internal::classify_in;
+use casteljau::internal::{SmallRational, checked};
 use casteljau::internal::{decide, summarize_integers};
 use casteljau::num::Radical;
-use casteljau::num::{SmallRational, checked};
 use casteljau::{BezierCurve, Point, rat};
 use casteljau::{Exact, Scalar};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};

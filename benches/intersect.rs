@@ -8,7 +8,17 @@
 //! `cargo bench --bench intersect`.
 
 use casteljau::BezierCurve;
-use casteljau::intersect::{Domain, intersect_polynomial};
+use casteljau::intersect::{Domain, Intersections};
+use casteljau::work::Budget;
+
+/// Two polynomial curves' exact intersections (the library's route for them).
+fn intersect_polynomial(
+    a: &BezierCurve<BigRational>,
+    b: &BezierCurve<BigRational>,
+    domain: Domain,
+) -> casteljau::Result<Intersections> {
+    casteljau::intersect::intersect(&a.clone().into(), &b.clone().into(), domain, &Budget::unlimited())
+}
 use casteljau::num::Point;
 use casteljau::strategies::{binary64, intersections as hard};
 use criterion::{Criterion, criterion_group, criterion_main};

@@ -39,8 +39,12 @@ fn simplify_font(c: &mut Criterion) {
     let exact = |shapes: &[casteljau::shape::Shape]| {
         use casteljau::shape::{BooleanOp, BooleanOptions, boolean};
         for s in shapes {
-            let _ =
-                black_box(boolean(BooleanOp::Simplify, std::slice::from_ref(black_box(s)), BooleanOptions::default()));
+            let _ = black_box(boolean(
+                BooleanOp::Simplify,
+                std::slice::from_ref(black_box(s)),
+                BooleanOptions::default(),
+                &casteljau::work::Budget::unlimited(),
+            ));
         }
     };
     g.bench_function("casteljau_exact_1_thread", |b| b.iter(|| exact(&shapes)));

@@ -13,7 +13,12 @@
 
 use casteljau::BezierCurve;
 use casteljau::num::{NumberMode, parse_points_in};
-use casteljau::rational::bounding_box_polynomial;
+use casteljau::rational::{BoundingBox, bounding_box};
+
+/// The exact box of a polynomial curve (as a rational one of unit weights), no work limit.
+fn bounding_box_polynomial(c: &casteljau::BezierCurve<num_rational::BigRational>) -> casteljau::Result<BoundingBox> {
+    bounding_box(&c.clone().into(), &casteljau::work::Budget::unlimited())
+}
 
 type Cubic = [[f64; 2]; 4];
 

@@ -3,9 +3,9 @@
 //! Exact arithmetic has no rounding, so the size of the numbers grows with the work: de
 //! Casteljau at `t = p/q` multiplies bit lengths by the degree, a power form carries binomials
 //! of `n` bits. An accepted input must get its answer in bounded time, so every exact operation
-//! the command line offers has a library entry taking a [`Budget`] (`BezierCurve::eval_within`
+//! the command line offers has a library entry taking a [`Budget`] (`Evaluation::new`
 //! and the other `*_within` operations of [`crate::curve`], [`crate::rational`],
-//! [`crate::rational::bounding_box_within`], ...) that estimates its cost here first and
+//! [`crate::rational::bounding_box`], ...) that estimates its cost here first and
 //! refuses with [`Error::WorkLimit`] (naming the limit and the option that raises it) when the
 //! estimate exceeds the budget.
 //!
@@ -16,7 +16,7 @@
 //! The estimates are for the typical case (they are not worst-case bounds); where the work
 //! depends on the input beyond its sizes, the operation also counts its steps while running
 //! and stops with an error naming the limit: root isolation charges each subdivision against
-//! the budget ([`crate::poly::isolate_bernstein_within`]), and the expression language
+//! the budget ([`crate::poly::isolate_bernstein`]), and the expression language
 //! charges each `sum`/`prod` term, large power, binomial and Bernstein polynomial
 //! ([`crate::proof::expr::with_step_limit`]; the command line allows one step per 200 units).
 //!
@@ -36,11 +36,15 @@
 //! | degree elevation by `r` | `3·d·(n + r)·n·L(β + n + r)` |
 //! | denominator root isolation | `250·n²·L(β + n)` up front, then `n²·L(b)` per split (`b`: current bits) |
 //!
+//! The estimates are the crate's own: an operation taking a [`Budget`] computes its estimate
+//! and checks it; users choose the budget.
+//!
 //! ```
-//! use casteljau::work::{Budget, power_form};
+//! use casteljau::{BezierCurve, num::parse_points, work::Budget};
+//! let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
 //! let budget = Budget::new(1e10, "--max-work");
-//! assert!(budget.check("power form", power_form(3, 2, 16)).is_ok());
-//! let e = budget.check("power form of degree 100000", power_form(100_000, 2, 16)).unwrap_err();
+//! assert!(budget.check("a cheap step", 1e3).is_ok());
+//! let e = budget.check("an expensive step", 1e12).unwrap_err();
 //! assert!(e.to_string().contains("--max-work"));
 //! ```
 
@@ -52,7 +56,7 @@ use num_rational::BigRational;
 pub const DEFAULT_MAX_WORK: f64 = 1e10;
 
 /// Work units per evaluation step of the expression language (a step costs about 0.2 µs).
-pub const UNITS_PER_STEP: f64 = 200.0;
+pub(crate) const UNITS_PER_STEP: f64 = 200.0;
 
 /// A work limit and the option that raises it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -77,21 +81,8 @@ impl Budget {
     /// The evaluation steps of the expression language this budget allows (one per
     /// [`UNITS_PER_STEP`] units: a step costs about 0.2 µs), for
     /// [`crate::proof::expr::with_step_limit`].
-    pub fn expression_steps(&self) -> u64 {
+    pub(crate) fn expression_steps(&self) -> u64 {
         (self.limit / UNITS_PER_STEP).min(u64::MAX as f64) as u64
-    }
-
-    /// The budget that `steps` expression steps stand for (the inverse of
-    /// [`Budget::expression_steps`]), raised with `option`: how work that runs under a
-    /// [`crate::proof::expr::with_step_limit`] learns its work limit.
-    ///
-    /// ```
-    /// use casteljau::work::Budget;
-    /// let b = Budget::new(1e10, "--max-work");
-    /// assert_eq!(Budget::from_expression_steps(b.expression_steps(), "--max-work"), b);
-    /// ```
-    pub fn from_expression_steps(steps: u64, option: &'static str) -> Self {
-        Budget { limit: steps as f64 * UNITS_PER_STEP, option }
     }
 
     /// `Ok` when `estimate ≤ limit`, else [`Error::WorkLimit`] naming `what`.
@@ -108,22 +99,22 @@ impl Budget {
 }
 
 /// Limbs of a `bits`-bit number: `bits/64 + 1`.
-pub fn limbs(bits: u64) -> f64 {
+pub(crate) fn limbs(bits: u64) -> f64 {
     (bits / 64 + 1) as f64
 }
 
 /// Bit length of an exact number: numerator plus denominator.
-pub fn bits(x: &BigRational) -> u64 {
+pub(crate) fn bits(x: &BigRational) -> u64 {
     x.numer().bits() + x.denom().bits()
 }
 
 /// The largest [`bits`] over the coordinates of `points` (0 when there are none).
-pub fn max_bits(points: &[Point<BigRational>]) -> u64 {
+pub(crate) fn max_bits(points: &[Point<BigRational>]) -> u64 {
     points.iter().flat_map(|p| p.coords.iter()).map(bits).max().unwrap_or(0)
 }
 
 /// The largest [`bits`] of `values`.
-pub fn max_bits_of(values: &[BigRational]) -> u64 {
+pub(crate) fn max_bits_of(values: &[BigRational]) -> u64 {
     values.iter().map(bits).max().unwrap_or(0)
 }
 
@@ -137,13 +128,13 @@ fn grown(beta: u64, n: usize, tau: u64) -> u64 {
 
 /// Evaluation at one parameter of `tau` bits (fraction-free Horner): degree `n`, dimension
 /// `dim`, input numbers of `beta` bits.
-pub fn evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+pub(crate) fn evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let g = limbs(grown(beta, n, tau));
     dim as f64 * (n as f64 * g * limbs(tau) + GCD * g * g)
 }
 
 /// One subdivision at a `tau`-bit parameter (fraction-free triangle, `2(n+1)` reduced points).
-pub fn subdivision(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+pub(crate) fn subdivision(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let g = limbs(grown(beta, n, tau));
     let nf = n as f64;
     dim as f64 * (nf * nf / 2.0 * g * limbs(tau) + 2.0 * (nf + 1.0) * GCD * g * g)
@@ -151,7 +142,7 @@ pub fn subdivision(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
 
 /// `depth` rounds of subdivision at a `tau`-bit parameter (`2^j` pieces in round `j`, whose
 /// numbers have grown by `j·n·tau` bits).
-pub fn repeated_subdivision(n: usize, dim: usize, beta: u64, tau: u64, depth: u32) -> f64 {
+pub(crate) fn repeated_subdivision(n: usize, dim: usize, beta: u64, tau: u64, depth: u32) -> f64 {
     (0..depth.min(64))
         .map(|j| {
             let grown = beta.saturating_add(u64::from(j).saturating_mul(n as u64).saturating_mul(tau));
@@ -167,11 +158,7 @@ pub fn repeated_subdivision(n: usize, dim: usize, beta: u64, tau: u64, depth: u3
 /// proof of a depth-8 subdivision of a degree-10 curve, 306-bit numbers:
 /// 1.3 ms measured per evaluation, 1.7 ms estimated).
 ///
-/// ```
-/// use casteljau::work::rational_evaluation;
-/// assert!(rational_evaluation(10, 2, 240, 8) > rational_evaluation(3, 2, 240, 8));
-/// ```
-pub fn rational_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+pub(crate) fn rational_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let nf = n as f64;
     let g = limbs(grown(beta, n, tau));
     600.0 * dim as f64 * (nf * (nf + 1.0) / 2.0 + 1.0) * g * g
@@ -183,44 +170,40 @@ pub fn rational_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
 /// `n⁴/12` products in all, each `700·L(g)²` with `g = β + nτ` (degree 20, 41 parameters:
 /// 6.0 s measured, 6.4 s estimated).
 ///
-/// ```
-/// use casteljau::work::{rational_evaluation, saito_hosaka_evaluation};
-/// assert!(saito_hosaka_evaluation(20, 3, 16, 8) > rational_evaluation(20, 3, 16, 8));
-/// ```
-pub fn saito_hosaka_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+pub(crate) fn saito_hosaka_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let nf = n as f64 + 1.0;
     let g = limbs(grown(beta, n, tau));
     700.0 * (nf * nf * nf * nf / 12.0 + dim as f64 * nf * nf) * g * g
 }
 
 /// The whole de Casteljau scheme (`(n+1)(n+2)/2` reduced points).
-pub fn de_casteljau_scheme(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
+pub(crate) fn de_casteljau_scheme(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let g = limbs(grown(beta, n, tau));
     let nf = n as f64;
     subdivision(n, dim, beta, tau) + dim as f64 * (nf + 1.0) * (nf + 2.0) / 2.0 * GCD * g * g
 }
 
 /// Conversion to (or from) the power form, and exact degree reduction.
-pub fn power_form(n: usize, dim: usize, beta: u64) -> f64 {
+pub(crate) fn power_form(n: usize, dim: usize, beta: u64) -> f64 {
     let nf = n as f64 + 1.0;
     8.0 * dim as f64 * nf * nf * limbs(beta.saturating_add(n as u64))
 }
 
 /// The derivative of order `k` of a degree-`n` curve (numbers grow by `k·log₂ n` bits).
-pub fn derivative(n: usize, k: usize, dim: usize, beta: u64) -> f64 {
+pub(crate) fn derivative(n: usize, k: usize, dim: usize, beta: u64) -> f64 {
     let growth = (k as u64).saturating_mul(u64::from(usize::BITS - n.leading_zeros()));
     100.0 * dim as f64 * (n as f64 + 1.0) * (k as f64 + 1.0) * limbs(beta.saturating_add(growth))
 }
 
 /// Degree elevation of a degree-`n` curve by `r`.
-pub fn elevation(n: usize, r: usize, dim: usize, beta: u64) -> f64 {
+pub(crate) fn elevation(n: usize, r: usize, dim: usize, beta: u64) -> f64 {
     let m = n.saturating_add(r);
     3.0 * dim as f64 * (m as f64 + 1.0) * (n as f64 + 1.0) * limbs(beta.saturating_add(m as u64))
 }
 
 /// The up-front part of isolating the roots of a degree-`n` polynomial with `beta`-bit
 /// coefficients (power form, square-free part).
-pub fn root_isolation(n: usize, beta: u64) -> f64 {
+pub(crate) fn root_isolation(n: usize, beta: u64) -> f64 {
     let nf = n as f64 + 1.0;
     250.0 * nf * nf * limbs(beta.saturating_add(n as u64))
 }
@@ -231,7 +214,7 @@ pub fn root_isolation(n: usize, beta: u64) -> f64 {
 /// roots are mapped and compared: `1330·d⁴·limbs²`, on the safe side for font-like pairs
 /// (3 × 3: 4.8 ms measured, 35 ms estimated; 5 × 5: 3.3 s measured before the enclosure filter, 4.7 s
 /// estimated).
-pub fn intersection(n: usize, m: usize, beta: u64) -> f64 {
+pub(crate) fn intersection(n: usize, m: usize, beta: u64) -> f64 {
     let d = (n.max(1) * m.max(1)) as f64;
     let bits = 2 * n.max(m) as u64 * beta.saturating_add(4);
     let l = limbs(bits);
@@ -243,7 +226,7 @@ pub fn intersection(n: usize, m: usize, beta: u64) -> f64 {
 /// each mapped to its coordinate: `5000·(n + 1)⁴·limbs(4·beta + 2n)²`, on the safe side of
 /// measurements on this machine (degree 10, 60-bit: 0.9 s measured, 1.8 s estimated; degree 20,
 /// 60-bit: 23 s measured, 26 s estimated).
-pub fn extrema(n: usize, beta: u64) -> f64 {
+pub(crate) fn extrema(n: usize, beta: u64) -> f64 {
     let nf = n as f64 + 1.0;
     let l = limbs(beta.saturating_mul(4).saturating_add(2 * n as u64));
     5000.0 * nf * nf * nf * nf * l * l
@@ -253,29 +236,22 @@ pub fn extrema(n: usize, beta: u64) -> f64 {
 /// roots of `y(t) − q_y` isolated and the side of each crossing decided, plus reading the
 /// segment: `2·10⁵ + 20·(n + 1)⁴·limbs(beta + n)²` (degree 30, 60-bit: 34 ms measured per
 /// segment, 74 ms estimated).
-pub fn winding_segment(n: usize, beta: u64) -> f64 {
+pub(crate) fn winding_segment(n: usize, beta: u64) -> f64 {
     let nf = n as f64 + 1.0;
     let l = limbs(beta.saturating_add(n as u64));
     2e5 + 20.0 * nf * nf * nf * nf * l * l
 }
 
 /// One subdivision step of root isolation (degree `n`, `beta`-bit coefficients).
-pub fn root_split(n: usize, beta: u64) -> f64 {
+pub(crate) fn root_split(n: usize, beta: u64) -> f64 {
     let nf = n as f64;
     nf * nf * limbs(beta.saturating_add(2 * n as u64))
 }
 
 /// The sizes of a spline for its cost models: degree `n`, control points, homogeneous
 /// dimension and the largest bit length of a control coordinate or knot.
-///
-/// # Example
-/// ```
-/// use casteljau::work::{SplineShape, spline_check, spline_conversion};
-/// let s = SplineShape { degree: 3, points: 6, dim: 3, bits: 8 };
-/// assert!(spline_check(s) > spline_conversion(s));
-/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct SplineShape {
+pub(crate) struct SplineShape {
     /// The degree `n`.
     pub degree: usize,
     /// The number of control points `m + 1`.
@@ -292,14 +268,7 @@ pub struct SplineShape {
 /// bits: `2·10⁴·(n + 1) + 40·n²·dim·G·L(β·(n + 1))²` (degree 12, 500 points: 1.5 s measured,
 /// 1.5 s estimated; degree 3, 10,000 points: 2.0 s measured, 1.0 s estimated, output
 /// included in the measurement).
-///
-/// # Example
-/// ```
-/// use casteljau::work::{SplineShape, spline_conversion};
-/// let cubic = |points| spline_conversion(SplineShape { degree: 3, points, dim: 3, bits: 16 });
-/// assert!(cubic(1000) > 100.0 * cubic(6));
-/// ```
-pub fn spline_conversion(s: SplineShape) -> f64 {
+pub(crate) fn spline_conversion(s: SplineShape) -> f64 {
     let n = s.degree as f64;
     let l = limbs(s.bits.saturating_mul(s.degree as u64 + 1));
     s.points.max(1) as f64 * (2e4 * (n + 1.0) + 40.0 * n * n * s.dim as f64 * GCD * l * l)
@@ -307,14 +276,7 @@ pub fn spline_conversion(s: SplineShape) -> f64 {
 
 /// One de Boor evaluation of a spline at a `tau`-bit parameter: `n(n + 1)/2` homogeneous
 /// interpolations of `dim` reduced coordinates.
-///
-/// # Example
-/// ```
-/// use casteljau::work::{SplineShape, spline_evaluation};
-/// let s = SplineShape { degree: 3, points: 6, dim: 3, bits: 16 };
-/// assert!(spline_evaluation(s, 1000) > spline_evaluation(s, 2));
-/// ```
-pub fn spline_evaluation(s: SplineShape, tau: u64) -> f64 {
+pub(crate) fn spline_evaluation(s: SplineShape, tau: u64) -> f64 {
     let n = s.degree as f64;
     let l = limbs(grown(s.bits, s.degree, tau));
     n * (n + 1.0) / 2.0 * s.dim as f64 * GCD * l * l + 1.0
@@ -324,16 +286,7 @@ pub fn spline_evaluation(s: SplineShape, tau: u64) -> f64 {
 /// and `2n + 1` evaluations of each segment and of the spline per segment (degree 12, 500
 /// points: 2.5 s measured, 3.0 s estimated; degree 3, 10,000 points: 4.1 s measured, 2.0 s
 /// estimated, output included in the measurement).
-///
-/// # Example
-/// ```
-/// use casteljau::work::{Budget, DEFAULT_MAX_WORK, SplineShape, spline_check};
-/// let budget = Budget::new(DEFAULT_MAX_WORK, "--max-work");
-/// let shape = |degree, points| SplineShape { degree, points, dim: 3, bits: 13 };
-/// assert!(budget.check("check", spline_check(shape(3, 1000))).is_ok());
-/// assert!(budget.check("check", spline_check(shape(12, 10_000))).is_err()); // about a minute
-/// ```
-pub fn spline_check(s: SplineShape) -> f64 {
+pub(crate) fn spline_check(s: SplineShape) -> f64 {
     let segments = (s.points.saturating_sub(s.degree)).max(1) as f64;
     let samples = segments * (2.0 * s.degree as f64 + 1.0);
     let tau = 64 - (2 * s.degree as u64).leading_zeros() as u64;
@@ -344,17 +297,63 @@ pub fn spline_check(s: SplineShape) -> f64 {
 /// Bézier extraction of a NURBS surface of degrees `(p, q)` with `points` homogeneous control
 /// points of `dim` coordinates and `bits`-bit numbers, and its check: extraction along `u` of
 /// every column and along `v` of every row, then `(2p + 1)(2q + 1)` samples per patch.
-///
-/// # Example
-/// ```
-/// use casteljau::work::surface_extraction;
-/// assert!(surface_extraction((3, 3), 100, 4, 16) > surface_extraction((1, 1), 100, 4, 16));
-/// ```
-pub fn surface_extraction(degree: (usize, usize), points: usize, dim: usize, bits: u64) -> f64 {
+pub(crate) fn surface_extraction(degree: (usize, usize), points: usize, dim: usize, bits: u64) -> f64 {
     let (p, q) = (degree.0.max(1), degree.1.max(1));
     let shape = |n: usize| SplineShape { degree: n, points, dim, bits };
     let samples = points as f64 * ((2 * p + 1) * (2 * q + 1)) as f64;
     spline_conversion(shape(p)) * (q + 1) as f64
         + spline_conversion(shape(q)) * (p + 1) as f64
         + samples * evaluation(p.max(q), dim, bits.saturating_mul((p + q) as u64), 8)
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn rational_evaluation_estimate() {
+        use crate::work::rational_evaluation;
+        assert!(rational_evaluation(10, 2, 240, 8) > rational_evaluation(3, 2, 240, 8));
+    }
+
+    #[test]
+    fn saito_hosaka_evaluation_estimate() {
+        use crate::work::{rational_evaluation, saito_hosaka_evaluation};
+        assert!(saito_hosaka_evaluation(20, 3, 16, 8) > rational_evaluation(20, 3, 16, 8));
+    }
+
+    #[test]
+    fn spline_shape() {
+        use crate::work::{SplineShape, spline_check, spline_conversion};
+        let s = SplineShape { degree: 3, points: 6, dim: 3, bits: 8 };
+        assert!(spline_check(s) > spline_conversion(s));
+    }
+
+    #[test]
+    fn spline_conversion_estimate() {
+        use crate::work::{SplineShape, spline_conversion};
+        let cubic = |points| spline_conversion(SplineShape { degree: 3, points, dim: 3, bits: 16 });
+        assert!(cubic(1000) > 100.0 * cubic(6));
+    }
+
+    #[test]
+    fn spline_evaluation_estimate() {
+        use crate::work::{SplineShape, spline_evaluation};
+        let s = SplineShape { degree: 3, points: 6, dim: 3, bits: 16 };
+        assert!(spline_evaluation(s, 1000) > spline_evaluation(s, 2));
+    }
+
+    #[test]
+    fn spline_check_estimate() {
+        use crate::work::{Budget, DEFAULT_MAX_WORK, SplineShape, spline_check};
+        let budget = Budget::new(DEFAULT_MAX_WORK, "--max-work");
+        let shape = |degree, points| SplineShape { degree, points, dim: 3, bits: 13 };
+        assert!(budget.check("check", spline_check(shape(3, 1000))).is_ok());
+        assert!(budget.check("check", spline_check(shape(12, 10_000))).is_err()); // about a minute
+    }
+
+    #[test]
+    fn surface_extraction_estimate() {
+        use crate::work::surface_extraction;
+        assert!(surface_extraction((3, 3), 100, 4, 16) > surface_extraction((1, 1), 100, 4, 16));
+    }
 }

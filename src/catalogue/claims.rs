@@ -38,20 +38,6 @@ use crate::error::Result;
 use serde::Deserialize;
 
 /// A claim's checkable content: its `kind` and that kind's fields.
-///
-/// # Example
-/// ```
-/// use casteljau::catalogue::ClaimContent;
-/// let c: ClaimContent = toml::from_str(r#"
-///     kind = "identity"
-///     vars = ["t"]
-///     lhs = "(1 - t)^2 + 2*(1 - t)*t + t^2"
-///     rhs = "1"
-/// "#).unwrap();
-/// let outcome = c.check().unwrap();
-/// assert!(outcome.holds);
-/// assert_eq!(outcome.method, "grid");
-/// ```
 #[derive(Clone, Debug, Deserialize)]
 #[serde(tag = "kind", rename_all = "kebab-case")]
 pub enum ClaimContent {
@@ -133,5 +119,26 @@ impl ClaimContent {
             ClaimContent::PatchWeightChange(c) => c.check(),
             ClaimContent::Net(c) => c.check(),
         }
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn claim_content_example() {
+        use crate::catalogue::ClaimContent;
+        let c: ClaimContent = toml::from_str(
+            r#"
+            kind = "identity"
+            vars = ["t"]
+            lhs = "(1 - t)^2 + 2*(1 - t)*t + t^2"
+            rhs = "1"
+        "#,
+        )
+        .unwrap();
+        let outcome = c.check().unwrap();
+        assert!(outcome.holds);
+        assert_eq!(outcome.method, "grid");
     }
 }

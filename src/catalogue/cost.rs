@@ -60,19 +60,6 @@ impl ClaimContent {
     ///
     /// # Errors
     /// A malformed claim (its numbers, polygons or expressions do not parse).
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::catalogue::ClaimContent;
-    /// let deep: ClaimContent = toml::from_str(r#"
-    ///     kind = "repeated-subdivision"
-    ///     curve = "0 0, 1 3, 2 -1, 3 4, 4 0, 5 2, 6 -3, 7 1, 8 5, 9 -2, 10 0"
-    ///     t = "1/2"
-    ///     depth = 16
-    ///     pieces = 65536
-    /// "#).unwrap();
-    /// assert!(deep.estimate().unwrap() > casteljau::work::DEFAULT_MAX_WORK);
-    /// ```
     pub fn estimate(&self) -> Result<f64> {
         Ok(match self {
             ClaimContent::Identity(_) => 0.0,
@@ -261,4 +248,24 @@ fn implicit(c: &rational::Implicit) -> Result<f64> {
     let point_bits = beta.saturating_add((n as u64).saturating_mul(tau));
     let f_cost = f.size() as f64 * 18.0 * limbs(point_bits.saturating_mul(d as u64)).powi(2);
     Ok(count as f64 * (work::evaluation(n, dim, beta, tau) + f_cost))
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn claim_content_estimate() {
+        use crate::catalogue::ClaimContent;
+        let deep: ClaimContent = toml::from_str(
+            r#"
+            kind = "repeated-subdivision"
+            curve = "0 0, 1 3, 2 -1, 3 4, 4 0, 5 2, 6 -3, 7 1, 8 5, 9 -2, 10 0"
+            t = "1/2"
+            depth = 16
+            pieces = 65536
+        "#,
+        )
+        .unwrap();
+        assert!(deep.estimate().unwrap() > crate::work::DEFAULT_MAX_WORK);
+    }
 }

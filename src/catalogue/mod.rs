@@ -4,8 +4,9 @@
 //!
 //! * `id` (unique across the catalogue), `source` (the place in the seed: equation, example,
 //!   figure), `statement` (in words), `expect` = `"holds"` or `"fails-as-printed"`;
-//! * the checkable content: `kind` and that kind's fields (see [`ClaimContent`]), written
-//!   **as printed** in the seed, OCR and typesetting errors included;
+//! * the checkable content: `kind` and that kind's fields (the kinds and their fields are listed
+//!   in `proofs/README.md` and `docs/prove.md`), written **as printed** in the seed, OCR and
+//!   typesetting errors included;
 //! * for `fails-as-printed`, a `[claim.corrected]` table overriding the fields that change, and
 //!   optionally `note`: the corrected statement must hold.
 //!
@@ -21,18 +22,11 @@ pub(crate) mod polynomial;
 pub(crate) mod rational;
 pub(crate) mod surface;
 
-pub use claims::ClaimContent;
-pub use common::{MAX_TABLE_DEGREE, MAX_TABLE_STEPS};
-pub use cubic::{CanonicalMapClaim, ClassificationClaim, MovingLine2, MovingLinesClaim};
-pub use polynomial::{
-    BasisTable, CurveFormula, Identity, Lemma2, MAX_INSTANCES, MAX_PARAMETER_RANGE, Matrix, NODE_FAMILIES, PowerForm,
-    RepeatedSubdivision, Subdivision, Table,
-};
-pub use surface::{Net, PatchEvaluations, PatchWeightChange, SplineSegments};
+use claims::ClaimContent;
 
 use crate::error::{Error, Result};
 use crate::work::Budget;
-pub use common::Outcome;
+use common::Outcome;
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -72,9 +66,9 @@ pub struct Claim {
     /// The expected verdict.
     pub expect: Verdict,
     /// The content as printed.
-    pub content: ClaimContent,
+    pub(crate) content: ClaimContent,
     /// The corrected content (for `fails-as-printed`).
-    pub corrected: Option<ClaimContent>,
+    pub(crate) corrected: Option<ClaimContent>,
     /// A note on the correction.
     pub note: Option<String>,
     /// The claim file and the line of its `id`.
@@ -110,6 +104,23 @@ pub struct ClaimResult {
     pub corrected_detail: Option<String>,
     /// Seconds taken.
     pub seconds: f64,
+}
+
+impl Claim {
+    /// The estimated work of checking the claim (its printed and its corrected content), in
+    /// work units ([`crate::work`]): what [`check`] compares with its budget.
+    ///
+    /// # Errors
+    /// A malformed claim body, with the file and line.
+    pub fn estimate(&self) -> Result<f64> {
+        let wrap = |e: Error| Error::ClaimFile {
+            file: self.file.clone(),
+            line: Some(self.line),
+            message: format!("claim {}: {e}", self.id),
+        };
+        Ok(self.content.estimate().map_err(wrap)?
+            + self.corrected.as_ref().map_or(Ok(0.0), |c| c.estimate()).map_err(wrap)?)
+    }
 }
 
 impl ClaimResult {
@@ -267,23 +278,11 @@ pub fn load(paths: &[PathBuf]) -> Result<Vec<Claim>> {
     Ok(claims)
 }
 
-/// Checks one claim within the work budget the caller runs under: inside
-/// [`with_step_limit`](crate::proof::expr::with_step_limit) (as `casteljau prove` runs every
-/// claim) the budget those steps stand for ([`Budget::from_expression_steps`], raised with
-/// `--max-work`), otherwise none. See [`check_within`].
-///
-/// # Errors
-/// A malformed claim body (bad expression, missing field, unknown kind), or a claim whose
-/// estimated work exceeds the budget, with the file and line.
-pub fn check(claim: &Claim) -> Result<ClaimResult> {
-    let budget = crate::proof::expr::current_steps()
-        .map_or_else(Budget::unlimited, |s| Budget::from_expression_steps(s.limit(), "--max-work"));
-    check_within(claim, &budget)
-}
-
-/// Checks one claim after estimating its work ([`ClaimContent::estimate`], the printed and the
-/// corrected content together): a claim past `budget` is refused before any of it is checked,
-/// with [`Error::WorkLimit`] naming the estimate, the limit and the option that raises it.
+/// Checks one claim after estimating its work (the printed and the corrected content
+/// together): a claim past `budget` is refused before any of it is checked, with
+/// [`Error::WorkLimit`] naming the estimate, the limit and the option that raises it; while it
+/// runs, the expression language's steps are charged against the same budget
+/// ([`crate::proof::expr::with_step_limit`]). [`Budget::unlimited`] for no limit.
 ///
 /// # Errors
 /// A malformed claim body (bad expression, missing field, unknown kind), or an estimate past
@@ -291,7 +290,7 @@ pub fn check(claim: &Claim) -> Result<ClaimResult> {
 ///
 /// # Example
 /// ```
-/// use casteljau::catalogue::{check_within, parse_claims};
+/// use casteljau::catalogue::{check, parse_claims};
 /// use casteljau::work::Budget;
 /// let claims = parse_claims("deep.toml", r#"
 ///     seed = "x"
@@ -306,19 +305,21 @@ pub fn check(claim: &Claim) -> Result<ClaimResult> {
 ///     depth = 16
 ///     pieces = 65536
 /// "#).unwrap();
-/// let e = check_within(&claims[0], &Budget::new(1e10, "--max-work")).unwrap_err();
+/// let e = check(&claims[0], &Budget::new(1e10, "--max-work")).unwrap_err();
 /// assert!(e.to_string().contains("--max-work"));
 /// ```
-pub fn check_within(claim: &Claim, budget: &Budget) -> Result<ClaimResult> {
+pub fn check(claim: &Claim, budget: &Budget) -> Result<ClaimResult> {
+    crate::proof::expr::with_step_limit(budget.expression_steps(), || check_claim(claim, budget))
+}
+
+fn check_claim(claim: &Claim, budget: &Budget) -> Result<ClaimResult> {
     let start = Instant::now();
     let wrap = |e: Error| Error::ClaimFile {
         file: claim.file.clone(),
         line: Some(claim.line),
         message: format!("claim {}: {e}", claim.id),
     };
-    let estimate = claim.content.estimate().map_err(wrap)?
-        + claim.corrected.as_ref().map_or(Ok(0.0), |c| c.estimate()).map_err(wrap)?;
-    budget.check("the check", estimate).map_err(wrap)?;
+    budget.check("the check", claim.estimate()?).map_err(wrap)?;
     let printed: Outcome = claim.content.check().map_err(wrap)?;
     let (found, corrected_detail) = if printed.holds {
         (Verdict::Holds, None)

@@ -35,21 +35,14 @@ use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// `Q(√3)`.
+pub(crate) type Sqrt3Field = QuadraticExt<BigRational>;
+/// `Q(√3)(√r)`: where the canonical maps live (a [`QuadraticExt`] over `Q(√3)`).
 ///
 /// # Example
 /// ```
-/// use casteljau::{Scalar, rat, classify::Sqrt3Field};
-/// let s3 = Sqrt3Field::sqrt(rat(3));
-/// assert_eq!(s3.clone() * s3, Sqrt3Field::from_i64(3));
-/// ```
-pub type Sqrt3Field = QuadraticExt<BigRational>;
-/// `Q(√3)(√r)`: where the canonical maps live.
-///
-/// # Example
-/// ```
-/// use casteljau::{Scalar, rat, classify::{Tower, tower_sqrt}};
-/// let x = tower_sqrt(&rat(5)) * tower_sqrt(&rat(3));
-/// assert_eq!(x.clone() * x, Tower::from_i64(15));
+/// use casteljau::{QuadraticExt, Scalar, rat, classify::Tower};
+/// let s3 = Tower::from_base(QuadraticExt::sqrt(rat(3))); // √3, in the base field Q(√3)
+/// assert_eq!(s3.clone() * s3, Tower::from_i64(3));
 /// ```
 pub type Tower = QuadraticExt<Sqrt3Field>;
 
@@ -58,11 +51,11 @@ pub type Tower = QuadraticExt<Sqrt3Field>;
 /// # Example
 /// ```
 /// # use casteljau::{BezierCurve, num::parse_points, proof::Reading};
-/// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_equation, canonical_map, Tower};
+/// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_map};
 /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
 /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
 /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
-/// assert_eq!(canonical_equation(map.node), "x^3 - 3*y^2 = 0");
+/// assert_eq!(map.node.canonical_equation(), "x^3 - 3*y^2 = 0");
 /// assert!(map.prove(&c).is_ok());
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -79,22 +72,6 @@ pub struct CanonicalMap {
     pub points: Vec<(&'static str, Point<Tower>)>,
 }
 
-/// The canonical implicit equation of a node type.
-///
-/// # Example
-/// ```
-/// use casteljau::classify::{NodeType, canonical_equation};
-/// assert_eq!(canonical_equation(NodeType::Crunode), "x^3 + x^2 - 3*y^2 = 0");
-/// ```
-pub fn canonical_equation(node: NodeType) -> &'static str {
-    match node {
-        NodeType::Crunode => "x^3 + x^2 - 3*y^2 = 0",
-        NodeType::Cusp => "x^3 - 3*y^2 = 0",
-        NodeType::Acnode => "x^3 - x^2 - 3*y^2 = 0",
-        NodeType::Explicit => "y - x^3 = 0",
-    }
-}
-
 fn lift(r: &BigRational) -> Tower {
     Tower::from_ratio(r)
 }
@@ -108,14 +85,7 @@ fn sqrt3() -> Tower {
 
 /// `√r` for rational `r ≥ 0` in the tower: rational, a rational multiple of `√3`, or a new
 /// generator over `Q(√3)`.
-///
-/// # Example
-/// ```
-/// use casteljau::{Scalar, rat, classify::{Tower, tower_sqrt}};
-/// assert_eq!(tower_sqrt(&rat(4)), Tower::from_i64(2));
-/// assert_eq!(tower_sqrt(&rat(12)) * tower_sqrt(&rat(12)), Tower::from_i64(12));
-/// ```
-pub fn tower_sqrt(r: &BigRational) -> Tower {
+pub(crate) fn tower_sqrt(r: &BigRational) -> Tower {
     // √r = q√m with m an integer (Sqrt3Field::sqrt normalises); √m = √3·√(m/3) when 3 | m.
     let s = Sqrt3Field::sqrt(r.clone());
     if s.to_base().is_some() || *s.radicand() == rat(3) {
@@ -131,16 +101,7 @@ pub fn tower_sqrt(r: &BigRational) -> Tower {
 }
 
 /// The canonical curve `C(s)` of a node type, over the tower.
-///
-/// # Example
-/// ```
-/// use casteljau::{Scalar, classify::{NodeType, Tower, canonical_point}};
-/// // the canonical cusp x³ − 3y² = 0 at s = 1
-/// let p = canonical_point(NodeType::Cusp, &Tower::from_i64(1));
-/// let (x, y) = (p.coords[0].clone(), p.coords[1].clone());
-/// assert!((x.clone() * x.clone() * x - Tower::from_i64(3) * y.clone() * y).is_zero());
-/// ```
-pub fn canonical_point(node: NodeType, s: &Tower) -> Point<Tower> {
+pub(crate) fn canonical_point(node: NodeType, s: &Tower) -> Point<Tower> {
     let s2 = s.clone() * s;
     let s3 = s2.clone() * s;
     let r3 = sqrt3();
@@ -292,7 +253,7 @@ impl CanonicalMap {
     /// # Example
     /// ```
     /// # use casteljau::{BezierCurve, num::parse_points, proof::Reading};
-    /// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_equation, canonical_map, Tower};
+    /// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_map, Tower};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
     /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
@@ -319,7 +280,7 @@ impl CanonicalMap {
     /// # Example
     /// ```
     /// # use casteljau::{BezierCurve, num::parse_points, proof::Reading};
-    /// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_equation, canonical_map, Tower};
+    /// # use casteljau::classify::{classify, CanonicalMap, MovingLines, canonical_map, Tower};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
     /// let (k, ml) = (classify(&c).unwrap(), MovingLines::new(&c).unwrap());
     /// let map = canonical_map(&c, &k, &ml, Reading::Corrected).unwrap();
@@ -334,5 +295,36 @@ impl CanonicalMap {
             let s = (v[0].clone() - &te) / &scale;
             self.apply(&canonical_point(self.node, &s)).sub(&lifted.eval(&v[0])).coords
         })
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    use super::*;
+    #[test]
+    fn sqrt3_field_example() {
+        use crate::{Scalar, rat};
+        let s3 = Sqrt3Field::sqrt(rat(3));
+        assert_eq!(s3.clone() * s3, Sqrt3Field::from_i64(3));
+    }
+
+    #[test]
+    fn tower_sqrt_example() {
+        use crate::{Scalar, classify::Tower, rat};
+        assert_eq!(tower_sqrt(&rat(4)), Tower::from_i64(2));
+        assert_eq!(tower_sqrt(&rat(12)) * tower_sqrt(&rat(12)), Tower::from_i64(12));
+    }
+
+    #[test]
+    fn canonical_point_example() {
+        use crate::{
+            Scalar,
+            classify::{NodeType, Tower},
+        };
+        // the canonical cusp x³ − 3y² = 0 at s = 1
+        let p = canonical_point(NodeType::Cusp, &Tower::from_i64(1));
+        let (x, y) = (p.coords[0].clone(), p.coords[1].clone());
+        assert!((x.clone() * x.clone() * x - Tower::from_i64(3) * y.clone() * y).is_zero());
     }
 }

@@ -3,7 +3,7 @@
 //! Loop–Blinn cross-check — computed from an existing [`Classification`], never classifying
 //! again.
 
-use crate::classify::canonical::{CanonicalMap, canonical_equation, canonical_map};
+use crate::classify::canonical::{CanonicalMap, canonical_map};
 use crate::classify::moving_line::MovingLines;
 use crate::classify::{Classification, NodeType, loop_blinn};
 use crate::curve::bezier::BezierCurve;
@@ -97,7 +97,7 @@ impl CanonicalEvidence {
     pub fn new(map: &CanonicalMap, curve: &BezierCurve<BigRational>) -> Self {
         let proved = map.prove(curve);
         CanonicalEvidence {
-            equation: canonical_equation(map.node),
+            equation: map.node.canonical_equation(),
             matrix: map.matrix.iter().map(|r| r.iter().map(|x| x.to_string()).collect()).collect(),
             t_E: map.t_e.clone(),
             t_F: map.t_f.clone(),
@@ -116,18 +116,7 @@ impl CanonicalEvidence {
 ///
 /// # Errors
 /// Those of [`MovingLines::new`] (a curve that is not a planar cubic).
-///
-/// # Example
-/// ```
-/// use casteljau::{BezierCurve, num::parse_points};
-/// use casteljau::classify::{classify, cubic_evidence};
-/// let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
-/// let k = classify(&c).unwrap();
-/// let e = cubic_evidence(&c, &k).unwrap().unwrap();
-/// assert!(e.moving_lines.verified);
-/// assert!(e.canonical.unwrap().proved);
-/// ```
-pub fn cubic_evidence(curve: &BezierCurve<BigRational>, k: &Classification) -> Result<Option<CubicEvidence>> {
+pub(crate) fn cubic_evidence(curve: &BezierCurve<BigRational>, k: &Classification) -> Result<Option<CubicEvidence>> {
     if curve.degree() != 3 {
         return Ok(None);
     }
@@ -150,4 +139,20 @@ pub fn cubic_evidence(curve: &BezierCurve<BigRational>, k: &Classification) -> R
     let (lb, node_type) = loop_blinn(curve);
     let [d1, d2, d3] = lb;
     Ok(Some(CubicEvidence { moving_lines, canonical, loop_blinn: LoopBlinnEvidence { d1, d2, d3, node_type } }))
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    use super::*;
+    #[test]
+    fn cubic_evidence_example() {
+        use crate::classify::classify;
+        use crate::{BezierCurve, num::parse_points};
+        let c = BezierCurve::new(parse_points("0 0, 1 1, 0 1, 1 0", 2, None).unwrap()).unwrap();
+        let k = classify(&c).unwrap();
+        let e = cubic_evidence(&c, &k).unwrap().unwrap();
+        assert!(e.moving_lines.verified);
+        assert!(e.canonical.unwrap().proved);
+    }
 }

@@ -26,11 +26,11 @@ pub(crate) mod moving_line;
 pub(crate) mod rational_cubic;
 pub(crate) mod report;
 
-pub use canonical::{CanonicalMap, Sqrt3Field, Tower, canonical_equation, canonical_map, canonical_point, tower_sqrt};
-pub use evidence::{CanonicalEvidence, CubicEvidence, LoopBlinnEvidence, MovingLinesEvidence, cubic_evidence};
+pub use canonical::{CanonicalMap, Tower, canonical_map};
+pub use evidence::{CanonicalEvidence, CubicEvidence, LoopBlinnEvidence, MovingLinesEvidence};
 pub use moving_line::MovingLines;
 pub use rational_cubic::{RationalClassification, classify_rational};
-pub use report::{Classified, ClassifyOptions, ClassifyReport, FloatApproximations, classify_rational_curve};
+pub use report::{Classified, ClassifyOptions, ClassifyReport, FloatApproximations};
 
 use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
@@ -70,6 +70,24 @@ macro_rules! serialize_as_str {
     )*};
 }
 serialize_as_str!(NodeType, CurveClass, SegmentCategory);
+
+impl NodeType {
+    /// The canonical implicit equation of the node type: the curve every genuine cubic of this
+    /// type is an affine image of (seed 004, §3.3).
+    ///
+    /// ```
+    /// use casteljau::classify::NodeType;
+    /// assert_eq!(NodeType::Crunode.canonical_equation(), "x^3 + x^2 - 3*y^2 = 0");
+    /// ```
+    pub fn canonical_equation(self) -> &'static str {
+        match self {
+            NodeType::Crunode => "x^3 + x^2 - 3*y^2 = 0",
+            NodeType::Cusp => "x^3 - 3*y^2 = 0",
+            NodeType::Acnode => "x^3 - x^2 - 3*y^2 = 0",
+            NodeType::Explicit => "y - x^3 = 0",
+        }
+    }
+}
 
 impl NodeType {
     /// `crunode`, `cusp`, `acnode` or `explicit`.
@@ -379,14 +397,14 @@ pub fn classify(curve: &BezierCurve<BigRational>) -> Result<Classification> {
 ///
 /// # Example
 /// ```
-/// use casteljau::classify::classify_in;
-/// use casteljau::num::{SmallRational, checked};
+/// use casteljau::internal::{SmallRational, checked, classify_in};
 /// use casteljau::{BezierCurve, Point, Scalar};
 /// let p = |x: i64, y: i64| Point::new(vec![SmallRational::from_i64(x), SmallRational::from_i64(y)]);
 /// let c = BezierCurve::new(vec![p(0, 0), p(30, 40), p(-20, 40), p(10, 0)]).unwrap();
 /// let k = checked(|| classify_in(&c)).expect("fits 128 bits").unwrap();
 /// assert_eq!(k.double_point_parameters[0].to_string(), "1/2 - 1/4*sqrt(3)");
 /// ```
+#[doc(hidden)]
 pub fn classify_in<K: Radical>(curve: &BezierCurve<K>) -> Result<Classification<K>> {
     if curve.dim() != 2 {
         return Err(Error::DimensionMismatch { expected: 2, found: curve.dim() });

@@ -22,6 +22,7 @@ use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar, rat};
 use crate::poly::bernstein::to_power;
+use crate::rational::RationalBezier;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
@@ -103,16 +104,24 @@ impl serde::Serialize for RationalClassification {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, classify::classify_rational, classify::NodeType};
+/// use casteljau::{Point, RationalBezier, rat, classify::classify_rational, classify::NodeType};
 /// // seed 000 example 2 (the folium): b = (0,0) (1,0) (2,1) (3/2,3/2), w = 1 1 1 2
 /// let h: Vec<Point<_>> = [(0, 0, 1), (1, 0, 1), (2, 1, 1), (3, 3, 2)]
 ///     .iter().map(|&(x, y, w)| Point::new(vec![rat(x), rat(y), rat(w)])).collect();
-/// let k = classify_rational(&h).unwrap();
+/// let k = classify_rational(&RationalBezier::from_homogeneous(h).unwrap()).unwrap();
 /// assert_eq!(k.node_type, Some(NodeType::Crunode));
 /// assert_eq!(k.double_point.unwrap().to_string(), "(0, 0)");
 /// assert!(k.parameter_at_infinity); // the folium passes its node at t = 0 and t = ∞
 /// ```
-pub fn classify_rational(h: &[Point<BigRational>]) -> Result<RationalClassification> {
+pub fn classify_rational(c: &RationalBezier<BigRational>) -> Result<RationalClassification> {
+    if c.degree() != 3 || c.dim() != 2 {
+        return Err(Error::InvalidArgument { message: "rational classification takes planar cubics".into() });
+    }
+    classify_homogeneous(c.homogeneous().points())
+}
+
+/// [`classify_rational`] of four homogeneous control points `(X, Y, W)`.
+pub(crate) fn classify_homogeneous(h: &[Point<BigRational>]) -> Result<RationalClassification> {
     if h.len() != 4 || h.iter().any(|p| p.dim() != 3) {
         return Err(Error::InvalidArgument {
             message: "a rational cubic needs four homogeneous points (X Y W)".into(),

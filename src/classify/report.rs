@@ -17,15 +17,13 @@
 //! ```
 
 use crate::classify::evidence::{CubicEvidence, cubic_evidence};
-use crate::classify::rational_cubic::{RationalClassification, classify_rational};
 use crate::classify::{Classification, Parameter, classify_in};
 use crate::curve::bezier::BezierCurve;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::num::parse::{NumberMode, integer_cubic, parse_points_in, parse_points_small_in, small_cubic};
 use crate::num::quadratic_field::Radical;
 use crate::num::scalar::Scalar;
 use crate::num::small::{SmallRational, checked};
-use crate::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
 use serde::Serialize;
 
@@ -142,23 +140,4 @@ impl ClassifyOptions {
         let float = self.float.then(|| FloatApproximations::of(&k));
         Ok(Classified::Exact(ClassifyReport { classification: k, evidence, float }))
     }
-}
-
-/// The projective classification of a planar rational cubic ([`classify_rational`] of its
-/// homogeneous points).
-///
-/// # Errors
-/// [`Error::InvalidArgument`] unless the curve is a planar cubic; as [`classify_rational`].
-///
-/// ```
-/// use casteljau::{RationalBezier, num::parse_points, rat, classify::classify_rational_curve};
-/// let folium = RationalBezier::new(parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(),
-///     vec![rat(1), rat(1), rat(1), rat(2)]).unwrap();
-/// assert_eq!(classify_rational_curve(&folium).unwrap().double_point.unwrap().to_string(), "(0, 0)");
-/// ```
-pub fn classify_rational_curve(c: &RationalBezier<BigRational>) -> Result<RationalClassification> {
-    if c.degree() != 3 || c.dim() != 2 {
-        return Err(Error::InvalidArgument { message: "rational classification takes planar cubics".into() });
-    }
-    classify_rational(c.homogeneous().points())
 }

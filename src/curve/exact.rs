@@ -6,12 +6,12 @@
 //! The kernels are the fraction-free ones of [`crate::curve::fraction_free`].
 //!
 //! ```
-//! use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
+//! use casteljau::{BezierCurve, curve::Evaluation, num::parse_points, ratio, work::Budget};
 //! let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-//! let e = c.eval_within(&[ratio(1, 2)], &Budget::unlimited()).unwrap();
+//! let e = Evaluation::new(&c, &[ratio(1, 2)], &Budget::unlimited()).unwrap();
 //! assert_eq!(e.values[0].point.to_string(), "(1, 1)");
 //! let tight = Budget::new(1.0, "--max-work");
-//! assert!(c.eval_within(&[ratio(1, 2)], &tight).is_err()); // refused before any work
+//! assert!(Evaluation::new(&c, &[ratio(1, 2)], &tight).is_err()); // refused before any work
 //! ```
 
 use crate::curve::bezier::BezierCurve;
@@ -28,12 +28,12 @@ use num_rational::BigRational;
 use serde::Serialize;
 use serde::ser::{SerializeStruct, Serializer};
 
-/// Largest degree whose Bernstein-to-power matrix [`BezierCurve::power_form_within`] includes.
+/// Largest degree whose Bernstein-to-power matrix [`PowerForm::new`] includes.
 pub const MAX_MATRIX_DEGREE: usize = 30;
-/// Largest degree whose whole de Casteljau scheme [`BezierCurve::triangle_within`] computes (its
+/// Largest degree whose whole de Casteljau scheme [`Scheme::new`] computes (its
 /// output has `(n+1)(n+2)/2` points).
 pub const MAX_TRIANGLE_DEGREE: usize = 500;
-/// Largest number of control points [`BezierCurve::subdivide_repeatedly_within`] returns.
+/// Largest number of control points [`RepeatedSubdivision::new`] returns.
 pub const MAX_SUBDIVISION_POINTS: usize = 1 << 20;
 
 impl<S: Scalar> Serialize for BezierCurve<S> {
@@ -56,7 +56,7 @@ pub struct PointAt {
     pub point: Point<BigRational>,
 }
 
-/// The points of a curve at given parameters ([`BezierCurve::eval_within`]).
+/// The points of a curve at given parameters ([`Evaluation::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Evaluation {
     /// The curve's degree.
@@ -65,7 +65,7 @@ pub struct Evaluation {
     pub values: Vec<PointAt>,
 }
 
-/// The two halves of a curve split at `t` ([`BezierCurve::subdivide_within`]).
+/// The two halves of a curve split at `t` ([`Subdivision::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Subdivision {
     /// Where the curve was split.
@@ -90,7 +90,7 @@ pub struct Piece {
     pub points: BezierCurve<BigRational>,
 }
 
-/// `2^depth` pieces, each interval split at its own local `t` ([`BezierCurve::subdivide_repeatedly_within`]).
+/// `2^depth` pieces, each interval split at its own local `t` ([`RepeatedSubdivision::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct RepeatedSubdivision {
     /// The local split parameter.
@@ -102,7 +102,7 @@ pub struct RepeatedSubdivision {
     pub pieces: Vec<Piece>,
 }
 
-/// The whole de Casteljau scheme at `t` ([`BezierCurve::triangle_within`]); serializes as
+/// The whole de Casteljau scheme at `t` ([`Scheme::new`]); serializes as
 /// `{"t", "rows", "point"}`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Scheme {
@@ -122,7 +122,7 @@ impl Serialize for Scheme {
     }
 }
 
-/// The power form `Σ a_k t^k` of a curve ([`BezierCurve::power_form_within`]).
+/// The power form `Σ a_k t^k` of a curve ([`PowerForm::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct PowerForm {
     /// The curve's degree.
@@ -139,9 +139,9 @@ impl PowerForm {
     /// Coordinate `k` as a polynomial in `var` (ascending powers, [`Poly::text`]).
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
+    /// use casteljau::{BezierCurve, curve::PowerForm, num::parse_points, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-    /// let p = c.power_form_within(&Budget::unlimited()).unwrap();
+    /// let p = PowerForm::new(&c, &Budget::unlimited()).unwrap();
     /// assert_eq!(p.coordinate_text(1, "t"), "4t - 4t^2");
     /// ```
     pub fn coordinate_text(&self, k: usize, var: &str) -> String {
@@ -149,7 +149,7 @@ impl PowerForm {
     }
 }
 
-/// The derivative curve of some order ([`BezierCurve::derivative_within`]); serializes as
+/// The derivative curve of some order ([`Derivative::new`]); serializes as
 /// `{"order", "degree", "points"}`.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Derivative {
@@ -160,7 +160,7 @@ pub struct Derivative {
     pub curve: BezierCurve<BigRational>,
 }
 
-/// A curve written with its real degree ([`BezierCurve::reduce_degree_within`]).
+/// A curve written with its real degree ([`DegreeReduction::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct DegreeReduction {
     /// The degree the curve was written with.
@@ -192,49 +192,135 @@ fn output_limit(what: &'static str, value: usize, limit: usize) -> Result<()> {
     if value > limit { Err(Error::TooLarge { what, value, limit }) } else { Ok(()) }
 }
 
-impl BezierCurve<BigRational> {
-    /// The points at each of `ts` (fraction-free Horner), within `budget`
-    /// ([`work::evaluation`] summed over the parameters).
+impl DegreeReduction {
+    /// The curve written with its real degree, within `budget` (its estimate).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
-    /// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
-    /// let e = c.eval_within(&[ratio(1, 3)], &Budget::unlimited()).unwrap();
-    /// assert_eq!((e.degree, e.values[0].point.to_string()), (3, "(28/27, 70/27)".to_string()));
+    /// use casteljau::{BezierCurve, curve::DegreeReduction, num::parse_points, work::Budget};
+    /// let c = BezierCurve::new(parse_points("0 0, 2/3 2/3, 4/3 2/3, 2 0", 2, None).unwrap()).unwrap();
+    /// let r = DegreeReduction::new(&c, &Budget::unlimited()).unwrap();
+    /// assert_eq!((r.written_degree, r.real_degree), (3, 2));
+    /// assert_eq!(r.curve.to_string(), "0 0, 1 1, 2 0");
     /// ```
-    pub fn eval_within(&self, ts: &[BigRational], budget: &Budget) -> Result<Evaluation> {
-        let (n, beta) = (self.degree(), work::max_bits(self.points()));
-        let estimate: f64 = ts.iter().map(|t| work::evaluation(n, self.dim(), beta, work::bits(t))).sum();
-        budget.check(format!("evaluating degree {n} at {} parameters", ts.len()), estimate)?;
-        let ic = fraction_free::IntegerCurve::new(self);
-        let values = ts.iter().map(|t| PointAt { t: t.clone(), point: fraction_free::eval_integer(&ic, t) }).collect();
-        Ok(Evaluation { degree: n, values })
+    pub fn new(curve: &BezierCurve<BigRational>, budget: &Budget) -> Result<Self> {
+        let n = curve.degree();
+        budget
+            .check(format!("reducing degree {n}"), work::power_form(n, curve.dim(), work::max_bits(curve.points())))?;
+        let curve = fraction_free::reduce_degree(curve);
+        Ok(DegreeReduction { written_degree: n, real_degree: curve.degree(), curve })
     }
+}
 
-    /// The two halves at `t` (Lemma 2, fraction-free), within `budget` ([`work::subdivision`]).
+impl Derivative {
+    /// The derivative of order `order` as a curve, within `budget` (its estimate).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
-    /// let c = BezierCurve::new(parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap()).unwrap();
-    /// let s = c.subdivide_within(&ratio(1, 3), &Budget::unlimited()).unwrap();
-    /// assert_eq!(s.left.to_string(), "-1 -1, -7/9 -1/3, -5/9 -1/9, -1/3 -1/27");
-    /// assert_eq!(s.right.to_string(), "-1/3 -1/27, 1/9 1/9, 5/9 -1/3, 1 1");
+    /// use casteljau::{BezierCurve, curve::Derivative, num::parse_points, work::Budget};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
+    /// let d = Derivative::new(&c, 1, &Budget::unlimited()).unwrap();
+    /// assert_eq!((d.order, d.curve.to_string()), (1, "2 4, 2 -4".to_string()));
     /// ```
-    pub fn subdivide_within(&self, t: &BigRational, budget: &Budget) -> Result<Subdivision> {
-        let (n, beta) = (self.degree(), work::max_bits(self.points()));
-        budget.check(format!("subdividing degree {n}"), work::subdivision(n, self.dim(), beta, work::bits(t)))?;
-        let (left, right) = fraction_free::subdivide(self, t);
-        Ok(Subdivision { t: t.clone(), left, right })
+    pub fn new(curve: &BezierCurve<BigRational>, order: usize, budget: &Budget) -> Result<Self> {
+        let n = curve.degree();
+        budget.check(
+            format!("the derivative of order {order} of degree {n}"),
+            work::derivative(n, order.min(n), curve.dim(), work::max_bits(curve.points())),
+        )?;
+        Ok(Derivative { order, curve: curve.derivative(order) })
     }
+}
 
+impl Scheme {
+    /// The whole de Casteljau scheme at `t`, within `budget` (its estimate).
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above degree [`MAX_TRIANGLE_DEGREE`]; [`Error::WorkLimit`] when the
+    /// estimate exceeds `budget`.
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, curve::Scheme, num::parse_points, ratio, work::Budget};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
+    /// let s = Scheme::new(&c, &ratio(1, 2), &Budget::unlimited()).unwrap();
+    /// assert_eq!(s.triangle.rows[1][0].to_string(), "(1/2, 1)");
+    /// assert_eq!(s.triangle.point().to_string(), "(1, 1)");
+    /// ```
+    pub fn new(curve: &BezierCurve<BigRational>, t: &BigRational, budget: &Budget) -> Result<Self> {
+        let n = curve.degree();
+        output_limit("triangle of degree", n, MAX_TRIANGLE_DEGREE)?;
+        budget.check(
+            format!("the de Casteljau scheme of degree {n} at a {}-bit t", work::bits(t)),
+            work::de_casteljau_scheme(n, curve.dim(), work::max_bits(curve.points()), work::bits(t)),
+        )?;
+        Ok(Scheme { t: t.clone(), triangle: fraction_free::triangle(curve, t) })
+    }
+}
+
+impl PowerForm {
+    /// The power form, with the conversion matrix up to degree [`MAX_MATRIX_DEGREE`], within
+    /// `budget` (its estimate).
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, curve::PowerForm, num::parse_points, work::Budget};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
+    /// let p = PowerForm::new(&c, &Budget::unlimited()).unwrap();
+    /// assert_eq!(p.coefficients[1].to_string(), "(2, 4)");
+    /// assert_eq!(p.matrix.unwrap()[1], vec![(-2).into(), 2.into(), 0.into()]);
+    /// ```
+    pub fn new(curve: &BezierCurve<BigRational>, budget: &Budget) -> Result<Self> {
+        let n = curve.degree();
+        budget.check(
+            format!("the power form of degree {n}"),
+            work::power_form(n, curve.dim(), work::max_bits(curve.points())),
+        )?;
+        let matrix = (n <= MAX_MATRIX_DEGREE).then(|| crate::poly::bernstein::bernstein_to_power_matrix(n));
+        Ok(PowerForm { degree: n, coefficients: fraction_free::power_coefficients(curve), matrix })
+    }
+}
+
+/// A curve written with a higher degree, the same curve ([`Elevation::new`]); serializes as
+/// the curve does (`{"degree", "points"}`).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(transparent)]
+pub struct Elevation {
+    /// The elevated curve.
+    pub curve: BezierCurve<BigRational>,
+}
+
+impl Elevation {
+    /// The same curve written with degree `n + by`, within `budget` (its estimate).
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as
+    /// [`BezierCurve::elevate`] (fraction-free).
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, curve::Elevation, num::parse_points, work::Budget};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
+    /// let e = Elevation::new(&c, 1, &Budget::unlimited()).unwrap();
+    /// assert_eq!(e.curve.to_string(), "0 0, 2/3 2/3, 4/3 2/3, 2 0");
+    /// ```
+    pub fn new(curve: &BezierCurve<BigRational>, by: usize, budget: &Budget) -> Result<Self> {
+        let n = curve.degree();
+        budget.check(
+            format!("elevating degree {n} by {by}"),
+            work::elevation(n, by, curve.dim(), work::max_bits(curve.points())),
+        )?;
+        Ok(Elevation { curve: fraction_free::elevate(curve, by)? })
+    }
+}
+
+impl RepeatedSubdivision {
     /// `depth` rounds of subdivision, each piece split at its own local `t`, within `budget`
-    /// ([`work::repeated_subdivision`]).
+    /// (its estimate).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`; [`Error::TooLarge`] when the
@@ -242,26 +328,21 @@ impl BezierCurve<BigRational> {
     /// [`MAX_SUBDIVISION_DEPTH`](crate::curve::casteljau::MAX_SUBDIVISION_DEPTH).
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
+    /// use casteljau::{BezierCurve, curve::RepeatedSubdivision, num::parse_points, ratio, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 1", 2, None).unwrap()).unwrap();
-    /// let s = c.subdivide_repeatedly_within(&ratio(1, 2), 2, &Budget::unlimited()).unwrap();
+    /// let s = RepeatedSubdivision::new(&c, &ratio(1, 2), 2, &Budget::unlimited()).unwrap();
     /// assert_eq!(s.pieces.len(), 4);
     /// assert_eq!(s.pieces[1].interval, (ratio(1, 4), ratio(1, 2)));
     /// assert_eq!(s.pieces[1].points.to_string(), "1/4 1/4, 1/2 1/2");
     /// ```
-    pub fn subdivide_repeatedly_within(
-        &self,
-        t: &BigRational,
-        depth: u32,
-        budget: &Budget,
-    ) -> Result<RepeatedSubdivision> {
-        let (n, beta) = (self.degree(), work::max_bits(self.points()));
+    pub fn new(curve: &BezierCurve<BigRational>, t: &BigRational, depth: u32, budget: &Budget) -> Result<Self> {
+        let (n, beta) = (curve.degree(), work::max_bits(curve.points()));
         budget.check(
             format!("subdividing degree {n}"),
-            work::repeated_subdivision(n, self.dim(), beta, work::bits(t), depth),
+            work::repeated_subdivision(n, curve.dim(), beta, work::bits(t), depth),
         )?;
         output_limit("subdivision output (pieces × points)", (n + 1) << depth.min(40), MAX_SUBDIVISION_POINTS)?;
-        let pieces = fraction_free::subdivide_repeatedly(self, t, depth)?;
+        let pieces = fraction_free::subdivide_repeatedly(curve, t, depth)?;
         let pieces = pieces
             .into_iter()
             .zip(subdivision_intervals(t, depth))
@@ -269,110 +350,48 @@ impl BezierCurve<BigRational> {
             .collect();
         Ok(RepeatedSubdivision { t: t.clone(), depth, pieces })
     }
+}
 
-    /// The same curve written with degree `n + by`, within `budget` ([`work::elevation`]).
-    ///
-    /// # Errors
-    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as
-    /// [`BezierCurve::elevate`] (fraction-free).
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
-    /// let c = BezierCurve::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
-    /// let e = c.elevate_within(1, &Budget::unlimited()).unwrap();
-    /// assert_eq!(e.to_string(), "0 0, 2/3 2/3, 4/3 2/3, 2 0");
-    /// ```
-    pub fn elevate_within(&self, by: usize, budget: &Budget) -> Result<BezierCurve<BigRational>> {
-        let n = self.degree();
-        budget.check(
-            format!("elevating degree {n} by {by}"),
-            work::elevation(n, by, self.dim(), work::max_bits(self.points())),
-        )?;
-        fraction_free::elevate(self, by)
-    }
-
-    /// The power form, with the conversion matrix up to degree [`MAX_MATRIX_DEGREE`], within
-    /// `budget` ([`work::power_form`]).
+impl Subdivision {
+    /// The two halves at `t` (Lemma 2, fraction-free), within `budget` (its estimate).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
-    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-    /// let p = c.power_form_within(&Budget::unlimited()).unwrap();
-    /// assert_eq!(p.coefficients[1].to_string(), "(2, 4)");
-    /// assert_eq!(p.matrix.unwrap()[1], vec![(-2).into(), 2.into(), 0.into()]);
+    /// use casteljau::{BezierCurve, curve::Subdivision, num::parse_points, ratio, work::Budget};
+    /// let c = BezierCurve::new(parse_points("-1 -1, -1/3 1, 1/3 -1, 1 1", 2, None).unwrap()).unwrap();
+    /// let s = Subdivision::new(&c, &ratio(1, 3), &Budget::unlimited()).unwrap();
+    /// assert_eq!(s.left.to_string(), "-1 -1, -7/9 -1/3, -5/9 -1/9, -1/3 -1/27");
+    /// assert_eq!(s.right.to_string(), "-1/3 -1/27, 1/9 1/9, 5/9 -1/3, 1 1");
     /// ```
-    pub fn power_form_within(&self, budget: &Budget) -> Result<PowerForm> {
-        let n = self.degree();
-        budget.check(
-            format!("the power form of degree {n}"),
-            work::power_form(n, self.dim(), work::max_bits(self.points())),
-        )?;
-        let matrix = (n <= MAX_MATRIX_DEGREE).then(|| crate::poly::bernstein::bernstein_to_power_matrix(n));
-        Ok(PowerForm { degree: n, coefficients: fraction_free::power_coefficients(self), matrix })
+    pub fn new(curve: &BezierCurve<BigRational>, t: &BigRational, budget: &Budget) -> Result<Self> {
+        let (n, beta) = (curve.degree(), work::max_bits(curve.points()));
+        budget.check(format!("subdividing degree {n}"), work::subdivision(n, curve.dim(), beta, work::bits(t)))?;
+        let (left, right) = fraction_free::subdivide(curve, t);
+        Ok(Subdivision { t: t.clone(), left, right })
     }
+}
 
-    /// The whole de Casteljau scheme at `t`, within `budget` ([`work::de_casteljau_scheme`]).
-    ///
-    /// # Errors
-    /// [`Error::TooLarge`] above degree [`MAX_TRIANGLE_DEGREE`]; [`Error::WorkLimit`] when the
-    /// estimate exceeds `budget`.
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, ratio, work::Budget};
-    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-    /// let s = c.triangle_within(&ratio(1, 2), &Budget::unlimited()).unwrap();
-    /// assert_eq!(s.triangle.rows[1][0].to_string(), "(1/2, 1)");
-    /// assert_eq!(s.triangle.point().to_string(), "(1, 1)");
-    /// ```
-    pub fn triangle_within(&self, t: &BigRational, budget: &Budget) -> Result<Scheme> {
-        let n = self.degree();
-        output_limit("triangle of degree", n, MAX_TRIANGLE_DEGREE)?;
-        budget.check(
-            format!("the de Casteljau scheme of degree {n} at a {}-bit t", work::bits(t)),
-            work::de_casteljau_scheme(n, self.dim(), work::max_bits(self.points()), work::bits(t)),
-        )?;
-        Ok(Scheme { t: t.clone(), triangle: fraction_free::triangle(self, t) })
-    }
-
-    /// The derivative of order `order` as a curve, within `budget` ([`work::derivative`]).
+impl Evaluation {
+    /// The points at each of `ts` (fraction-free Horner), within `budget`
+    /// (the `evaluation` estimate summed over the parameters).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
     ///
     /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
-    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-    /// let d = c.derivative_within(1, &Budget::unlimited()).unwrap();
-    /// assert_eq!((d.order, d.curve.to_string()), (1, "2 4, 2 -4".to_string()));
+    /// use casteljau::{BezierCurve, curve::Evaluation, num::parse_points, ratio, work::Budget};
+    /// let c = BezierCurve::new(parse_points("0 1, 1 3, 2 4, 4 2", 2, None).unwrap()).unwrap();
+    /// let e = Evaluation::new(&c, &[ratio(1, 3)], &Budget::unlimited()).unwrap();
+    /// assert_eq!((e.degree, e.values[0].point.to_string()), (3, "(28/27, 70/27)".to_string()));
     /// ```
-    pub fn derivative_within(&self, order: usize, budget: &Budget) -> Result<Derivative> {
-        let n = self.degree();
-        budget.check(
-            format!("the derivative of order {order} of degree {n}"),
-            work::derivative(n, order.min(n), self.dim(), work::max_bits(self.points())),
-        )?;
-        Ok(Derivative { order, curve: self.derivative(order) })
-    }
-
-    /// The curve written with its real degree, within `budget` ([`work::power_form`]).
-    ///
-    /// # Errors
-    /// [`Error::WorkLimit`] when the estimate exceeds `budget`.
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, num::parse_points, work::Budget};
-    /// let c = BezierCurve::new(parse_points("0 0, 2/3 2/3, 4/3 2/3, 2 0", 2, None).unwrap()).unwrap();
-    /// let r = c.reduce_degree_within(&Budget::unlimited()).unwrap();
-    /// assert_eq!((r.written_degree, r.real_degree), (3, 2));
-    /// assert_eq!(r.curve.to_string(), "0 0, 1 1, 2 0");
-    /// ```
-    pub fn reduce_degree_within(&self, budget: &Budget) -> Result<DegreeReduction> {
-        let n = self.degree();
-        budget.check(format!("reducing degree {n}"), work::power_form(n, self.dim(), work::max_bits(self.points())))?;
-        let curve = fraction_free::reduce_degree(self);
-        Ok(DegreeReduction { written_degree: n, real_degree: curve.degree(), curve })
+    pub fn new(curve: &BezierCurve<BigRational>, ts: &[BigRational], budget: &Budget) -> Result<Self> {
+        let (n, beta) = (curve.degree(), work::max_bits(curve.points()));
+        let estimate: f64 = ts.iter().map(|t| work::evaluation(n, curve.dim(), beta, work::bits(t))).sum();
+        budget.check(format!("evaluating degree {n} at {} parameters", ts.len()), estimate)?;
+        let ic = fraction_free::IntegerCurve::new(curve);
+        let values = ts.iter().map(|t| PointAt { t: t.clone(), point: fraction_free::eval_integer(&ic, t) }).collect();
+        Ok(Evaluation { degree: n, values })
     }
 }

@@ -13,7 +13,7 @@ pub(crate) mod parametric;
 pub use bezier::{BezierCurve, MAX_DEGREE, check_polygon_text, parse_curve_in};
 pub use casteljau::{DeCasteljauTriangle, MAX_SUBDIVISION_DEPTH, subdivision_intervals};
 pub use exact::{
-    DegreeReduction, Derivative, Evaluation, MAX_MATRIX_DEGREE, MAX_SUBDIVISION_POINTS, MAX_TRIANGLE_DEGREE, Piece,
-    PointAt, PowerForm, RepeatedSubdivision, Scheme, Subdivision,
+    DegreeReduction, Derivative, Elevation, Evaluation, MAX_MATRIX_DEGREE, MAX_SUBDIVISION_POINTS, MAX_TRIANGLE_DEGREE,
+    Piece, PointAt, PowerForm, RepeatedSubdivision, Scheme, Subdivision,
 };
 pub use parametric::Parametric;

@@ -288,7 +288,7 @@ impl<'a> Font<'a> {
     /// assert_eq!(shape.path().contours().len(), 2); // the outer contour and the counter
     /// // the glyph simplified in the font's own direction is its outline unchanged
     /// let options = BooleanOptions { orientation: font.outer_orientation(), ..BooleanOptions::default() };
-    /// let r = boolean(BooleanOp::Simplify, std::slice::from_ref(&shape), options).unwrap();
+    /// let r = boolean(BooleanOp::Simplify, std::slice::from_ref(&shape), options, &casteljau::work::Budget::unlimited()).unwrap();
     /// assert!(!r.changes(&shape));
     /// // a glyph without contours is the empty shape
     /// let space = font.glyphs_named(&["space"]).unwrap()[0];

@@ -18,10 +18,10 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::{BezierCurve, num::parse_points, intersect::{intersect_polynomial, Domain}};
-//! let c = |s: &str| BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap();
+//! use casteljau::{BezierCurve, RationalBezier, num::parse_points, intersect::{intersect, Domain}, work::Budget};
+//! let c = |s: &str| RationalBezier::from(BezierCurve::new(parse_points(s, 2, None).unwrap()).unwrap());
 //! // the parabola y = 4t(1 − t)·… touches the line y = 1 at its apex: one tangency of order 2
-//! let r = intersect_polynomial(&c("0 0, 1 2, 2 0"), &c("0 1, 2 1"), Domain::Unit).unwrap();
+//! let r = intersect(&c("0 0, 1 2, 2 0"), &c("0 1, 2 1"), Domain::Unit, &Budget::unlimited()).unwrap();
 //! assert_eq!(r.intersections.len(), 1);
 //! let i = &r.intersections[0];
 //! assert_eq!((i.s.to_string(), i.t.to_string(), i.contact_order), ("1/2".into(), "1/2".into(), 2));
@@ -38,7 +38,6 @@ mod pairing;
 mod roots;
 mod self_intersect;
 
-use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::point::Point;
 use crate::num::scalar::rat;
@@ -132,30 +131,6 @@ pub struct Intersections {
     pub overlaps: Vec<Overlap>,
 }
 
-/// [`intersect`] of two polynomial curves.
-///
-/// # Errors
-/// As [`intersect`].
-pub fn intersect_polynomial(
-    a: &BezierCurve<BigRational>,
-    b: &BezierCurve<BigRational>,
-    domain: Domain,
-) -> Result<Intersections> {
-    for c in [a, b] {
-        check_shape(c.dim(), c.degree())?;
-    }
-    // integer control points below 2^53 (font outlines, say): regions and forms from words
-    if let (Some(pa), Some(pb)) = (integer_points(a.points(), false), integer_points(b.points(), false))
-        && let Some(found) = pairing::intersect_integer_points(&pa, &pb, domain)
-    {
-        return found;
-    }
-    let rows = |c: &BezierCurve<BigRational>| -> Vec<[BigRational; 3]> {
-        c.points().iter().map(|p| [p.coords[0].clone(), p.coords[1].clone(), rat(1)]).collect()
-    };
-    pairing::intersect_rows(&rows(a), &rows(b), domain)
-}
-
 /// The control points `(x, y)` as words when every coordinate is an integer below `2^53` in
 /// magnitude (exact in `f64`), from planar points, or from homogeneous ones `(x, y, 1)`
 /// (`weighted`: every weight exactly 1, a polynomial curve).
@@ -209,26 +184,10 @@ fn check(c: &RationalBezier<BigRational>, domain: Domain) -> Result<()> {
 /// [`Error::WeightsVanish`] when a weight polynomial vanishes on `[0, 1]` (unit domain);
 /// [`Error::InvalidArgument`] for a shared component that one curve traces more than once off a
 /// line (an improper parametrization, such as `(s², s⁴)` on `y = x²`), or, with
-/// [`Domain::All`], when a weight vanishes on `[0, 1]` where the arcs are sought.
+/// [`Domain::All`], when a weight vanishes on `[0, 1]` where the arcs are sought;
+/// [`Error::WorkLimit`] when the estimated work exceeds `budget` (checked before any work
+/// starts; [`Budget::unlimited`](crate::work::Budget::unlimited) for no limit).
 pub fn intersect(
-    a: &RationalBezier<BigRational>,
-    b: &RationalBezier<BigRational>,
-    domain: Domain,
-) -> Result<Intersections> {
-    intersect_within(a, b, domain, &crate::work::Budget::unlimited())
-}
-
-/// The estimated work of intersecting `a` with `b` ([`crate::work::intersection`]).
-fn estimate(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>) -> f64 {
-    let beta = |c: &RationalBezier<BigRational>| crate::work::max_bits(c.homogeneous().points());
-    crate::work::intersection(a.degree(), b.degree(), beta(a).max(beta(b)))
-}
-
-/// [`intersect`] within a work budget, checked before any work starts.
-///
-/// # Errors
-/// As [`intersect`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
-pub fn intersect_within(
     a: &RationalBezier<BigRational>,
     b: &RationalBezier<BigRational>,
     domain: Domain,
@@ -246,6 +205,12 @@ pub fn intersect_within(
     pairing::intersect_rows(&forms::homogeneous_rows(a), &forms::homogeneous_rows(b), domain)
 }
 
+/// The estimated work of intersecting `a` with `b` ([`crate::work::intersection`]).
+fn estimate(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>) -> f64 {
+    let beta = |c: &RationalBezier<BigRational>| crate::work::max_bits(c.homogeneous().points());
+    crate::work::intersection(a.degree(), b.degree(), beta(a).max(beta(b)))
+}
+
 /// Every self-intersection `A(s) = A(t)`, `s < t`, with both parameters in the domain (a
 /// cubic's double point is the special case: it agrees with [`crate::classify::classify`]).
 /// A curve on a line that turns back overlaps itself: its `overlaps` pair different monotone
@@ -254,15 +219,7 @@ pub fn intersect_within(
 /// # Errors
 /// As [`intersect`]; [`Error::InvalidArgument`] when the curve traces a curve more than once
 /// off a line (every point of an arc would be a self-intersection), or is a single point.
-pub fn self_intersect(a: &RationalBezier<BigRational>, domain: Domain) -> Result<Intersections> {
-    self_intersect_within(a, domain, &crate::work::Budget::unlimited())
-}
-
-/// [`self_intersect()`] within a work budget, checked before any work starts.
-///
-/// # Errors
-/// As [`self_intersect()`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
-pub fn self_intersect_within(
+pub fn self_intersect(
     a: &RationalBezier<BigRational>,
     domain: Domain,
     budget: &crate::work::Budget,

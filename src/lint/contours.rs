@@ -58,7 +58,7 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
     if n == 0 {
         return Ok(out);
     }
-    let arr = Arrangement::new_within(&inputs, &o.budget)?;
+    let arr = Arrangement::new(&inputs, &o.budget)?;
     let seg_of = |k: usize| &arr.segs[k];
 
     // per vertex, the records of the pieces meeting there

@@ -356,7 +356,7 @@ impl LintOptions {
 ///
 /// # Errors
 /// [`Error::WorkLimit`] when the glyph's arrangement is estimated above `options.budget`; the
-/// errors of [`crate::shape::Arrangement::new_within`]; [`Error::InvalidArgument`] for a
+/// errors of [`crate::shape::Arrangement::new`]; [`Error::InvalidArgument`] for a
 /// contour with a piece that is no polynomial Bézier curve (an SVG arc) when an arrangement
 /// kind is asked for, and for a Bézier segment of degree above 3 (or without control points).
 ///

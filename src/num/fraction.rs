@@ -30,7 +30,7 @@ use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Denominators longer than this many bits are reduced after an operation.
-pub const REDUCE_BITS: u64 = 2048;
+pub(crate) const REDUCE_BITS: u64 = 2048;
 
 /// An exact rational `num/den` (`den > 0`), not necessarily reduced. An integer carries no
 /// denominator at all (`den = None`), so integer arithmetic allocates only its results.

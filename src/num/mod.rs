@@ -1,8 +1,8 @@
 //! Numbers: the [`Scalar`] field trait with its [`Exact`] marker, the integer-fast exact
 //! [`Rational`], exact quadratic extensions [`QuadraticExt`], points (vectors of scalars),
-//! fixed-width exact rationals ([`SmallRational`], checked), word-sized number theory
-//! (gcds, residues, square extraction; crate-internal), and exact numbers and point lists
-//! read from text ([`parse_points`], [`parse_number`], [`NumberMode`]).
+//! fixed-width exact rationals (`SmallRational`, for the internal fast paths), word-sized number
+//! theory (gcds, residues, square extraction; crate-internal), and exact numbers and point
+//! lists read from text ([`parse_points`], [`parse_number`], [`NumberMode`]).
 //!
 //! The lowest layer: it imports nothing else of the crate but [`crate::error`].
 //!
@@ -12,8 +12,8 @@
 //! | --- | --- | --- | --- |
 //! | `BigRational` (num-rational) | exact answers and inputs: every public result | canonical form | none |
 //! | [`Rational`] | a [`Scalar`] for generic code run exactly (integer values add and multiply as integers) | canonical form | none |
-//! | [`Fraction`] | long evaluations (claim expressions): no gcd per operation | cross-multiplication | none; reduced past [`REDUCE_BITS`] |
-//! | [`SmallRational`] | fixed-width fast paths, run inside [`checked`] | canonical form | reported: [`checked`] returns `None`, the caller redoes the work in `BigRational` |
+//! | [`Fraction`] | long evaluations (claim expressions): no gcd per operation | cross-multiplication | none; reduced past 2048 bits |
+//! | `SmallRational` (internal) | fixed-width fast paths, run inside `checked` | canonical form | reported: `checked` returns `None`, the caller redoes the work in `BigRational` |
 //!
 //! All four are exact ([`Exact`]): equal numbers compare equal whatever their spelling.
 
@@ -26,27 +26,25 @@ pub mod serial;
 pub(crate) mod small;
 pub(crate) mod word;
 
-pub use fraction::{Fraction, REDUCE_BITS};
-pub use parse::{
-    MAX_BINARY_EXPONENT, MAX_EXPONENT, MAX_TOKEN_LEN, NumberMode, parse_number, parse_number_in, parse_numbers,
-    parse_points, parse_points_in,
-};
+pub use fraction::Fraction;
+pub use parse::{NumberMode, parse_number, parse_number_in, parse_numbers, parse_points, parse_points_in};
 pub use point::{Point, Point2};
-pub use quadratic_field::{QuadraticExt, Radical, nearest_f64};
-pub use scalar::{Exact, Rational, Scalar, integer_sqrt, rat, ratio, ratio_to_f64, rational_sqrt};
-pub use small::{SmallRational, checked};
+pub use quadratic_field::{QuadraticExt, Radical};
+pub use scalar::{Exact, Rational, Scalar, rat, ratio, ratio_to_f64};
 
 /// Ring arithmetic that may fail: checked fixed-width integers give `None` on overflow, exact
-/// and interval types never do. One home for the code written once over several number types:
-/// the certified cubic classification ([`crate::internal::SignRing`] adds signs) and
-/// the intersection oracle's Bézoutians (checked `i128`, `BigInt`, `f64` enclosures).
+/// and interval types never do. Internal (reached through `casteljau::internal`). One home for
+/// the code written once over several number types: the certified cubic classification
+/// (`SignRing` adds signs) and the intersection oracle's Bézoutians (checked `i128`, `BigInt`,
+/// `f64` enclosures).
 ///
 /// # Example
 /// ```
-/// use casteljau::num::CheckedRing;
+/// use casteljau::internal::CheckedRing;
 /// assert_eq!(i128::MAX.add(&1), None);
 /// assert_eq!(<i128 as CheckedRing>::zero().mul(&5), Some(0));
 /// ```
+#[doc(hidden)]
 pub trait CheckedRing: Clone + Sized {
     /// `0`.
     fn zero() -> Self;

@@ -27,11 +27,11 @@ use num_rational::BigRational;
 use num_traits::{Pow, Zero};
 
 /// Longest accepted number token, in characters.
-pub const MAX_TOKEN_LEN: usize = 1000;
+pub(crate) const MAX_TOKEN_LEN: usize = 1000;
 /// Largest accepted decimal exponent magnitude (`1e1000` is accepted, `1e1001` is not).
-pub const MAX_EXPONENT: u32 = 1000;
+pub(crate) const MAX_EXPONENT: u32 = 1000;
 /// Largest accepted binary exponent magnitude of a hex float (binary64 needs ±1074).
-pub const MAX_BINARY_EXPONENT: u32 = 16384;
+pub(crate) const MAX_BINARY_EXPONENT: u32 = 16384;
 
 /// How numbers in text are read.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

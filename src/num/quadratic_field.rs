@@ -163,7 +163,7 @@ impl QuadraticExt<BigRational> {
 }
 
 use crate::num::scalar::integer_sqrt as int_sqrt;
-pub use crate::num::scalar::rational_sqrt;
+pub(crate) use crate::num::scalar::rational_sqrt;
 
 impl<K: Exact> Scalar for QuadraticExt<K> {
     fn zero() -> Self {
@@ -182,7 +182,7 @@ impl<K: Exact> Scalar for QuadraticExt<K> {
         self.a.is_zero() && self.b.is_zero()
     }
     /// Correctly rounded (nearest, ties to even) when `K` is a rational type, decided by exact
-    /// signs (see [`nearest_f64`]); for towers (`K` itself an extension) the floating-point value
+    /// signs; for towers (`K` itself an extension) the floating-point value
     /// of `a + b·√d`.
     fn to_f64(&self) -> f64 {
         if self.b.is_zero() {
@@ -208,7 +208,7 @@ impl<K: Exact> Scalar for QuadraticExt<K> {
 /// `a + b√d`), a binary search over the ordered `f64` bit patterns finds the two neighbours
 /// of `x` in at most 64 exact comparisons. Then `x` is compared with their midpoint. Every
 /// decision is an exact sign, so the result is the correctly rounded value whatever the guess.
-pub fn nearest_f64(sign_minus: impl Fn(&BigRational) -> Ordering, guess: f64) -> f64 {
+pub(crate) fn nearest_f64(sign_minus: impl Fn(&BigRational) -> Ordering, guess: f64) -> f64 {
     use num_traits::Pow;
     let limit = || -> BigRational { Pow::pow(BigRational::from_integer(2.into()), 1024u32) };
     // the value of f, with ±inf standing for ±2^1024 (the next exponent's first value)
@@ -412,7 +412,7 @@ impl Radical for BigRational {
 
 impl<K: Exact> QuadraticExt<K> {
     /// The same number with `f` applied to `a`, `b` and `d` (a change of base field: `f` must be
-    /// an injective field homomorphism, such as [`SmallRational::to_big`](crate::num::SmallRational::to_big)).
+    /// an injective field homomorphism, such as the embedding of one exact rational type in another).
     pub fn map<L: Exact>(&self, f: impl Fn(&K) -> L) -> QuadraticExt<L> {
         QuadraticExt::new_unchecked(f(&self.a), f(&self.b), f(&self.d))
     }

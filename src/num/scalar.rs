@@ -157,14 +157,7 @@ impl Exact for BigRational {
 }
 
 /// The exact square root of a non-negative rational, when it is rational.
-///
-/// # Example
-/// ```
-/// use casteljau::{ratio, num::rational_sqrt};
-/// assert_eq!(rational_sqrt(&ratio(9, 4)), Some(ratio(3, 2)));
-/// assert_eq!(rational_sqrt(&ratio(2, 1)), None);
-/// ```
-pub fn rational_sqrt(d: &BigRational) -> Option<BigRational> {
+pub(crate) fn rational_sqrt(d: &BigRational) -> Option<BigRational> {
     if Signed::is_negative(d) {
         return None;
     }
@@ -174,7 +167,7 @@ pub fn rational_sqrt(d: &BigRational) -> Option<BigRational> {
 }
 
 /// The exact square root of a non-negative integer, when it is an integer.
-pub fn integer_sqrt(n: &BigInt) -> Option<BigInt> {
+pub(crate) fn integer_sqrt(n: &BigInt) -> Option<BigInt> {
     if Signed::is_negative(n) {
         return None;
     }
@@ -332,5 +325,17 @@ impl Div for Rational {
     type Output = Rational;
     fn div(self, o: Rational) -> Rational {
         Rational(self.0 / o.0)
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    use super::*;
+    #[test]
+    fn rational_sqrt_example() {
+        use crate::ratio;
+        assert_eq!(rational_sqrt(&ratio(9, 4)), Some(ratio(3, 2)));
+        assert_eq!(rational_sqrt(&ratio(2, 1)), None);
     }
 }

@@ -40,7 +40,7 @@ pub fn strings<T: Display, S: Serializer>(values: &[T], s: S) -> Result<S::Ok, S
 }
 
 /// A value serialized as the string its `Display` writes (no intermediate `String`).
-pub struct AsString<'a, T>(pub &'a T);
+pub(crate) struct AsString<'a, T>(pub &'a T);
 
 impl<T: Display> Serialize for AsString<'_, T> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -52,7 +52,7 @@ impl<T: Display> Serialize for AsString<'_, T> {
 ///
 /// # Errors
 /// Only the serializer's own.
-pub fn option_string<T: Display, S: Serializer>(value: &Option<T>, s: S) -> Result<S::Ok, S::Error> {
+pub(crate) fn option_string<T: Display, S: Serializer>(value: &Option<T>, s: S) -> Result<S::Ok, S::Error> {
     match value {
         Some(v) => s.collect_str(v),
         None => s.serialize_none(),

@@ -18,7 +18,7 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::num::{SmallRational, checked};
+//! use casteljau::internal::{SmallRational, checked};
 //! use casteljau::{Scalar, ratio};
 //! let x = checked(|| SmallRational::from_i64(1) / SmallRational::from_i64(3) + SmallRational::from_i64(1) / SmallRational::from_i64(6));
 //! assert_eq!(x.unwrap().to_string(), "1/2");
@@ -127,14 +127,6 @@ impl SmallRational {
 impl SmallRational {
     /// Appends the number as [`Display`](fmt::Display) spells it (`n` or `n/d`), without the
     /// formatting machinery: the hot path of batch output.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::num::SmallRational;
-    /// let mut out = b"x = ".to_vec();
-    /// SmallRational::new(-6, 4).unwrap().push_to(&mut out);
-    /// assert_eq!(out, b"x = -3/2");
-    /// ```
     pub fn push_to(&self, out: &mut Vec<u8>) {
         let mut buf = itoa::Buffer::new();
         out.extend_from_slice(
@@ -382,5 +374,17 @@ mod tests {
         assert_eq!(checked(|| big - big), Some(SmallRational::ZERO));
         // an inner overflow does not leak into an outer computation
         assert!(checked(|| checked(|| big * big).is_none()).unwrap());
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn push_to_example() {
+        use super::SmallRational;
+        let mut out = b"x = ".to_vec();
+        SmallRational::new(-6, 4).unwrap().push_to(&mut out);
+        assert_eq!(out, b"x = -3/2");
     }
 }

@@ -3,8 +3,9 @@
 
 use super::matching::{DisagreementKind, Unmatched, Window, check_tolerance, exact_curve, match_floats};
 use crate::error::Result;
-use crate::intersect::{Domain, intersect_polynomial};
+use crate::intersect::{Domain, intersect};
 use crate::poly::algebraic::RealAlgebraic;
+use crate::rational::RationalBezier;
 use num_rational::BigRational;
 
 /// A float library's intersection parameters checked against the exact answer (the
@@ -36,7 +37,12 @@ pub fn check_intersections(
 ) -> Result<Vec<IntersectionDisagreement>> {
     check_tolerance(tol)?;
     let curve = |pts: &[[f64; 2]]| exact_curve(pts, |x| format!("{x} is not finite"));
-    let r = intersect_polynomial(&curve(a)?, &curve(b)?, domain)?;
+    let r = intersect(
+        &RationalBezier::from(curve(a)?),
+        &RationalBezier::from(curve(b)?),
+        domain,
+        &crate::work::Budget::unlimited(),
+    )?;
     let tol = BigRational::from_float(tol).expect("finite tolerance");
     // each pair's windows in s and t (none when not finite); a pair on an overlap is neither
     // matched nor reported

@@ -83,7 +83,7 @@ pub struct Agreement {
 /// (see the module documentation).
 ///
 /// # Errors
-/// The errors of [`Arrangement::new_within`] on the inputs with `found`; [`Error::InvalidArgument`]
+/// The errors of [`Arrangement::new`] on the inputs with `found`; [`Error::InvalidArgument`]
 /// for a negative `tol`.
 ///
 /// # Example
@@ -94,7 +94,7 @@ pub struct Agreement {
 /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
 /// let b: Shape = "M1 1 H3 V3 H1 Z".parse().unwrap();
 /// let o = BooleanOptions::default();
-/// let exact = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o).unwrap();
+/// let exact = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o, &casteljau::work::Budget::unlimited()).unwrap();
 /// let good: Shape = "M0 0 H2 V1 H3 V3 H1 V2 H0 Z".parse().unwrap();
 /// let v = check_against(BooleanOp::Union, &[a.clone(), b.clone()], o, &exact, &good, &ratio(1, 1000), &Budget::unlimited()).unwrap();
 /// assert!(v.agree);
@@ -131,7 +131,7 @@ pub fn check_against(
     // the arrangement of the inputs and the float result: edges where the regions differ
     let mut all: Vec<Shape> = inputs.to_vec();
     all.push(found.clone());
-    let arr = Arrangement::new_within(&all, budget)?;
+    let arr = Arrangement::new(&all, budget)?;
     let k = inputs.len();
     let in_exact = |w: &[i64]| op.apply(fill.contains(w[0]), k > 1 && fill.contains(w[1]));
     let in_found = |w: &[i64]| fill.contains(w[k]);

@@ -10,9 +10,8 @@ use num_rational::BigRational;
 
 impl CurveOptions {
     /// Checks that `curve` can be drawn with these options within `budget`: the sampler
-    /// evaluates exactly at up to `2^12 + 1` parameters of ≤ 13 bits ([`work::evaluation`]),
-    /// plus the construction ([`work::de_casteljau_scheme`]) and the subdivision
-    /// ([`work::repeated_subdivision`]) asked for; and the figure is drawn in `f64`, so every
+    /// evaluates exactly at up to `2^12 + 1` parameters of ≤ 13 bits, plus the construction
+    /// and the subdivision asked for (their estimates, [`crate::work`]); and the figure is drawn in `f64`, so every
     /// control point must be within its range (one beyond it would be silently dropped).
     ///
     /// # Errors
@@ -22,11 +21,11 @@ impl CurveOptions {
     /// ```
     /// use casteljau::{BezierCurve, num::parse_points, plot::CurveOptions, work::Budget};
     /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
-    /// assert!(CurveOptions::default().check_drawable_within(&c, &Budget::unlimited()).is_ok());
+    /// assert!(CurveOptions::default().check_drawable(&c, &Budget::unlimited()).is_ok());
     /// let far = BezierCurve::new(parse_points("0 0, 1e400 0", 2, None).unwrap()).unwrap();
-    /// assert!(CurveOptions::default().check_drawable_within(&far, &Budget::unlimited()).is_err());
+    /// assert!(CurveOptions::default().check_drawable(&far, &Budget::unlimited()).is_err());
     /// ```
-    pub fn check_drawable_within(&self, curve: &BezierCurve<BigRational>, budget: &Budget) -> Result<()> {
+    pub fn check_drawable(&self, curve: &BezierCurve<BigRational>, budget: &Budget) -> Result<()> {
         let (n, dim, beta) = (curve.degree(), curve.dim(), work::max_bits(curve.points()));
         let mut estimate = 4097.0 * work::evaluation(n, dim, beta, 13);
         if let Some(t) = &self.construction {

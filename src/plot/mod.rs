@@ -592,7 +592,10 @@ pub fn draw_rational(fig: &mut Figure, curve: &RationalBezier<BigRational>, colo
         exact(t).ok().map(|p| f64_point(&p)).filter(|p| (p.0 - centre.0).abs() < far && (p.1 - centre.1).abs() < far)
     };
     let mut special = Vec::new();
-    if let Some(roots) = curve.denominator_roots(&crate::num::scalar::rat(0), &crate::num::scalar::rat(1)) {
+    let unlimited = crate::work::Budget::unlimited();
+    if let Ok(Some(roots)) =
+        curve.denominator_roots(&crate::num::scalar::rat(0), &crate::num::scalar::rat(1), &unlimited)
+    {
         for r in roots {
             match r {
                 crate::poly::roots::Root::Exact(x) => special.push(x),

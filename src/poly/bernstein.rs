@@ -232,17 +232,6 @@ pub fn eval_power<S: Scalar>(coeffs: &[Point<S>], t: &S) -> Point<S> {
 /// `[a, a + t(b − a)]` and `[a + t(b − a), b]`, **both scaled by `q_tⁿ`** (a positive constant,
 /// so signs and roots are unchanged): `β_i^r = (q_t − p_t)β_i^{r−1} + p_t β_{i+1}^{r−1}`, left
 /// `β_0^r q_t^{n−r}`, right `β_r^{n−r} q_t^r`. No fraction is formed.
-///
-/// # Example
-/// ```
-/// use casteljau::poly::split_integer;
-/// use num_bigint::BigInt;
-/// // (1 − 2t)² has coefficients 1, −1, 1; at t = 1/2 each half is scaled by 2² = 4
-/// let c: Vec<BigInt> = [1, -1, 1].map(BigInt::from).to_vec();
-/// let (l, r) = split_integer(&c, &BigInt::from(1), &BigInt::from(2));
-/// assert_eq!(l, [4, 0, 0].map(BigInt::from).to_vec());
-/// assert_eq!(r, [0, 0, 4].map(BigInt::from).to_vec());
-/// ```
 pub fn split_integer(c: &[BigInt], p: &BigInt, q: &BigInt) -> (Vec<BigInt>, Vec<BigInt>) {
     let n = c.len() - 1;
     let u = q - p;
@@ -278,4 +267,19 @@ pub fn split(c: &[BigRational], t: &BigRational) -> (Vec<BigRational>, Vec<BigRa
     let scale = d * num_traits::Pow::pow(t.denom(), c.len() - 1);
     let back = |v: Vec<BigInt>| v.into_iter().map(|x| BigRational::new(x, scale.clone())).collect();
     (back(l), back(r))
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn split_integer_example() {
+        use super::split_integer;
+        use num_bigint::BigInt;
+        // (1 − 2t)² has coefficients 1, −1, 1; at t = 1/2 each half is scaled by 2² = 4
+        let c: Vec<BigInt> = [1, -1, 1].map(BigInt::from).to_vec();
+        let (l, r) = split_integer(&c, &BigInt::from(1), &BigInt::from(2));
+        assert_eq!(l, [4, 0, 0].map(BigInt::from).to_vec());
+        assert_eq!(r, [0, 0, 4].map(BigInt::from).to_vec());
+    }
 }

@@ -12,20 +12,6 @@
 //!
 //! Written by hand: the crates that factor over finite fields pull in a computer-algebra
 //! system for what is a hundred lines of word arithmetic here.
-//!
-//! # Example
-//! ```
-//! use casteljau::poly::min_factor_degree;
-//! use num_bigint::BigInt;
-//! let p = |c: &[i64]| c.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
-//! // t⁴ − 10t² + 1 (the minimal polynomial of √2 + √3) is irreducible over Q, but splits
-//! // into quadratics or linear factors modulo every prime: the bound is 2, not 4
-//! assert_eq!(min_factor_degree(&p(&[1, 0, -10, 0, 1]), 4), 2);
-//! // t³ − 2 is irreducible
-//! assert_eq!(min_factor_degree(&p(&[-2, 0, 0, 1]), 3), 3);
-//! // (t² + 1)(t³ − t − 1) = t⁵ − t² − t − 1: a quadratic factor
-//! assert_eq!(min_factor_degree(&p(&[-1, -1, -1, 0, 0, 1]), 5), 2);
-//! ```
 
 use num_bigint::BigInt;
 
@@ -307,5 +293,23 @@ mod tests {
                 }
             }
         }
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn modular_example() {
+        use super::min_factor_degree;
+        use num_bigint::BigInt;
+        let p = |c: &[i64]| c.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
+        // t⁴ − 10t² + 1 (the minimal polynomial of √2 + √3) is irreducible over Q, but splits
+        // into quadratics or linear factors modulo every prime: the bound is 2, not 4
+        assert_eq!(min_factor_degree(&p(&[1, 0, -10, 0, 1]), 4), 2);
+        // t³ − 2 is irreducible
+        assert_eq!(min_factor_degree(&p(&[-2, 0, 0, 1]), 3), 3);
+        // (t² + 1)(t³ − t − 1) = t⁵ − t² − t − 1: a quadratic factor
+        assert_eq!(min_factor_degree(&p(&[-1, -1, -1, 0, 0, 1]), 5), 2);
     }
 }

@@ -52,28 +52,10 @@ fn sign_changes(c: &[BigInt]) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
-/// Isolates the real roots in `[0, 1]` of `p(t) = Σ c_i B_i^n(t)`, ascending.
-///
-/// Returns `None` when `p ≡ 0`.
-///
-/// # Example
-/// ```
-/// use casteljau::{ratio, rat, poly::{isolate_bernstein, Root}};
-/// // coefficients 1, −2, 1: 6t² − 6t + 1, roots 1/2 ± √3/6, each isolated
-/// let r = isolate_bernstein(&[rat(1), rat(-2), rat(1)]).unwrap();
-/// assert!(matches!(r.as_slice(), [Root::Isolated(..), Root::Isolated(..)]));
-/// // 1, −1, 1: (2t − 1)², one double root, found exactly
-/// assert_eq!(isolate_bernstein(&[rat(1), rat(-1), rat(1)]).unwrap(), vec![Root::Exact(ratio(1, 2))]);
-/// // 1, 0, −1: 1 − 2t
-/// assert_eq!(isolate_bernstein(&[rat(1), rat(0), rat(-1)]).unwrap(), vec![Root::Exact(ratio(1, 2))]);
-/// ```
-pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
-    isolate_bernstein_within(c, &Budget::unlimited()).expect("an unlimited budget is never exceeded")
-}
-
-/// [`isolate_bernstein`] within a work budget: the up-front work (power form, square-free
-/// part) is estimated by [`crate::work::root_isolation`] before it starts, and each
-/// subdivision step is counted ([`crate::work::root_split`]) as it runs.
+/// Isolates the real roots in `[0, 1]` of `p(t) = Σ c_i B_i^n(t)`, ascending, within a work
+/// budget: the up-front work (power form, square-free part) is estimated before it starts, and
+/// each subdivision step is counted as it runs ([`crate::work`]; [`Budget::unlimited`] for no
+/// limit). Returns `None` when `p ≡ 0`.
 ///
 /// Coefficients that are all non-zero and of one sign prove that there is no root at once
 /// (the Bernstein polynomials are positive on `(0, 1)`), whatever the degree.
@@ -83,13 +65,19 @@ pub fn isolate_bernstein(c: &[BigRational]) -> Option<Vec<Root>> {
 ///
 /// # Example
 /// ```
-/// use casteljau::{rat, poly::isolate_bernstein_within, work::Budget};
+/// use casteljau::{ratio, rat, poly::{isolate_bernstein, Root}, work::Budget};
+/// let any = Budget::unlimited();
+/// // coefficients 1, −2, 1: 6t² − 6t + 1, roots 1/2 ± √3/6, each isolated
+/// let r = isolate_bernstein(&[rat(1), rat(-2), rat(1)], &any).unwrap().unwrap();
+/// assert!(matches!(r.as_slice(), [Root::Isolated(..), Root::Isolated(..)]));
+/// // 1, −1, 1: (2t − 1)², one double root, found exactly
+/// assert_eq!(isolate_bernstein(&[rat(1), rat(-1), rat(1)], &any).unwrap(), Some(vec![Root::Exact(ratio(1, 2))]));
+/// // all weights positive: no root, no work even with a tiny budget
 /// let tight = Budget::new(1.0, "--max-work");
-/// // all weights positive: no root, no work
-/// assert_eq!(isolate_bernstein_within(&vec![rat(1); 5000], &tight).unwrap(), Some(vec![]));
-/// assert!(isolate_bernstein_within(&[rat(1), rat(-2), rat(1)], &tight).is_err());
+/// assert_eq!(isolate_bernstein(&vec![rat(1); 5000], &tight).unwrap(), Some(vec![]));
+/// assert!(isolate_bernstein(&[rat(1), rat(-2), rat(1)], &tight).is_err());
 /// ```
-pub fn isolate_bernstein_within(c: &[BigRational], budget: &Budget) -> Result<Option<Vec<Root>>> {
+pub fn isolate_bernstein(c: &[BigRational], budget: &Budget) -> Result<Option<Vec<Root>>> {
     if c.iter().all(Scalar::is_zero) {
         return Ok(None);
     }
@@ -253,22 +241,18 @@ fn split(
 
 /// Bernstein coefficients of the same polynomial on `[a, b]` (`0 ≤ a < b ≤ 1`), by two
 /// subdivisions.
-pub fn restrict(c: &[BigRational], a: &BigRational, b: &BigRational) -> Vec<BigRational> {
+pub(crate) fn restrict(c: &[BigRational], a: &BigRational, b: &BigRational) -> Vec<BigRational> {
     let right = if Scalar::is_zero(a) { c.to_vec() } else { split_at(c, a).1 };
     let s = (b.clone() - a) / (rat(1) - a);
     if s == rat(1) { right } else { split_at(&right, &s).0 }
 }
 
-/// The roots of `p(t) = Σ c_i B_i^n(t)` in `[a, b]`, mapped back to `t`.
-pub fn isolate_in(c: &[BigRational], a: &BigRational, b: &BigRational) -> Option<Vec<Root>> {
-    isolate_in_within(c, a, b, &Budget::unlimited()).expect("an unlimited budget is never exceeded")
-}
-
-/// [`isolate_in`] within a work budget (see [`isolate_bernstein_within`]).
+/// The roots of `p(t) = Σ c_i B_i^n(t)` in `[a, b]`, mapped back to `t`, within a work budget
+/// (see [`isolate_bernstein`]).
 ///
 /// # Errors
 /// [`Error::WorkLimit`] when the work would exceed `budget`.
-pub fn isolate_in_within(
+pub(crate) fn isolate_in(
     c: &[BigRational],
     a: &BigRational,
     b: &BigRational,
@@ -281,7 +265,7 @@ pub fn isolate_in_within(
             crate::work::subdivision(n, 1, crate::work::max_bits_of(c), crate::work::bits(a).max(crate::work::bits(b))),
         )?;
     }
-    let Some(local) = isolate_bernstein_within(&restrict(c, a, b), budget)? else { return Ok(None) };
+    let Some(local) = isolate_bernstein(&restrict(c, a, b), budget)? else { return Ok(None) };
     let map = |s: BigRational| a.clone() + (b.clone() - a) * s;
     Ok(Some(
         local

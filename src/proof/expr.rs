@@ -68,16 +68,9 @@ impl std::fmt::Display for EvalError {
 
 /// A shared count of the fold terms an evaluation may still take (see [`with_step_limit`]).
 #[derive(Debug)]
-pub struct StepBudget {
+pub(crate) struct StepBudget {
     left: std::sync::atomic::AtomicU64,
     limit: u64,
-}
-
-impl StepBudget {
-    /// The number of steps this budget started with.
-    pub fn limit(&self) -> u64 {
-        self.limit
-    }
 }
 
 std::thread_local! {
@@ -91,7 +84,7 @@ std::thread_local! {
 /// [`Expr::degree`]; past it, evaluation fails with [`EvalError::Invalid`] naming the limit.
 /// A fold such as `sum(r, 0, 100000, sum(s, 0, 100000, x))` is small text but 10¹⁰ terms:
 /// this is how a caller bounds its work. Work handed to other threads shares the budget when
-/// it runs under [`with_steps`]([`current_steps`]). Outside any limit there is none.
+/// it runs under the budget of the thread that started it. Outside any limit there is none.
 ///
 /// ```
 /// use casteljau::proof::expr::{parse_expr, with_step_limit, Env};
@@ -105,12 +98,12 @@ pub fn with_step_limit<T>(steps: u64, f: impl FnOnce() -> T) -> T {
 }
 
 /// The budget of the innermost [`with_step_limit`] on this thread, to share with workers.
-pub fn current_steps() -> Option<std::sync::Arc<StepBudget>> {
+pub(crate) fn current_steps() -> Option<std::sync::Arc<StepBudget>> {
     STEPS.with(|s| s.borrow().clone())
 }
 
 /// Runs `f` charging `budget` (from [`current_steps`] on another thread).
-pub fn with_steps<T>(budget: Option<std::sync::Arc<StepBudget>>, f: impl FnOnce() -> T) -> T {
+pub(crate) fn with_steps<T>(budget: Option<std::sync::Arc<StepBudget>>, f: impl FnOnce() -> T) -> T {
     let saved = STEPS.with(|s| s.replace(budget));
     let out = f();
     STEPS.with(|s| s.replace(saved));
@@ -157,12 +150,7 @@ fn step_n(n: u64) -> std::result::Result<(), EvalError> {
 /// # Errors
 /// [`EvalError::Invalid`] naming the limit (and `--max-work`) once the budget is spent.
 ///
-/// ```
-/// use casteljau::proof::expr::{charge_steps, with_step_limit};
-/// assert!(charge_steps(1_000_000).is_ok()); // no limit
-/// assert!(with_step_limit(100_000, || charge_steps(1_000_000)).is_err());
-/// ```
-pub fn charge_steps(n: u64) -> std::result::Result<(), EvalError> {
+pub(crate) fn charge_steps(n: u64) -> std::result::Result<(), EvalError> {
     step_n(n)
 }
 
@@ -423,7 +411,7 @@ fn int_of(v: &Fraction, what: &str) -> std::result::Result<i64, EvalError> {
 }
 
 /// Largest `|exponent|`, binomial `n` and summation length accepted.
-pub const MAX_INTEGER_ARGUMENT: i64 = 100_000;
+pub(crate) const MAX_INTEGER_ARGUMENT: i64 = 100_000;
 
 fn small_int(v: &Fraction, what: &str) -> std::result::Result<i64, EvalError> {
     let k = int_of(v, what)?;
@@ -796,5 +784,16 @@ impl fmt::Display for Expr {
             Expr::Bern(i, n, x) => write!(f, "B({i}, {n}, {x})"),
             Expr::Fold(s, r, a, b, e) => write!(f, "{}({r}, {a}, {b}, {e})", if *s { "sum" } else { "prod" }),
         }
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn charge_steps_example() {
+        use crate::proof::expr::{charge_steps, with_step_limit};
+        assert!(charge_steps(1_000_000).is_ok()); // no limit
+        assert!(with_step_limit(100_000, || charge_steps(1_000_000)).is_err());
     }
 }

@@ -4,10 +4,10 @@
 //! polynomial kernels run on the homogeneous curve `(w_i P_i, w_i)`.
 //!
 //! ```
-//! use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
+//! use casteljau::{RationalBezier, num::parse_points, rat, ratio, rational::RationalEvaluation, work::Budget};
 //! let pts = parse_points("1 0, 1 1, 0 1", 2, None).unwrap();
 //! let arc = RationalBezier::new(pts, vec![rat(1), rat(1), rat(2)]).unwrap();
-//! let e = arc.eval_within(&[ratio(1, 2)], &Budget::unlimited()).unwrap();
+//! let e = RationalEvaluation::new(&arc, &[ratio(1, 2)], &Budget::unlimited()).unwrap();
 //! assert_eq!(e.values[0].point.to_string(), "(3/5, 4/5)");
 //! assert!(e.defined_on_0_1);
 //! ```
@@ -96,7 +96,7 @@ impl Serialize for ParameterInterval {
     }
 }
 
-/// The points of a rational curve at given parameters ([`RationalBezier::eval_within`]).
+/// The points of a rational curve at given parameters ([`RationalEvaluation::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct RationalEvaluation {
     /// The curve's degree.
@@ -109,7 +109,7 @@ pub struct RationalEvaluation {
     pub defined_on_0_1: bool,
 }
 
-/// The two halves of a rational curve split at `t` ([`RationalBezier::subdivide_within`]).
+/// The two halves of a rational curve split at `t` ([`RationalSubdivision::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct RationalSubdivision {
     /// Where the curve was split.
@@ -122,7 +122,7 @@ pub struct RationalSubdivision {
 }
 
 /// Where the denominator of a rational curve vanishes on an interval
-/// ([`RationalBezier::defined_within`]).
+/// ([`Definedness::new`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Definedness {
     /// The interval examined.
@@ -157,112 +157,6 @@ fn conic_name<Z: Serializer>(k: &ConicType, s: Z) -> std::result::Result<Z::Ok, 
 }
 
 impl RationalBezier<BigRational> {
-    /// The points at each of `ts`, within `budget` ([`work::evaluation`] on the homogeneous
-    /// curve, summed over the parameters), and whether the curve is defined on `[0, 1]`.
-    ///
-    /// # Errors
-    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; [`Error::WeightsVanish`] at a
-    /// parameter where the denominator is 0.
-    ///
-    /// ```
-    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
-    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
-    /// let e = c.eval_within(&[rat(0)], &Budget::unlimited()).unwrap();
-    /// assert!(!e.defined_on_0_1); // W(t) = (2t − 1)²
-    /// assert!(c.eval_within(&[ratio(1, 2)], &Budget::unlimited()).is_err());
-    /// ```
-    pub fn eval_within(&self, ts: &[BigRational], budget: &Budget) -> Result<RationalEvaluation> {
-        let h = self.homogeneous();
-        let (n, beta) = (self.degree(), work::max_bits(h.points()));
-        let estimate: f64 = ts.iter().map(|t| work::evaluation(n, h.dim(), beta, work::bits(t))).sum();
-        budget.check(format!("evaluating degree {n} at {} parameters", ts.len()), estimate)?;
-        let eval = self.exact_evaluator();
-        let values = ts.iter().map(|t| Ok(PointAt { t: t.clone(), point: eval(t)? })).collect::<Result<_>>()?;
-        let defined_on_0_1 = self.check_defined(&rat(0), &rat(1)).is_ok();
-        Ok(RationalEvaluation { degree: n, rational: true, values, defined_on_0_1 })
-    }
-
-    /// The two halves at `t`, within `budget` ([`work::subdivision`] on the homogeneous curve).
-    ///
-    /// # Errors
-    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as [`RationalBezier::subdivide`].
-    ///
-    /// ```
-    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
-    /// let c = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
-    /// let s = c.subdivide_within(&ratio(1, 2), &Budget::unlimited()).unwrap();
-    /// assert_eq!(s.left.points()[2].as_ref().unwrap().to_string(), "(3/5, 4/5)");
-    /// ```
-    pub fn subdivide_within(&self, t: &BigRational, budget: &Budget) -> Result<RationalSubdivision> {
-        let h = self.homogeneous();
-        let (n, beta) = (self.degree(), work::max_bits(h.points()));
-        budget.check(format!("subdividing degree {n}"), work::subdivision(n, h.dim(), beta, work::bits(t)))?;
-        let (left, right) = self.subdivide(t)?;
-        Ok(RationalSubdivision { t: t.clone(), left, right })
-    }
-
-    /// The same curve written with degree `n + by`, within `budget` ([`work::elevation`] on the
-    /// homogeneous curve).
-    ///
-    /// # Errors
-    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as [`RationalBezier::elevate`].
-    ///
-    /// ```
-    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
-    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(2), rat(1)]).unwrap();
-    /// let e = c.elevate_within(1, &Budget::unlimited()).unwrap();
-    /// assert_eq!(e.weights(), vec![rat(1), ratio(5, 3), ratio(5, 3), rat(1)]);
-    /// ```
-    pub fn elevate_within(&self, by: usize, budget: &Budget) -> Result<RationalBezier<BigRational>> {
-        let h = self.homogeneous();
-        let n = self.degree();
-        budget.check(
-            format!("elevating degree {n} by {by}"),
-            work::elevation(n, by, h.dim(), work::max_bits(h.points())),
-        )?;
-        self.elevate(by)
-    }
-
-    /// Where the denominator vanishes on `interval`, within `budget` (root isolation charged
-    /// step by step: [`crate::poly::isolate_in_within`]).
-    ///
-    /// # Errors
-    /// [`Error::WorkLimit`] when the isolation would exceed `budget`.
-    ///
-    /// ```
-    /// use casteljau::{RationalBezier, num::parse_points, rat, ratio, work::Budget};
-    /// use casteljau::rational::ParameterInterval;
-    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
-    /// let d = c.defined_within(&ParameterInterval::unit(), &Budget::unlimited()).unwrap();
-    /// assert!(!d.defined);
-    /// assert_eq!(d.roots[0].to_string(), "t = 1/2");
-    /// let right = ParameterInterval::new(ratio(3, 4), rat(1)).unwrap();
-    /// assert!(c.defined_within(&right, &Budget::unlimited()).unwrap().defined);
-    /// ```
-    pub fn defined_within(&self, interval: &ParameterInterval, budget: &Budget) -> Result<Definedness> {
-        let roots = self.denominator_roots_within(interval.from(), interval.to(), budget)?;
-        let (defined, roots) = match roots {
-            None => (false, vec![]),
-            Some(r) => (r.is_empty(), r),
-        };
-        Ok(Definedness { interval: interval.clone(), defined, roots })
-    }
-
-    /// Proves `f(x(t)) ≡ 0` for the polynomial `f` written in `poly` ([`prove_implicit`]),
-    /// within `budget` (its expression steps: [`Budget::expression_steps`]).
-    ///
-    /// # Errors
-    /// As [`prove_implicit`]; [`Error::WorkLimit`] when the evaluation exceeds the steps.
-    ///
-    /// ```
-    /// use casteljau::{RationalBezier, num::parse_points, rat, work::Budget};
-    /// let arc = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
-    /// assert!(arc.implicit_within("x^2 + y^2 - 1", &Budget::unlimited()).unwrap().proved());
-    /// ```
-    pub fn implicit_within(&self, poly: &str, budget: &Budget) -> Result<ImplicitOutcome> {
-        crate::proof::expr::with_step_limit(budget.expression_steps(), || prove_implicit(self, poly))
-    }
-
     /// The conic of a rational quadratic ([`RationalBezier::conic_type`]) with its shape factor.
     ///
     /// # Errors
@@ -277,5 +171,130 @@ impl RationalBezier<BigRational> {
     pub fn conic(&self) -> Result<Conic> {
         let (conic, shape_factor) = self.conic_type()?;
         Ok(Conic { conic, shape_factor })
+    }
+}
+
+impl ImplicitOutcome {
+    /// Proves or refutes `f(x(t)) ≡ 0` along `curve` for the polynomial `f` written in `poly`
+    /// (the method: [`crate::rational`]'s implicit module docs, `W^d·f(X/W)` of degree ≤ `n·d`
+    /// evaluated at `n·d + 1` parameters), within `budget` (charged per expression step).
+    ///
+    /// # Errors
+    /// A malformed `f`, a curve of dimension > 3, a denominator vanishing everywhere tried;
+    /// [`Error::WorkLimit`] when the evaluation exceeds the budget.
+    ///
+    /// ```
+    /// use casteljau::{RationalBezier, rational::ImplicitOutcome, num::parse_points, rat, work::Budget};
+    /// let arc = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
+    /// assert!(ImplicitOutcome::new(&arc, "x^2 + y^2 - 1", &Budget::unlimited()).unwrap().proved());
+    /// ```
+    pub fn new(curve: &RationalBezier<BigRational>, poly: &str, budget: &Budget) -> Result<Self> {
+        crate::proof::expr::with_step_limit(budget.expression_steps(), || prove_implicit(curve, poly))
+    }
+}
+
+impl Definedness {
+    /// Where the denominator vanishes on `interval`, within `budget` (root isolation charged
+    /// step by step: [`crate::poly::isolate_bernstein`]).
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the isolation would exceed `budget`.
+    ///
+    /// ```
+    /// use casteljau::{RationalBezier, rational::Definedness, num::parse_points, rat, ratio, work::Budget};
+    /// use casteljau::rational::ParameterInterval;
+    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
+    /// let d = Definedness::new(&c, &ParameterInterval::unit(), &Budget::unlimited()).unwrap();
+    /// assert!(!d.defined);
+    /// assert_eq!(d.roots[0].to_string(), "t = 1/2");
+    /// let right = ParameterInterval::new(ratio(3, 4), rat(1)).unwrap();
+    /// assert!(Definedness::new(&c, &right, &Budget::unlimited()).unwrap().defined);
+    /// ```
+    pub fn new(curve: &RationalBezier<BigRational>, interval: &ParameterInterval, budget: &Budget) -> Result<Self> {
+        let roots = curve.denominator_roots(interval.from(), interval.to(), budget)?;
+        let (defined, roots) = match roots {
+            None => (false, vec![]),
+            Some(r) => (r.is_empty(), r),
+        };
+        Ok(Definedness { interval: interval.clone(), defined, roots })
+    }
+}
+
+/// A rational curve written with a higher degree, the same curve ([`RationalElevation::new`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalElevation {
+    /// The elevated curve.
+    pub curve: RationalBezier<BigRational>,
+}
+
+impl RationalElevation {
+    /// The same curve written with degree `n + by`, within `budget` (its estimate on the
+    /// homogeneous curve).
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as [`RationalBezier::elevate`].
+    ///
+    /// ```
+    /// use casteljau::{RationalBezier, rational::RationalElevation, num::parse_points, rat, ratio, work::Budget};
+    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(2), rat(1)]).unwrap();
+    /// let e = RationalElevation::new(&c, 1, &Budget::unlimited()).unwrap();
+    /// assert_eq!(e.curve.weights(), vec![rat(1), ratio(5, 3), ratio(5, 3), rat(1)]);
+    /// ```
+    pub fn new(curve: &RationalBezier<BigRational>, by: usize, budget: &Budget) -> Result<Self> {
+        let h = curve.homogeneous();
+        let n = curve.degree();
+        budget.check(
+            format!("elevating degree {n} by {by}"),
+            work::elevation(n, by, h.dim(), work::max_bits(h.points())),
+        )?;
+        Ok(RationalElevation { curve: curve.elevate(by)? })
+    }
+}
+
+impl RationalSubdivision {
+    /// The two halves at `t`, within `budget` (its estimate on the homogeneous curve).
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; as [`RationalBezier::subdivide`].
+    ///
+    /// ```
+    /// use casteljau::{RationalBezier, rational::RationalSubdivision, num::parse_points, rat, ratio, work::Budget};
+    /// let c = RationalBezier::new(parse_points("1 0, 1 1, 0 1", 2, None).unwrap(), vec![rat(1), rat(1), rat(2)]).unwrap();
+    /// let s = RationalSubdivision::new(&c, &ratio(1, 2), &Budget::unlimited()).unwrap();
+    /// assert_eq!(s.left.points()[2].as_ref().unwrap().to_string(), "(3/5, 4/5)");
+    /// ```
+    pub fn new(curve: &RationalBezier<BigRational>, t: &BigRational, budget: &Budget) -> Result<Self> {
+        let h = curve.homogeneous();
+        let (n, beta) = (curve.degree(), work::max_bits(h.points()));
+        budget.check(format!("subdividing degree {n}"), work::subdivision(n, h.dim(), beta, work::bits(t)))?;
+        let (left, right) = curve.subdivide(t)?;
+        Ok(RationalSubdivision { t: t.clone(), left, right })
+    }
+}
+
+impl RationalEvaluation {
+    /// The points at each of `ts`, within `budget` (its estimate on the homogeneous
+    /// curve, summed over the parameters), and whether the curve is defined on `[0, 1]`.
+    ///
+    /// # Errors
+    /// [`Error::WorkLimit`] when the estimate exceeds `budget`; [`Error::WeightsVanish`] at a
+    /// parameter where the denominator is 0.
+    ///
+    /// ```
+    /// use casteljau::{RationalBezier, rational::RationalEvaluation, num::parse_points, rat, ratio, work::Budget};
+    /// let c = RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
+    /// let e = RationalEvaluation::new(&c, &[rat(0)], &Budget::unlimited()).unwrap();
+    /// assert!(!e.defined_on_0_1); // W(t) = (2t − 1)²
+    /// assert!(RationalEvaluation::new(&c, &[ratio(1, 2)], &Budget::unlimited()).is_err());
+    /// ```
+    pub fn new(curve: &RationalBezier<BigRational>, ts: &[BigRational], budget: &Budget) -> Result<Self> {
+        let h = curve.homogeneous();
+        let (n, beta) = (curve.degree(), work::max_bits(h.points()));
+        let estimate: f64 = ts.iter().map(|t| work::evaluation(n, h.dim(), beta, work::bits(t))).sum();
+        budget.check(format!("evaluating degree {n} at {} parameters", ts.len()), estimate)?;
+        let eval = curve.exact_evaluator();
+        let values = ts.iter().map(|t| Ok(PointAt { t: t.clone(), point: eval(t)? })).collect::<Result<_>>()?;
+        let defined_on_0_1 = curve.check_defined(&rat(0), &rat(1)).is_ok();
+        Ok(RationalEvaluation { degree: n, rational: true, values, defined_on_0_1 })
     }
 }

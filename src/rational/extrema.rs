@@ -10,7 +10,8 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::{BezierCurve, num::parse_points, rational::bounding_box_polynomial};
+//! use casteljau::{BezierCurve, RationalBezier, num::parse_points, rational::bounding_box, work::Budget};
+//! let bounding_box_polynomial = |c: &BezierCurve<_>| bounding_box(&RationalBezier::from(c.clone()), &Budget::unlimited());
 //! // the arch 0 0, 1 2, 2 0: y = 4t(1 − t) peaks at t = 1/2 with y = 1
 //! let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
 //! let b = bounding_box_polynomial(&c).unwrap();
@@ -24,7 +25,6 @@
 //! assert_eq!(b.max_float[0], 1.161216291144187);
 //! ```
 
-use crate::curve::bezier::BezierCurve;
 use crate::error::{Error, Result};
 use crate::num::scalar::rat;
 use crate::poly::algebraic::RealAlgebraic;
@@ -80,40 +80,20 @@ pub struct BoundingBox {
     pub stationary: Vec<Stationary>,
 }
 
-/// [`bounding_box`] of a polynomial curve.
+/// The exact bounding box and stationary points of a rational curve on `[0, 1]` (a polynomial
+/// curve: `RationalBezier::from(curve)`), within a work budget checked before any work starts
+/// ([`Budget::unlimited`](crate::work::Budget::unlimited) for no limit).
 ///
 /// # Errors
-/// As [`bounding_box`].
-pub fn bounding_box_polynomial(curve: &BezierCurve<BigRational>) -> Result<BoundingBox> {
-    let w = vec![rat(1); curve.points().len()];
-    bounding_box(&RationalBezier::new(curve.points().to_vec(), w)?)
-}
-
-/// [`bounding_box`] within a work budget ([`crate::work::extrema`]), checked before any work
-/// starts.
-///
-/// # Errors
-/// As [`bounding_box`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
-pub fn bounding_box_within(curve: &RationalBezier<BigRational>, budget: &crate::work::Budget) -> Result<BoundingBox> {
+/// [`Error::WeightsVanish`] when the denominator vanishes on `[0, 1]`; [`Error::TooLarge`] above
+/// [`MAX_EXTREMA_DEGREE`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+pub fn bounding_box(curve: &RationalBezier<BigRational>, budget: &crate::work::Budget) -> Result<BoundingBox> {
     let n = curve.degree();
     if n > MAX_EXTREMA_DEGREE {
         return Err(Error::TooLarge { what: "degree for extrema", value: n, limit: MAX_EXTREMA_DEGREE });
     }
     let beta = crate::work::max_bits(curve.homogeneous().points());
     budget.check(format!("the bounding box of degree {n}"), crate::work::extrema(n, beta))?;
-    bounding_box(curve)
-}
-
-/// The exact bounding box and stationary points of a rational curve on `[0, 1]`.
-///
-/// # Errors
-/// [`Error::WeightsVanish`] when the denominator vanishes on `[0, 1]`; [`Error::TooLarge`] above
-/// [`MAX_EXTREMA_DEGREE`].
-pub fn bounding_box(curve: &RationalBezier<BigRational>) -> Result<BoundingBox> {
-    let n = curve.degree();
-    if n > MAX_EXTREMA_DEGREE {
-        return Err(Error::TooLarge { what: "degree for extrema", value: n, limit: MAX_EXTREMA_DEGREE });
-    }
     curve.check_defined(&rat(0), &rat(1))?;
     let forms = curve.homogeneous().coordinate_polynomials();
     let dim = curve.dim();

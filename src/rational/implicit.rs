@@ -17,7 +17,7 @@ use crate::proof::expr::{Env, Expr, parse_expr};
 use crate::rational::rational_bezier::RationalBezier;
 use num_rational::BigRational;
 
-/// The outcome of [`prove_implicit`].
+/// The outcome of an implicit proof ([`ImplicitOutcome::new`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ImplicitOutcome {
     /// `f(x(t)) ≡ 0`: the curve lies on the curve/surface `f = 0`.
@@ -78,7 +78,7 @@ const NAMES: [&str; 3] = ["x", "y", "z"];
 /// # Errors
 /// [`Error::InvalidArgument`] when `f` divides by a variable (not a polynomial) or has a
 /// non-constant integer argument.
-pub fn total_degree(f: &Expr, vars: &[&str]) -> Result<usize> {
+pub(crate) fn total_degree(f: &Expr, vars: &[&str]) -> Result<usize> {
     // substitute v ↦ λ·v and take the degree in λ
     fn scale(e: &Expr, vars: &[&str]) -> Expr {
         use Expr::*;
@@ -113,15 +113,7 @@ pub const MAX_IMPLICIT_DEGREE: usize = 20_000;
 ///
 /// # Errors
 /// A malformed `f`, a curve of dimension > 3, or a denominator vanishing everywhere tried.
-///
-/// # Example
-/// ```
-/// use casteljau::{rational::{prove_implicit, ImplicitOutcome}, rational::RationalBezier, num::parse_points, rat};
-/// let folium = RationalBezier::new(parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(), vec![rat(1), rat(1), rat(1), rat(2)]).unwrap();
-/// assert!(matches!(prove_implicit(&folium, "x^3 - 3*x*y + y^3").unwrap(), ImplicitOutcome::Proved { degree_bound: 9, .. }));
-/// assert!(matches!(prove_implicit(&folium, "x^3 - 2*x*y + y^3").unwrap(), ImplicitOutcome::Counterexample { .. }));
-/// ```
-pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<ImplicitOutcome> {
+pub(crate) fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<ImplicitOutcome> {
     let dim = curve.dim();
     if dim > 3 {
         return Err(Error::InvalidArgument { message: "implicit equations take curves of dimension ≤ 3".into() });
@@ -170,4 +162,27 @@ pub fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<Im
         q += 1;
     }
     Ok(ImplicitOutcome::Proved { degree_bound: bound, parameters: params })
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    use super::*;
+    #[test]
+    fn prove_implicit_example() {
+        use crate::{num::parse_points, rat, rational::ImplicitOutcome, rational::RationalBezier};
+        let folium = RationalBezier::new(
+            parse_points("0 0, 1 0, 2 1, 3/2 3/2", 2, None).unwrap(),
+            vec![rat(1), rat(1), rat(1), rat(2)],
+        )
+        .unwrap();
+        assert!(matches!(
+            prove_implicit(&folium, "x^3 - 3*x*y + y^3").unwrap(),
+            ImplicitOutcome::Proved { degree_bound: 9, .. }
+        ));
+        assert!(matches!(
+            prove_implicit(&folium, "x^3 - 2*x*y + y^3").unwrap(),
+            ImplicitOutcome::Counterexample { .. }
+        ));
+    }
 }

@@ -10,10 +10,8 @@ pub(crate) mod implicit;
 pub(crate) mod menelaus;
 pub(crate) mod rational_bezier;
 
-pub use exact::{Conic, Definedness, ParameterInterval, RationalEvaluation, RationalSubdivision};
-pub use extrema::{
-    BoundingBox, MAX_EXTREMA_DEGREE, Stationary, bounding_box, bounding_box_polynomial, bounding_box_within,
-};
-pub use implicit::{ImplicitOutcome, MAX_IMPLICIT_DEGREE, prove_implicit, total_degree};
+pub use exact::{Conic, Definedness, ParameterInterval, RationalElevation, RationalEvaluation, RationalSubdivision};
+pub use extrema::{BoundingBox, MAX_EXTREMA_DEGREE, Stationary, bounding_box};
+pub use implicit::{ImplicitOutcome, MAX_IMPLICIT_DEGREE};
 pub use menelaus::Configuration;
-pub use rational_bezier::{ConicType, RationalBezier, divide};
+pub use rational_bezier::{ConicType, RationalBezier};

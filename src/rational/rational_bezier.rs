@@ -27,7 +27,7 @@ use std::cmp::Ordering;
 
 /// `𝒱[a:b](P, Q) = (b·P + a·Q)/(a + b)`: the point dividing `PQ` in the ratio `a : b` (seed
 /// 002, (17)). `None` when `a + b = 0`.
-pub fn divide<S: Scalar>(a: &S, b: &S, p: &Point<S>, q: &Point<S>) -> Option<Point<S>> {
+pub(crate) fn divide<S: Scalar>(a: &S, b: &S, p: &Point<S>, q: &Point<S>) -> Option<Point<S>> {
     let s = a.clone() + b;
     if s.is_zero() {
         return None;
@@ -65,6 +65,21 @@ pub(crate) fn weighted_homogeneous<S: Scalar>(p: &Point<S>, w: &S) -> Point<S> {
         Point::new(coords)
     } else {
         p.to_homogeneous(w)
+    }
+}
+
+impl<S: Scalar> From<BezierCurve<S>> for RationalBezier<S> {
+    /// The polynomial curve as a rational one: every weight 1, the same points for every `t`.
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, RationalBezier, num::parse_points, ratio};
+    /// let c = BezierCurve::new(parse_points("0 0, 1 2, 2 0", 2, None).unwrap()).unwrap();
+    /// let r = RationalBezier::from(c.clone());
+    /// assert_eq!(r.eval(&ratio(1, 3)).unwrap(), c.eval(&ratio(1, 3)));
+    /// ```
+    fn from(c: BezierCurve<S>) -> Self {
+        let h = c.points().iter().map(|p| weighted_homogeneous(p, &S::one())).collect();
+        RationalBezier { homogeneous: BezierCurve::new(h).expect("as many points as the curve") }
     }
 }
 
@@ -370,22 +385,18 @@ impl RationalBezier<BigRational> {
         move |t| crate::curve::fraction_free::eval_integer(&ic, t).from_homogeneous().ok_or_else(|| vanish_at(t))
     }
 
-    /// Exact roots of the denominator `W(t) = Σ w_i B_i^n(t)` in `[a, b]` (`None`: `W ≡ 0`).
-    pub fn denominator_roots(&self, a: &BigRational, b: &BigRational) -> Option<Vec<Root>> {
-        isolate_in(&self.weights(), a, b)
-    }
-
-    /// [`Self::denominator_roots`] within a work budget.
+    /// Exact roots of the denominator `W(t) = Σ w_i B_i^n(t)` in `[a, b]` (`None`: `W ≡ 0`),
+    /// within a work budget ([`crate::poly::isolate_bernstein`]).
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the isolation would exceed `budget`.
-    pub fn denominator_roots_within(
+    pub fn denominator_roots(
         &self,
         a: &BigRational,
         b: &BigRational,
         budget: &crate::work::Budget,
     ) -> Result<Option<Vec<Root>>> {
-        crate::poly::roots::isolate_in_within(&self.weights(), a, b, budget)
+        isolate_in(&self.weights(), a, b, budget)
     }
 
     /// Checks that the curve is defined on `[a, b]` (`0 ≤ a < b ≤ 1`).
@@ -393,7 +404,7 @@ impl RationalBezier<BigRational> {
     /// # Errors
     /// [`Error::WeightsVanish`] naming an isolating interval of a root of the denominator.
     pub fn check_defined(&self, a: &BigRational, b: &BigRational) -> Result<()> {
-        match self.denominator_roots(a, b) {
+        match self.denominator_roots(a, b, &crate::work::Budget::unlimited())? {
             None => Err(Error::WeightsVanish { interval: (a.to_string(), b.to_string()) }),
             Some(roots) => match roots.first() {
                 None => Ok(()),

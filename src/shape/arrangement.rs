@@ -175,7 +175,7 @@ pub(crate) struct EdgeData {
 /// // two unit squares side by side share the edge x = 1
 /// let a: Shape = "M0 0 H1 V1 H0 Z".parse().unwrap();
 /// let b: Shape = "M1 0 H2 V1 H1 Z".parse().unwrap();
-/// let arr = Arrangement::new(&[a, b]).unwrap();
+/// let arr = Arrangement::new(&[a, b], &casteljau::work::Budget::unlimited()).unwrap();
 /// assert_eq!(arr.vertices().len(), 6);
 /// assert_eq!(arr.edges().len(), 7); // the shared edge is one edge carrying two pieces
 /// let shared = arr.edges().into_iter().find(|e| e.pieces.len() == 2).unwrap();
@@ -262,25 +262,17 @@ fn inner_parameter(s: &Seg, lo: &RealAlgebraic, hi: &RealAlgebraic) -> BigRation
 }
 
 impl Arrangement {
-    /// The arrangement of the inputs' segments, without a work limit.
-    ///
-    /// # Errors
-    /// As [`Self::new_within`].
-    pub fn new(inputs: &[super::Shape]) -> Result<Self> {
-        Self::new_within(inputs, &Budget::unlimited())
-    }
-
     /// The arrangement of the inputs' segments, with the estimated work of every resultant pair,
     /// self-intersection and side winding number checked against `budget` before any of them
     /// starts.
     ///
     /// # Errors
     /// [`Error::TooLarge`] beyond [`MAX_ARRANGEMENT_SEGMENTS`]; [`Error::WorkLimit`] over the
-    /// budget; the errors of [`crate::intersect::intersect_within`] and
-    /// [`crate::intersect::self_intersect_within`] for a pair or a segment (a curve that traces
+    /// budget ([`Budget::unlimited`] for no limit); the errors of [`crate::intersect::intersect`]
+    /// and [`crate::intersect::self_intersect`] for a pair or a segment (a curve that traces
     /// a curve more than once off a line); [`Error::InvalidArgument`] when two overlapping
     /// segments are split inconsistently (a defect, reported rather than answered wrongly).
-    pub fn new_within(inputs: &[super::Shape], budget: &Budget) -> Result<Self> {
+    pub fn new(inputs: &[super::Shape], budget: &Budget) -> Result<Self> {
         let paths: Vec<&ClosedPath> = inputs.iter().map(|s| s.path()).collect();
         let total: usize = paths.iter().map(|p| p.segments()).sum();
         if total > MAX_ARRANGEMENT_SEGMENTS {
@@ -353,7 +345,7 @@ impl Arrangement {
         )?;
         let unlimited = Budget::unlimited();
         for &(a, b) in &general {
-            let r = crate::intersect::intersect_within(&segs[a].curve, &segs[b].curve, Domain::Unit, &unlimited)
+            let r = crate::intersect::intersect(&segs[a].curve, &segs[b].curve, Domain::Unit, &unlimited)
                 .map_err(|e| located(e, &segs[a], Some(&segs[b])))?;
             for i in r.intersections {
                 links.push(Link::Point(a, i.s, b, i.t));
@@ -363,7 +355,7 @@ impl Arrangement {
             }
         }
         for &k in &selfs {
-            let r = crate::intersect::self_intersect_within(&segs[k].curve, Domain::Unit, &unlimited)
+            let r = crate::intersect::self_intersect(&segs[k].curve, Domain::Unit, &unlimited)
                 .map_err(|e| located(e, &segs[k], None))?;
             for i in r.intersections {
                 links.push(Link::Point(k, i.s, k, i.t));
@@ -384,12 +376,12 @@ impl Arrangement {
     /// // the diagonals of the unit square cross at (1/2, 1/2); the parabola y = 2x(1 − x)·… meets
     /// // the line y = 1/4 at irrational points
     /// let a: Shape = "M0 0 L1 1 L1 0 L0 1 Z".parse().unwrap();
-    /// let arr = Arrangement::new(&[a]).unwrap();
+    /// let arr = Arrangement::new(&[a], &casteljau::work::Budget::unlimited()).unwrap();
     /// let centre = arr.vertices().into_iter().find(|v| v.degree == 4).unwrap();
     /// assert_eq!(centre.point.iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["1/2", "1/2"]);
     /// let b: Shape = "M0 0 Q1 2 2 0 Z".parse().unwrap();
     /// let c: Shape = "M0 0.25 H2 V2 H0 Z".parse().unwrap();
-    /// let arr = Arrangement::new(&[b, c]).unwrap();
+    /// let arr = Arrangement::new(&[b, c], &casteljau::work::Budget::unlimited()).unwrap();
     /// let v = arr.vertices().into_iter().find(|v| v.point[0].to_rational().is_none()).unwrap();
     /// assert_eq!(v.point[1].to_string(), "1/4");
     /// ```
@@ -416,7 +408,7 @@ impl Arrangement {
     /// ```
     /// use casteljau::shape::{Arrangement, Shape};
     /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
-    /// let arr = Arrangement::new(&[a.clone(), a]).unwrap();
+    /// let arr = Arrangement::new(&[a.clone(), a], &casteljau::work::Budget::unlimited()).unwrap();
     /// // every edge carries a piece of both copies
     /// assert!(arr.edges().iter().all(|e| e.pieces.len() == 2 && e.winding_left == [1, 1] && e.winding_right == [0, 0]));
     /// ```
@@ -446,7 +438,7 @@ impl Arrangement {
     /// ```
     /// use casteljau::shape::{Arrangement, Shape};
     /// let a: Shape = "M0 0 H1 V1 Z".parse().unwrap();
-    /// assert_eq!(Arrangement::new(&[a.clone(), a.clone(), a]).unwrap().inputs(), 3);
+    /// assert_eq!(Arrangement::new(&[a.clone(), a.clone(), a], &casteljau::work::Budget::unlimited()).unwrap().inputs(), 3);
     /// ```
     pub fn inputs(&self) -> usize {
         self.inputs

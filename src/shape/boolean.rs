@@ -195,7 +195,7 @@ impl BooleanResult {
     /// use casteljau::{num::Point2, rat, ratio};
     /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
     /// let b: Shape = "M1 1 H3 V3 H1 Z".parse().unwrap();
-    /// let d = boolean(BooleanOp::Difference, &[a, b], BooleanOptions::default()).unwrap();
+    /// let d = boolean(BooleanOp::Difference, &[a, b], BooleanOptions::default(), &casteljau::work::Budget::unlimited()).unwrap();
     /// let p = Point2::new;
     /// assert_eq!(d.winding(&p(ratio(1, 2), ratio(1, 2))).unwrap(), Some(1));
     /// assert_eq!(d.winding(&p(ratio(3, 2), ratio(3, 2))).unwrap(), Some(0));
@@ -239,7 +239,7 @@ impl BooleanResult {
     /// use casteljau::shape::{boolean, BooleanOp, BooleanOptions, Shape};
     /// use casteljau::{num::Point2, ratio};
     /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
-    /// let r = boolean(BooleanOp::Simplify, &[a], BooleanOptions::default()).unwrap();
+    /// let r = boolean(BooleanOp::Simplify, &[a], BooleanOptions::default(), &casteljau::work::Budget::unlimited()).unwrap();
     /// assert_eq!(r.contains(&Point2::new(ratio(1, 2), ratio(1, 3))).unwrap(), Some(true));
     /// ```
     pub fn contains(&self, q: &Point2<BigRational>) -> Result<Option<bool>> {
@@ -247,37 +247,31 @@ impl BooleanResult {
     }
 }
 
-/// The boundary of `op` applied to the inputs (one for `simplify`, two otherwise), without a
-/// work limit.
+/// The boundary of `op` applied to the inputs (one for `simplify`, two otherwise), within a work
+/// budget (the arrangement's estimate, checked before it starts; [`Budget::unlimited`] for no
+/// limit).
 ///
 /// # Errors
-/// As [`boolean_within`].
+/// [`Error::InvalidArgument`] for the wrong number of inputs; the errors of
+/// [`Arrangement::new`] and [`Arrangement::faces`] (pinch points at irrational tangent
+/// vertices).
 ///
 /// # Example
 /// ```
 /// use casteljau::shape::{boolean, BooleanOp, BooleanOptions, Shape};
-/// use casteljau::rat;
+/// use casteljau::{rat, work::Budget};
+/// let any = Budget::unlimited();
 /// let a: Shape = "M0 0 H2 V2 H0 Z".parse().unwrap();
 /// let b: Shape = "M1 1 H3 V3 H1 Z".parse().unwrap();
-/// let u = boolean(BooleanOp::Union, &[a.clone(), b.clone()], BooleanOptions::default()).unwrap();
+/// let u = boolean(BooleanOp::Union, &[a.clone(), b.clone()], BooleanOptions::default(), &any).unwrap();
 /// assert_eq!((u.contours, u.area.clone().unwrap()), (1, rat(7)));
 /// assert_eq!(u.path, "M0 0L2 0L2 1L3 1L3 3L1 3L1 2L0 2Z");
-/// let i = boolean(BooleanOp::Intersection, &[a.clone(), b.clone()], BooleanOptions::default()).unwrap();
+/// let i = boolean(BooleanOp::Intersection, &[a.clone(), b.clone()], BooleanOptions::default(), &any).unwrap();
 /// assert_eq!(i.area.unwrap(), rat(1));
-/// let x = boolean(BooleanOp::Xor, &[a.clone(), a], BooleanOptions::default()).unwrap();
+/// let x = boolean(BooleanOp::Xor, &[a.clone(), a], BooleanOptions::default(), &any).unwrap();
 /// assert_eq!(x.contours, 0); // A xor A is empty
 /// ```
-pub fn boolean(op: BooleanOp, inputs: &[super::Shape], options: BooleanOptions) -> Result<BooleanResult> {
-    boolean_within(op, inputs, options, &Budget::unlimited())
-}
-
-/// [`boolean`] within a work budget (the arrangement's estimate, checked before it starts).
-///
-/// # Errors
-/// [`Error::InvalidArgument`] for the wrong number of inputs; the errors of
-/// [`Arrangement::new_within`] and [`Arrangement::faces`] (pinch points at irrational tangent
-/// vertices).
-pub fn boolean_within(
+pub fn boolean(
     op: BooleanOp,
     inputs: &[super::Shape],
     options: BooleanOptions,
@@ -288,7 +282,7 @@ pub fn boolean_within(
             message: format!("{} takes {} input(s), not {}", op.as_str(), op.inputs(), inputs.len()),
         });
     }
-    let arr = Arrangement::new_within(inputs, budget)?;
+    let arr = Arrangement::new(inputs, budget)?;
     result_of(&arr, op, options)
 }
 

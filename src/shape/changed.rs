@@ -25,7 +25,7 @@ impl BooleanResult {
     /// use casteljau::shape::{BooleanOp, BooleanOptions, Orientation, Shape, boolean};
     /// let simplify = |s: &Shape, orientation| {
     ///     let options = BooleanOptions { orientation, ..BooleanOptions::default() };
-    ///     boolean(BooleanOp::Simplify, std::slice::from_ref(s), options).unwrap()
+    ///     boolean(BooleanOp::Simplify, std::slice::from_ref(s), options, &casteljau::work::Budget::unlimited()).unwrap()
     /// };
     /// // a counter-clockwise square with a clockwise hole, a zero-length segment (H4) included
     /// let framed: Shape = "M0 0 H4 H4 V4 H0 Z M1 1 V3 H3 V1 Z".parse().unwrap();

@@ -18,7 +18,7 @@
 //! use casteljau::shape::{boolean, BooleanOp, BooleanOptions, Shape};
 //! // a figure-eight: under non-zero both lobes are filled, under even-odd too; simplify gives two contours
 //! let eight: Shape = "M0 0 L2 2 L2 0 L0 2 Z".parse().unwrap();
-//! let r = boolean(BooleanOp::Simplify, &[eight], BooleanOptions::default()).unwrap();
+//! let r = boolean(BooleanOp::Simplify, &[eight], BooleanOptions::default(), &casteljau::work::Budget::unlimited()).unwrap();
 //! assert_eq!(r.contours, 2);
 //! assert_eq!(r.area.unwrap().to_string(), "2");
 //! ```
@@ -35,7 +35,7 @@ mod render;
 pub(crate) mod segment;
 
 pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, MAX_ARRANGEMENT_SEGMENTS, Vertex};
-pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean, boolean_within};
+pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean};
 
 use crate::error::Result;
 use crate::num::point::Point2;

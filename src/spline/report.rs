@@ -54,10 +54,10 @@ impl Serialize for RationalSpline {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::{Conversion, RationalSpline}};
+/// use casteljau::{Point, rat, spline::{BezierConversion, Conversion, RationalSpline}};
 /// let h: Vec<Point<_>> = [(0, 0), (1, 2), (2, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
 /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 2, 2].map(rat)).unwrap();
-/// let c = sp.bezier_conversion(Conversion::Boehm).unwrap();
+/// let c = BezierConversion::new(&sp, Conversion::Boehm, &casteljau::work::Budget::unlimited()).unwrap();
 /// assert_eq!(c.segments[1].span, (rat(1), rat(2)));
 /// let json = serde_json::to_string(&c.segments[1]).unwrap();
 /// assert!(json.ends_with(r#""span":["1","2"]}"#));
@@ -73,14 +73,14 @@ pub struct SplineSegment {
 }
 
 /// A spline's rational Bézier segments by one [`Conversion`] and the continuity proved at each
-/// join ([`RationalSpline::bezier_conversion`]).
+/// join ([`BezierConversion::new`]).
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::{Conversion, RationalSpline}};
+/// use casteljau::{Point, rat, spline::{BezierConversion, Conversion, RationalSpline}};
 /// let h: Vec<Point<_>> = [(0, 0), (1, 2), (2, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
 /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 2, 2].map(rat)).unwrap();
-/// let c = sp.bezier_conversion(Conversion::Boehm).unwrap();
+/// let c = BezierConversion::new(&sp, Conversion::Boehm, &casteljau::work::Budget::unlimited()).unwrap();
 /// assert_eq!((c.segments.len(), c.joins.len(), c.joins[0].continuity), (2, 1, 0));
 /// assert!(c.proved());
 /// ```
@@ -102,10 +102,10 @@ impl BezierConversion {
     ///
     /// # Example
     /// ```
-    /// use casteljau::{Point, rat, spline::{Conversion, RationalSpline}};
+    /// use casteljau::{Point, rat, spline::{BezierConversion, Conversion, RationalSpline}};
     /// let h: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(i * i), rat(1)])).collect();
     /// let sp = RationalSpline::from_knots(2, h, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
-    /// assert!(sp.bezier_conversion(Conversion::Boehm).unwrap().proved());
+    /// assert!(BezierConversion::new(&sp, Conversion::Boehm, &casteljau::work::Budget::unlimited()).unwrap().proved());
     /// ```
     pub fn proved(&self) -> bool {
         self.joins.iter().all(|j| j.proved)
@@ -120,10 +120,10 @@ impl BezierConversion {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::RationalSpline, work::Budget};
+/// use casteljau::{Point, rat, spline::{RationalSpline, SplineCheck}, work::Budget};
 /// let h: Vec<Point<_>> = [(0, 0), (1, 2), (2, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
 /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 2, 2].map(rat)).unwrap();
-/// let c = sp.check_within(&Budget::unlimited()).unwrap();
+/// let c = SplineCheck::new(&sp, &Budget::unlimited()).unwrap();
 /// assert!(c.passed);
 /// assert_eq!(c.boehm, Ok(6)); // 3 exact points on each of the 2 segments
 /// assert_eq!(c.report[0], "Boehm knot insertion: every segment is the NURBS on its span (6 exact points), joins C^0");
@@ -149,14 +149,14 @@ pub struct SplineCheck {
     pub seed: Option<(std::result::Result<usize, SegmentMismatch>, bool)>,
 }
 
-/// A spline's values at some parameters ([`RationalSpline::eval_many_within`]).
+/// A spline's values at some parameters ([`SplineValues::new`]).
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, ratio, spline::RationalSpline, work::Budget};
+/// use casteljau::{Point, rat, ratio, spline::{RationalSpline, SplineValues}, work::Budget};
 /// let h: Vec<Point<_>> = [(0, 0), (1, 2), (2, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
 /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 2, 2].map(rat)).unwrap();
-/// let v = sp.eval_many_within(&[ratio(1, 2)], &Budget::unlimited()).unwrap();
+/// let v = SplineValues::new(&sp, &[ratio(1, 2)], &Budget::unlimited()).unwrap();
 /// assert_eq!(serde_json::to_string(&v).unwrap(), r#"{"degree":1,"values":[{"point":["1/2","1"],"u":"1/2"}]}"#);
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -171,10 +171,10 @@ pub struct SplineValues {
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::RationalSpline, work::Budget};
+/// use casteljau::{Point, rat, spline::{RationalSpline, SplineValues}, work::Budget};
 /// let h: Vec<Point<_>> = [(0, 0), (2, 2)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
 /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 1].map(rat)).unwrap();
-/// let v = &sp.eval_many_within(&[rat(1)], &Budget::unlimited()).unwrap().values[0];
+/// let v = &SplineValues::new(&sp, &[rat(1)], &Budget::unlimited()).unwrap().values[0];
 /// assert_eq!((v.u.clone(), v.point.clone()), (rat(1), Point::new(vec![rat(2), rat(2)])));
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -210,15 +210,15 @@ pub struct KnotRemoval {
 }
 
 /// The exact rational Bézier patches of a NURBS surface and their check
-/// ([`NurbsSurface::extraction_within`]). Serialized as `check`, `degree` (`[p, q]`) and
+/// ([`SurfaceExtraction::new`]). Serialized as `check`, `degree` (`[p, q]`) and
 /// `patches` (each with `homogeneous` rows, `span_u` and `span_v`).
 ///
 /// # Example
 /// ```
-/// use casteljau::{Point, rat, spline::NurbsSurface, work::Budget};
+/// use casteljau::{Point, rat, spline::{NurbsSurface, SurfaceExtraction}, work::Budget};
 /// let row = |y: i64| (0..2).map(|x| Point::new(vec![rat(x), rat(y), rat(x * y), rat(1)])).collect::<Vec<_>>();
 /// let s = NurbsSurface::from_knots((1, 1), vec![row(0), row(1)], &[0, 0, 1, 1].map(rat), &[0, 0, 1, 1].map(rat)).unwrap();
-/// let e = s.extraction_within(&Budget::unlimited()).unwrap();
+/// let e = SurfaceExtraction::new(&s, &Budget::unlimited()).unwrap();
 /// assert_eq!(e.patches.len(), 1);
 /// assert!(e.check.equals_surface && e.check.joins_proved);
 /// ```
@@ -249,135 +249,6 @@ impl Serialize for PatchPiece {
 }
 
 impl RationalSpline {
-    /// The rational Bézier segments by `how` with their spans and the joins between them,
-    /// within a work budget ([`crate::work::spline_conversion`]).
-    ///
-    /// # Errors
-    /// As [`Self::to_bezier`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, spline::{Conversion, RationalSpline}, work::Budget};
-    /// let h: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(i * i), rat(1)])).collect();
-    /// let sp = RationalSpline::from_knots(2, h, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
-    /// let c = sp.bezier_conversion_within(Conversion::Boehm, &Budget::unlimited()).unwrap();
-    /// assert_eq!(c.segments[0].span, (rat(0), rat(1)));
-    /// assert!(sp.bezier_conversion_within(Conversion::Boehm, &Budget::new(1.0, "--max-work")).is_err());
-    /// ```
-    pub fn bezier_conversion_within(&self, how: Conversion, budget: &Budget) -> Result<BezierConversion> {
-        budget.check(self.work_what("Bézier segments of"), crate::work::spline_conversion(self.work_shape()))?;
-        let segs = self.to_bezier(how)?;
-        let joins = self.joins(&segs);
-        let spans = self.span_indices();
-        let segments = segs
-            .into_iter()
-            .zip(spans)
-            .map(|(curve, j)| SplineSegment { curve, span: (self.knots[j].clone(), self.knots[j + 1].clone()) })
-            .collect();
-        Ok(BezierConversion { degree: self.degree, joins, method: how, segments })
-    }
-
-    /// [`Self::bezier_conversion_within`] without a limit.
-    ///
-    /// # Errors
-    /// As [`Self::to_bezier`].
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, spline::{Conversion, RationalSpline}};
-    /// let h: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(i * i), rat(1)])).collect();
-    /// let sp = RationalSpline::from_knots(2, h, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
-    /// assert_eq!(sp.bezier_conversion(Conversion::Boehm).unwrap().segments.len(), 2);
-    /// ```
-    pub fn bezier_conversion(&self, how: Conversion) -> Result<BezierConversion> {
-        self.bezier_conversion_within(how, &Budget::unlimited())
-    }
-
-    /// The proof that the spline's Bézier segments are the spline ([`SplineCheck`]), within a
-    /// work budget ([`crate::work::spline_check`]).
-    ///
-    /// # Errors
-    /// As [`Self::to_bezier`]; [`Error::WorkLimit`] when the estimate exceeds `budget`. A
-    /// failed proof is not an error: `passed` is false.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, spline::RationalSpline, work::Budget};
-    /// let q: Vec<Point<_>> = (0..6).map(|i| Point::new(vec![rat(i), rat(i * i % 5)])).collect();
-    /// let sp = RationalSpline::new(3, &q, &[1, 2, 1, 3, 1, 2].map(rat), &[1, 2, 1, 3, 2, 1, 2, 1].map(rat)).unwrap();
-    /// let c = sp.check_within(&Budget::unlimited()).unwrap();
-    /// assert!(c.passed);
-    /// assert_eq!(c.seed.as_ref().map(|s| s.1), Some(true)); // the seed's formulas give Boehm's segments
-    /// ```
-    pub fn check_within(&self, budget: &Budget) -> Result<SplineCheck> {
-        budget
-            .check(self.work_what("checking the Bézier segments of"), crate::work::spline_check(self.work_shape()))?;
-        let boehm_segments = self.to_bezier_boehm()?;
-        let repeated = self.has_repeated_knots();
-        let mut report = Vec::new();
-        let mut passed = true;
-        let mut line = |name: &str, r: &std::result::Result<usize, SegmentMismatch>| match r {
-            Ok(points) => report.push(format!(
-                "{name}: every segment is the NURBS on its span ({points} exact points), joins {}",
-                if repeated {
-                    "C^(n-mu) at each knot of multiplicity mu".to_string()
-                } else {
-                    format!("C^{}", self.degree - 1)
-                }
-            )),
-            Err(e) => {
-                passed = false;
-                report.push(format!("{name}: FAILS: {e:?}"));
-            }
-        };
-        let boehm = check_segments(self, &boehm_segments);
-        line("Boehm knot insertion", &boehm);
-        let seed = if matches!(self.degree, 2 | 3) && !repeated {
-            let seed = self.to_bezier(Conversion::Seed(Reading::Corrected))?;
-            let checked = check_segments(self, &seed);
-            line("seed formulas", &checked);
-            let same =
-                seed.iter().zip(&boehm_segments).all(|(a, b)| a.points() == b.points() && a.weights() == b.weights());
-            passed &= same;
-            report.push(format!("seed formulas = Boehm (points and weights): {same}"));
-            Some((checked, same))
-        } else {
-            None
-        };
-        let joins = self.joins(&boehm_segments);
-        if !joins.is_empty() {
-            report.push(format!("joins: {}", joins_text(&joins)));
-        }
-        passed &= joins.iter().all(|j| j.proved);
-        Ok(SplineCheck { degree: self.degree, joins, passed, report, segments: self.segments(), boehm, seed })
-    }
-
-    /// The points at each of `us` (de Boor, [`Self::eval_at`]), within a work budget
-    /// ([`crate::work::spline_evaluation`] each).
-    ///
-    /// # Errors
-    /// As [`Self::eval_at`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, ratio, spline::RationalSpline, work::Budget};
-    /// let h: Vec<Point<_>> = [(0, 0), (2, 2)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
-    /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 1].map(rat)).unwrap();
-    /// let v = sp.eval_many_within(&[ratio(1, 4), rat(1)], &Budget::unlimited()).unwrap();
-    /// assert_eq!(v.values[0].point, Point::new(vec![ratio(1, 2), ratio(1, 2)]));
-    /// assert!(sp.eval_many_within(&[rat(2)], &Budget::unlimited()).is_err()); // outside [0, 1]
-    /// ```
-    pub fn eval_many_within(&self, us: &[BigRational], budget: &Budget) -> Result<SplineValues> {
-        let tau = crate::work::max_bits_of(us);
-        budget.check(
-            format!("{} evaluations of {}", us.len(), self.work_what("")),
-            us.len() as f64 * crate::work::spline_evaluation(self.work_shape(), tau),
-        )?;
-        let values =
-            us.iter().map(|u| Ok(SplineValue { point: self.eval_at(u)?, u: u.clone() })).collect::<Result<_>>()?;
-        Ok(SplineValues { degree: self.degree, values })
-    }
-
     /// The spline with the knot `u` inserted `times` times ([`Self::insert_knot`] repeated).
     ///
     /// # Errors
@@ -452,38 +323,7 @@ impl RationalSpline {
     }
 }
 
-impl NurbsSurface {
-    /// The exact Bézier patches ([`Self::bezier_patches`]) and their check ([`Self::check`]),
-    /// within a work budget ([`crate::work::surface_extraction`]).
-    ///
-    /// # Errors
-    /// As [`Self::bezier_patches`] and [`Self::check`]; [`Error::WorkLimit`] when the estimate
-    /// exceeds `budget`.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, spline::NurbsSurface, work::Budget};
-    /// let row = |y: i64| (0..3).map(|x| Point::new(vec![rat(x), rat(y), rat(x * y), rat(1)])).collect::<Vec<_>>();
-    /// let s = NurbsSurface::from_knots((1, 1), vec![row(0), row(1)], &[0, 0, 1, 1].map(rat), &[0, 0, 1, 2, 2].map(rat)).unwrap();
-    /// let e = s.extraction_within(&Budget::unlimited()).unwrap();
-    /// assert_eq!((e.degree, e.patches.len(), e.check.patches), ((1, 1), 2, 2));
-    /// ```
-    pub fn extraction_within(&self, budget: &Budget) -> Result<SurfaceExtraction> {
-        let points: usize = self.rows.iter().map(Vec::len).sum();
-        let dim = self.rows.first().and_then(|r| r.first()).map_or(1, Point::dim);
-        let bits = self.rows.iter().map(|r| crate::work::max_bits(r)).max().unwrap_or(0);
-        budget.check(
-            format!(
-                "the Bézier patches of a degree-({}, {}) surface of {points} control points",
-                self.degree.0, self.degree.1
-            ),
-            crate::work::surface_extraction(self.degree, points, dim, bits),
-        )?;
-        let patches = self.bezier_patches()?.into_iter().flatten().collect();
-        let check = self.check()?;
-        Ok(SurfaceExtraction { check, degree: self.degree, patches })
-    }
-}
+impl NurbsSurface {}
 
 /// The joins in words: `u = 1 (multiplicity 1): C^1, proved; …`.
 ///
@@ -508,4 +348,158 @@ pub fn joins_text(joins: &[Join]) -> String {
         })
         .collect::<Vec<_>>()
         .join("; ")
+}
+
+impl SplineValues {
+    /// The points at each of `us` (de Boor, [`RationalSpline::eval_at`]), within a work budget
+    /// (its estimate each).
+    ///
+    /// # Errors
+    /// As [`RationalSpline::eval_at`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, ratio, spline::{RationalSpline, SplineValues}, work::Budget};
+    /// let h: Vec<Point<_>> = [(0, 0), (2, 2)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(1, h, &[0, 0, 1, 1].map(rat)).unwrap();
+    /// let v = SplineValues::new(&sp, &[ratio(1, 4), rat(1)], &Budget::unlimited()).unwrap();
+    /// assert_eq!(v.values[0].point, Point::new(vec![ratio(1, 2), ratio(1, 2)]));
+    /// assert!(SplineValues::new(&sp, &[rat(2)], &Budget::unlimited()).is_err()); // outside [0, 1]
+    /// ```
+    pub fn new(spline: &RationalSpline, us: &[BigRational], budget: &Budget) -> Result<Self> {
+        let tau = crate::work::max_bits_of(us);
+        budget.check(
+            format!("{} evaluations of {}", us.len(), spline.work_what("")),
+            us.len() as f64 * crate::work::spline_evaluation(spline.work_shape(), tau),
+        )?;
+        let values =
+            us.iter().map(|u| Ok(SplineValue { point: spline.eval_at(u)?, u: u.clone() })).collect::<Result<_>>()?;
+        Ok(SplineValues { degree: spline.degree, values })
+    }
+}
+
+impl SplineCheck {
+    /// The proof that the spline's Bézier segments are the spline ([`SplineCheck`]), within a
+    /// work budget (its estimate).
+    ///
+    /// # Errors
+    /// As [`RationalSpline::to_bezier`]; [`Error::WorkLimit`] when the estimate exceeds `budget`. A
+    /// failed proof is not an error: `passed` is false.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::{RationalSpline, SplineCheck}, work::Budget};
+    /// let q: Vec<Point<_>> = (0..6).map(|i| Point::new(vec![rat(i), rat(i * i % 5)])).collect();
+    /// let sp = RationalSpline::new(3, &q, &[1, 2, 1, 3, 1, 2].map(rat), &[1, 2, 1, 3, 2, 1, 2, 1].map(rat)).unwrap();
+    /// let c = SplineCheck::new(&sp, &Budget::unlimited()).unwrap();
+    /// assert!(c.passed);
+    /// assert_eq!(c.seed.as_ref().map(|s| s.1), Some(true)); // the seed's formulas give Boehm's segments
+    /// ```
+    pub fn new(spline: &RationalSpline, budget: &Budget) -> Result<Self> {
+        budget.check(
+            spline.work_what("checking the Bézier segments of"),
+            crate::work::spline_check(spline.work_shape()),
+        )?;
+        let boehm_segments = spline.to_bezier_boehm()?;
+        let repeated = spline.has_repeated_knots();
+        let mut report = Vec::new();
+        let mut passed = true;
+        let mut line = |name: &str, r: &std::result::Result<usize, SegmentMismatch>| match r {
+            Ok(points) => report.push(format!(
+                "{name}: every segment is the NURBS on its span ({points} exact points), joins {}",
+                if repeated {
+                    "C^(n-mu) at each knot of multiplicity mu".to_string()
+                } else {
+                    format!("C^{}", spline.degree - 1)
+                }
+            )),
+            Err(e) => {
+                passed = false;
+                report.push(format!("{name}: FAILS: {e:?}"));
+            }
+        };
+        let boehm = check_segments(spline, &boehm_segments);
+        line("Boehm knot insertion", &boehm);
+        let seed = if matches!(spline.degree, 2 | 3) && !repeated {
+            let seed = spline.to_bezier(Conversion::Seed(Reading::Corrected))?;
+            let checked = check_segments(spline, &seed);
+            line("seed formulas", &checked);
+            let same =
+                seed.iter().zip(&boehm_segments).all(|(a, b)| a.points() == b.points() && a.weights() == b.weights());
+            passed &= same;
+            report.push(format!("seed formulas = Boehm (points and weights): {same}"));
+            Some((checked, same))
+        } else {
+            None
+        };
+        let joins = spline.joins(&boehm_segments);
+        if !joins.is_empty() {
+            report.push(format!("joins: {}", joins_text(&joins)));
+        }
+        passed &= joins.iter().all(|j| j.proved);
+        Ok(SplineCheck { degree: spline.degree, joins, passed, report, segments: spline.segments(), boehm, seed })
+    }
+}
+
+impl BezierConversion {
+    /// The rational Bézier segments by `how` with their spans and the joins between them,
+    /// within a work budget (its estimate).
+    ///
+    /// # Errors
+    /// As [`RationalSpline::to_bezier`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::{BezierConversion, Conversion, RationalSpline}, work::Budget};
+    /// let h: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(i * i), rat(1)])).collect();
+    /// let sp = RationalSpline::from_knots(2, h, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+    /// let c = BezierConversion::new(&sp, Conversion::Boehm, &Budget::unlimited()).unwrap();
+    /// assert_eq!(c.segments[0].span, (rat(0), rat(1)));
+    /// assert!(BezierConversion::new(&sp, Conversion::Boehm, &Budget::new(1.0, "--max-work")).is_err());
+    /// ```
+    pub fn new(spline: &RationalSpline, how: Conversion, budget: &Budget) -> Result<Self> {
+        budget.check(spline.work_what("Bézier segments of"), crate::work::spline_conversion(spline.work_shape()))?;
+        let segs = spline.to_bezier(how)?;
+        let joins = spline.joins(&segs);
+        let spans = spline.span_indices();
+        let segments = segs
+            .into_iter()
+            .zip(spans)
+            .map(|(curve, j)| SplineSegment { curve, span: (spline.knots[j].clone(), spline.knots[j + 1].clone()) })
+            .collect();
+        Ok(BezierConversion { degree: spline.degree, joins, method: how, segments })
+    }
+}
+
+impl SurfaceExtraction {
+    /// The exact Bézier patches ([`NurbsSurface::bezier_patches`]) and their check ([`NurbsSurface::check`]),
+    /// within a work budget (its estimate).
+    ///
+    /// # Errors
+    /// As [`NurbsSurface::bezier_patches`] and [`NurbsSurface::check`]; [`Error::WorkLimit`] when the estimate
+    /// exceeds `budget`.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{Point, rat, spline::{NurbsSurface, SurfaceExtraction}, work::Budget};
+    /// let row = |y: i64| (0..3).map(|x| Point::new(vec![rat(x), rat(y), rat(x * y), rat(1)])).collect::<Vec<_>>();
+    /// let s = NurbsSurface::from_knots((1, 1), vec![row(0), row(1)], &[0, 0, 1, 1].map(rat), &[0, 0, 1, 2, 2].map(rat)).unwrap();
+    /// let e = SurfaceExtraction::new(&s, &Budget::unlimited()).unwrap();
+    /// assert_eq!((e.degree, e.patches.len(), e.check.patches), ((1, 1), 2, 2));
+    /// ```
+    pub fn new(surface: &NurbsSurface, budget: &Budget) -> Result<Self> {
+        let points: usize = surface.rows.iter().map(Vec::len).sum();
+        let dim = surface.rows.first().and_then(|r| r.first()).map_or(1, Point::dim);
+        let bits = surface.rows.iter().map(|r| crate::work::max_bits(r)).max().unwrap_or(0);
+        budget.check(
+            format!(
+                "the Bézier patches of a degree-({}, {}) surface of {points} control points",
+                surface.degree.0, surface.degree.1
+            ),
+            crate::work::surface_extraction(surface.degree, points, dim, bits),
+        )?;
+        let patches = surface.bezier_patches()?.into_iter().flatten().collect();
+        let check = surface.check()?;
+        Ok(SurfaceExtraction { check, degree: surface.degree, patches })
+    }
 }

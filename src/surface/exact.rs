@@ -5,7 +5,7 @@
 //! use casteljau::{num::parse_points, ratio, surface::RationalPatch};
 //! let net = parse_points("0 0 0, 1 0 1, 2 0 0, 0 1 1, 1 1 2, 2 1 1", 3, None).unwrap();
 //! let p = RationalPatch::from_net(&net, (1, 2), None).unwrap();
-//! let e = p.eval_checked(&ratio(1, 2), &ratio(1, 3)).unwrap();
+//! let e = p.eval_checked(&ratio(1, 2), &ratio(1, 3), &casteljau::work::Budget::unlimited()).unwrap();
 //! assert_eq!(e.point.to_string(), "(2/3, 1/2, 17/18)");
 //! assert!(e.de_casteljau_u_then_v_and_v_then_u_agree);
 //! ```

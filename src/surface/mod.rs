@@ -676,7 +676,7 @@ impl RationalPatch {
 /// use casteljau::{Point, rat, ratio, surface::RationalPatch};
 /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
 /// let patch = RationalPatch::new(vec![vec![p(0, 0, 0), p(0, 1, 1)], vec![p(1, 0, 1), p(1, 1, 2)]], vec![vec![rat(1); 2]; 2]).unwrap();
-/// let v = patch.eval_checked(&ratio(1, 2), &ratio(1, 2)).unwrap();
+/// let v = patch.eval_checked(&ratio(1, 2), &ratio(1, 2), &casteljau::work::Budget::unlimited()).unwrap();
 /// assert_eq!(
 ///     serde_json::to_string(&v).unwrap(),
 ///     r#"{"de_casteljau_u_then_v_and_v_then_u_agree":true,"point":["1/2","1/2","1"],"u":"1/2","v":"1/2"}"#
@@ -707,43 +707,22 @@ impl RationalPatch {
     /// # Errors
     /// [`Error::WeightsVanish`] where the closed form's weight is 0 (as [`Self::eval`]). A
     /// recursion that cannot run (an intermediate weight 0) is not a disagreement.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, ratio, surface::RationalPatch};
-    /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// let rows = vec![vec![p(0, 0, 0), p(0, 1, 1)], vec![p(1, 0, 1), p(1, 1, 2)]];
-    /// let patch = RationalPatch::new(rows, vec![vec![rat(1), rat(2)], vec![rat(3), rat(1)]]).unwrap();
-    /// let (u, v) = (ratio(1, 3), ratio(2, 5));
-    /// let checked = patch.eval_checked(&u, &v).unwrap();
-    /// assert_eq!(checked.point, patch.eval(&u, &v).unwrap());
-    /// assert!(checked.de_casteljau_u_then_v_and_v_then_u_agree);
-    /// ```
-    pub fn eval_checked(&self, u: &BigRational, v: &BigRational) -> Result<PatchValue> {
-        self.eval_checked_within(u, v, &crate::work::Budget::unlimited())
-    }
-
-    /// [`Self::eval_checked`] within a work budget: six evaluations, each of `m + n + 2`
-    /// curves of the larger degree ([`crate::work::evaluation`]), checked before any work
-    /// starts.
-    ///
-    /// # Errors
-    /// As [`Self::eval_checked`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+    /// [`Error::WorkLimit`] when the estimate (six evaluations, each of `m + n + 2` curves of
+    /// the larger degree) exceeds `budget`, checked before any work starts.
     ///
     /// # Example
     /// ```
     /// use casteljau::{Point, rat, ratio, surface::RationalPatch, work::Budget};
     /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// let patch = RationalPatch::new(vec![vec![p(0, 0, 0), p(0, 1, 1)], vec![p(1, 0, 1), p(1, 1, 2)]], vec![vec![rat(1); 2]; 2]).unwrap();
-    /// assert!(patch.eval_checked_within(&ratio(1, 3), &rat(1), &Budget::unlimited()).is_ok());
-    /// assert!(patch.eval_checked_within(&ratio(1, 3), &rat(1), &Budget::new(1.0, "--max-work")).is_err());
+    /// let rows = vec![vec![p(0, 0, 0), p(0, 1, 1)], vec![p(1, 0, 1), p(1, 1, 2)]];
+    /// let patch = RationalPatch::new(rows, vec![vec![rat(1), rat(2)], vec![rat(3), rat(1)]]).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(2, 5));
+    /// let checked = patch.eval_checked(&u, &v, &Budget::unlimited()).unwrap();
+    /// assert_eq!(checked.point, patch.eval(&u, &v).unwrap());
+    /// assert!(checked.de_casteljau_u_then_v_and_v_then_u_agree);
+    /// assert!(patch.eval_checked(&u, &v, &Budget::new(1.0, "--max-work")).is_err());
     /// ```
-    pub fn eval_checked_within(
-        &self,
-        u: &BigRational,
-        v: &BigRational,
-        budget: &crate::work::Budget,
-    ) -> Result<PatchValue> {
+    pub fn eval_checked(&self, u: &BigRational, v: &BigRational, budget: &crate::work::Budget) -> Result<PatchValue> {
         use crate::num::small::{SmallRational, checked};
         let (m, n) = self.degree();
         let beta = self.rows.iter().map(|r| crate::work::max_bits(r)).max().unwrap_or(0);

@@ -3,6 +3,7 @@
 //! perturbed constants.
 
 use casteljau::catalogue::{self, Verdict, check, load, parse_claims, readme};
+use casteljau::work::Budget;
 use std::collections::HashSet;
 use std::path::PathBuf;
 
@@ -16,7 +17,7 @@ fn catalogue_parses_with_unique_ids_and_every_verdict_as_expected_and_readme_cur
     assert!(claims.len() >= 59, "{} claims", claims.len());
     let ids: HashSet<_> = claims.iter().map(|c| c.id.clone()).collect();
     assert_eq!(ids.len(), claims.len());
-    let results: Vec<_> = claims.iter().map(|c| check(c).unwrap()).collect();
+    let results: Vec<_> = claims.iter().map(|c| check(c, &Budget::unlimited()).unwrap()).collect();
     for r in &results {
         assert!(r.passed(), "{}: expected {:?}, found {:?}: {}", r.id, r.expected, r.found, r.detail);
     }
@@ -46,14 +47,14 @@ rhs = "sum(r, j, n, B(j, r, s) * B(r, n, t))"
 #[test]
 fn catalogue_true_identity_holds_and_perturbed_constant_is_caught() {
     let c = &parse_claims("t.toml", TRUE_IDENTITY).unwrap()[0];
-    assert_eq!(check(c).unwrap().found, Verdict::Holds);
+    assert_eq!(check(c, &Budget::unlimited()).unwrap().found, Verdict::Holds);
     for perturbed in [
         TRUE_IDENTITY.replace("B(j, n, s*t)", "B(j, n, s*t) * 1.000000000001"),
         TRUE_IDENTITY.replace("B(r, n, t))", "B(r, n, t) + 10^-30)"),
         TRUE_IDENTITY.replace("sum(r, j, n,", "sum(r, j, n - 1,"),
     ] {
         let c = &parse_claims("t.toml", &perturbed).unwrap()[0];
-        let r = check(c).unwrap();
+        let r = check(c, &Budget::unlimited()).unwrap();
         assert_eq!(r.found, Verdict::Fails, "{perturbed}");
         assert!(r.detail.contains("lhs − rhs"), "{}", r.detail);
         assert!(!r.passed());
@@ -66,13 +67,13 @@ fn catalogue_flipped_verdicts_fail() {
     let flipped = TRUE_IDENTITY.replace("expect = \"holds\"", "expect = \"fails-as-printed\"")
         + "[claim.corrected]\nnote = \"none\"\n";
     let c = &parse_claims("t.toml", &flipped).unwrap()[0];
-    assert!(!check(c).unwrap().passed());
+    assert!(!check(c, &Budget::unlimited()).unwrap().passed());
     // a real erratum marked as holding: wrong verdict
     let text = std::fs::read_to_string(proofs()[0].join("003_matrix_form.toml")).unwrap();
     let claims = parse_claims("003", &text).unwrap();
     let mut erratum = claims.into_iter().find(|c| c.id == "003-quartic-expansion-b1").unwrap();
     erratum.expect = Verdict::Holds;
-    let r = check(&erratum).unwrap();
+    let r = check(&erratum, &Budget::unlimited()).unwrap();
     assert_eq!(r.found, Verdict::FailsAsPrinted);
     assert!(!r.passed());
 }
@@ -97,7 +98,7 @@ fn catalogue_malformed_files_name_file_and_line() {
     // errors found while checking name the claim's line
     let bad = TRUE_IDENTITY.replace("B(j, n, s*t)", "B(j, n, s*t");
     let c = &parse_claims("t.toml", &bad).unwrap()[0];
-    let e = check(c).unwrap_err().to_string();
+    let e = check(c, &Budget::unlimited()).unwrap_err().to_string();
     assert!(e.starts_with("t.toml:4: claim t-8") && e.contains("column"), "{e}");
     let dup = format!("{TRUE_IDENTITY}{}", &TRUE_IDENTITY[TRUE_IDENTITY.find("[[claim]]").unwrap()..]);
     let tmp = crate::common::TempDir::new("dup");
@@ -108,7 +109,7 @@ fn catalogue_malformed_files_name_file_and_line() {
 #[test]
 fn catalogue_junit_report() {
     let c = &parse_claims("t.toml", TRUE_IDENTITY).unwrap()[0];
-    let x = catalogue::junit(&[check(c).unwrap()]);
+    let x = catalogue::junit(&[check(c, &Budget::unlimited()).unwrap()]);
     assert!(x.contains("<testsuite name=\"casteljau prove\" tests=\"1\" failures=\"0\">"));
     assert!(x.contains("<testcase classname=\"proofs\" name=\"t-8\""));
 }

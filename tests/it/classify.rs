@@ -400,8 +400,8 @@ proptest! {
 /// The fixed-width route (`SmallRational` inside `checked`) and the big-number route give the
 /// same classification, spelled alike, whenever the fixed-width route answers.
 fn routes_agree(c: &BezierCurve<BigRational>) -> Result<bool, TestCaseError> {
-    use casteljau::classify::classify_in;
-    use casteljau::num::{SmallRational, checked};
+    use casteljau::internal::classify_in;
+    use casteljau::internal::{SmallRational, checked};
     let big = classify_in(c).unwrap();
     prop_assert_eq!(&classify(c).unwrap(), &big);
     let Some(small) = checked(|| classify_in(&c.map(SmallRational::from_ratio)).unwrap()) else { return Ok(false) };

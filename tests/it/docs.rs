@@ -91,6 +91,7 @@ fn readme_library_example() -> Result<(), Box<dyn std::error::Error>> {
 
 // BEGIN library_tour (docs/library.md shows this body verbatim)
 fn library_tour() -> Result<(), Box<dyn std::error::Error>> {
+    use casteljau::curve::Evaluation;
     use casteljau::num::{Rational, Scalar};
     use casteljau::{BezierCurve, Budget, Domain, RationalBezier, intersect, parse_points, proof, rat, ratio};
 
@@ -100,12 +101,12 @@ fn library_tour() -> Result<(), Box<dyn std::error::Error>> {
     assert_eq!(c.real_degree(), 3);
 
     // every operation the command line offers, with a work budget checked before it starts
-    let _e = c.eval_within(&[ratio(1, 3)], &Budget::new(1e10, "max_work"))?;
+    let _e = Evaluation::new(&c, &[ratio(1, 3)], &Budget::new(1e10, "max_work"))?;
 
     // exact intersections: parameters and points are exact algebraic numbers
     let a = RationalBezier::new(parse_points("0 0, 1 2, 2 0", 2, None)?, vec![rat(1); 3])?;
     let b = RationalBezier::new(parse_points("0 1, 2 1", 2, None)?, vec![rat(1); 2])?;
-    let hits = intersect(&a, &b, Domain::Unit)?; // the apex touches y = 1: s = t = 1/2, tangent
+    let hits = intersect(&a, &b, Domain::Unit, &Budget::unlimited())?; // the apex touches y = 1: s = t = 1/2, tangent
     assert_eq!(hits.intersections.len(), 1);
 
     // Prove your own identity: a polynomial of degree ≤ d_j in each variable that vanishes on a

@@ -7,13 +7,22 @@
 use crate::common::{run, stderr, stdout};
 use casteljau::classify::{NodeType, classify};
 use casteljau::curve::BezierCurve;
-use casteljau::intersect::{Domain, intersect_polynomial, self_intersect};
+use casteljau::intersect::{Domain, self_intersect};
 use casteljau::num::Point;
 use casteljau::num::{NumberMode, parse_points_in};
 use casteljau::poly::RealAlgebraic;
 use casteljau::{RationalBezier, rat};
 use num_rational::BigRational;
 use proptest::prelude::*;
+
+/// Two polynomial curves' intersections (as rational curves of unit weights), no work limit.
+fn intersect_polynomial(
+    a: &casteljau::BezierCurve<num_rational::BigRational>,
+    b: &casteljau::BezierCurve<num_rational::BigRational>,
+    domain: Domain,
+) -> casteljau::Result<casteljau::intersect::Intersections> {
+    casteljau::intersect::intersect(&a.clone().into(), &b.clone().into(), domain, &casteljau::work::Budget::unlimited())
+}
 
 fn c(s: &str) -> BezierCurve<BigRational> {
     BezierCurve::new(parse_points_in(s, 2, None, NumberMode::Exact).unwrap()).unwrap()
@@ -144,7 +153,7 @@ proptest! {
     fn self_intersection_of_a_cubic_is_the_classified_double_point(a in cubic()) {
         let k = classify(&a).unwrap();
         let rb = RationalBezier::new(a.points().to_vec(), vec![rat(1); 4]).unwrap();
-        let r = match self_intersect(&rb, Domain::Unit) {
+        let r = match self_intersect(&rb, Domain::Unit, &casteljau::work::Budget::unlimited()) {
             Ok(r) => r,
             Err(e) => { prop_assert!(k.collinear || k.real_degree < 3, "{}", e); return Ok(()); }
         };
@@ -223,16 +232,28 @@ mod overlaps {
         // down to 3/4 — two arcs, one per branch of the hyperbola s(t)
         let a = rc("1 0, 1 1, 0 1", &[1, 1, 2]);
         let b = rc("15/17 8/17, 13/19 16/19, 7/25 24/25", &[17, -19, 25]);
-        let r = intersect(&a, &b, Domain::Unit).unwrap();
+        let r = intersect(&a, &b, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
         assert_eq!(spelled(&r), ["s [0, 1/4] t 1/4 -> 0", "s [3/4, 1] t 1 -> 3/4"]);
         assert!(r.intersections.is_empty() && consistent(&a, &b, &r));
         assert_eq!(r.overlaps[1].t_float, [1.0, 0.75]);
         // B passes through A(∞) = (−1, 0) at t = 1/2; A's own s ∈ [0, 1] is t ∈ [0, 1/3]
         let b = rc("1 0, 1 -1, 0 -1", &[1, -1, 2]);
-        assert_eq!(spelled(&intersect(&a, &b, Domain::Unit).unwrap()), ["s [0, 1] t 0 -> 1/3"]);
-        assert_eq!(spelled(&intersect(&b, &a, Domain::Unit).unwrap()), ["s [0, 1/3] t 0 -> 1"]);
+        assert_eq!(
+            spelled(&intersect(&a, &b, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap()),
+            ["s [0, 1] t 0 -> 1/3"]
+        );
+        assert_eq!(
+            spelled(&intersect(&b, &a, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap()),
+            ["s [0, 1/3] t 0 -> 1"]
+        );
         // reweighted copies (w_i ρ^i): the same arc, ends fixed
-        let r = intersect(&rc("1 0, 1 1, 0 1", &[1, 1, 1]), &rc("1 0, 1 1, 0 1", &[1, 2, 4]), Domain::Unit).unwrap();
+        let r = intersect(
+            &rc("1 0, 1 1, 0 1", &[1, 1, 1]),
+            &rc("1 0, 1 1, 0 1", &[1, 2, 4]),
+            Domain::Unit,
+            &casteljau::work::Budget::unlimited(),
+        )
+        .unwrap();
         assert_eq!(spelled(&r), ["s [0, 1] t 0 -> 1"]);
     }
 
@@ -242,7 +263,7 @@ mod overlaps {
         // the half at t = 1 − √15/5, off the shared arc
         let a = rc("0 0, 2 2, -1 2, 1 0", &[1, 1, 1, 1]);
         let b = rc("0 0, 1 1, 3/4 3/2, 1/2 3/2", &[1, 1, 1, 1]);
-        let r = intersect(&a, &b, Domain::Unit).unwrap();
+        let r = intersect(&a, &b, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
         assert_eq!(spelled(&r), ["s [0, 1/2] t 0 -> 1"]);
         let i = &r.intersections;
         assert_eq!(i.len(), 1);
@@ -259,14 +280,14 @@ mod overlaps {
         for (x, y, st) in
             [(&a3, &b3, ("1/2", "1/3")), (&b3, &a3, ("1/3", "1/2")), (&a3, &b4, ("1/2", "0")), (&b4, &a3, ("0", "1/2"))]
         {
-            let r = intersect(x, y, Domain::Unit).unwrap();
+            let r = intersect(x, y, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
             assert!(r.overlaps.is_empty() && consistent(x, y, &r));
             let got: Vec<(String, String)> =
                 r.intersections.iter().map(|i| (i.s.to_string(), i.t.to_string())).collect();
             assert_eq!(got, [(st.0.to_string(), st.1.to_string())]);
         }
         // a curve with itself: the whole square's diagonal, and the double point both ways
-        let r = intersect(&a, &a, Domain::Unit).unwrap();
+        let r = intersect(&a, &a, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
         assert_eq!(spelled(&r), ["s [0, 1] t 0 -> 1"]);
         assert_eq!(r.intersections.len(), 2);
     }
@@ -293,7 +314,7 @@ mod overlaps {
         assert!(o("5 5, 5 5", "0 0, 2 2").is_empty());
         // a line traced back and forth overlaps itself
         let a = rc("0 0, 2 0, -1 0, 1 0", &[1, 1, 1, 1]);
-        let r = self_intersect(&a, Domain::Unit).unwrap();
+        let r = self_intersect(&a, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
         assert_eq!(r.overlaps.len(), 3);
         assert!(r.overlaps.iter().all(|o| o.s[0] <= o.t[0].clone().min(o.t[1].clone())));
         assert!(consistent(&a, &a, &r));
@@ -342,8 +363,8 @@ mod overlaps {
                 w.reverse();
                 b = RationalBezier::new(p, w).unwrap();
             }
-            let ab = intersect(&a, &b, Domain::Unit).unwrap();
-            let ba = intersect(&b, &a, Domain::Unit).unwrap();
+            let ab = intersect(&a, &b, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
+            let ba = intersect(&b, &a, Domain::Unit, &casteljau::work::Budget::unlimited()).unwrap();
             prop_assert!(!ab.overlaps.is_empty());
             prop_assert!(consistent(&a, &b, &ab));
             let swap = |r: &Intersections| {

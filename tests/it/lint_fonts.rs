@@ -8,13 +8,28 @@
 
 use crate::font_builder::*;
 use casteljau::format::{Contour, Font, Segment};
-use casteljau::intersect::{Contact, Domain, intersect_polynomial};
+use casteljau::intersect::{Contact, Domain};
 use casteljau::num::ratio_to_f64;
-use casteljau::rational::bounding_box_polynomial;
+use casteljau::rational::{BoundingBox, bounding_box};
+
+/// The exact box of a polynomial curve (as a rational one of unit weights), no work limit.
+fn bounding_box_polynomial(c: &casteljau::BezierCurve<num_rational::BigRational>) -> casteljau::Result<BoundingBox> {
+    bounding_box(&c.clone().into(), &casteljau::work::Budget::unlimited())
+}
 use casteljau::{BezierCurve, Scalar, classify, rat};
 use num_rational::BigRational;
 use num_traits::Signed;
 use std::collections::BTreeSet;
+
+/// Two polynomial curves' intersections (as rational curves of unit weights), no work limit.
+fn intersect_polynomial(
+    a: &casteljau::BezierCurve<num_rational::BigRational>,
+    b: &casteljau::BezierCurve<num_rational::BigRational>,
+    domain: Domain,
+) -> casteljau::Result<casteljau::intersect::Intersections> {
+    casteljau::intersect::intersect(&a.clone().into(), &b.clone().into(), domain, &casteljau::work::Budget::unlimited())
+}
+
 // ---------------------------------------------------------------------------------------------
 // The planted-defect set
 

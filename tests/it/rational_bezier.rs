@@ -5,8 +5,8 @@
 use casteljau::num::parse_points;
 use casteljau::proof::Reading;
 use casteljau::rational::Configuration;
+use casteljau::rational::ImplicitOutcome;
 use casteljau::rational::{ConicType, RationalBezier};
-use casteljau::rational::{ImplicitOutcome, prove_implicit};
 use casteljau::{Error, Point, rat, ratio};
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -21,7 +21,7 @@ fn pt(x: BigRational, y: BigRational) -> Point<BigRational> {
     Point::new(vec![x, y])
 }
 fn proved(c: &RationalBezier<BigRational>, f: &str) -> bool {
-    matches!(prove_implicit(c, f).unwrap(), ImplicitOutcome::Proved { .. })
+    matches!(ImplicitOutcome::new(c, f, &casteljau::work::Budget::unlimited()).unwrap(), ImplicitOutcome::Proved { .. })
 }
 fn params() -> Vec<BigRational> {
     (0..=12).map(|k| ratio(k, 12)).chain([ratio(-3, 2), ratio(7, 5)]).collect()

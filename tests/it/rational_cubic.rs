@@ -2,7 +2,12 @@
 //! projective maps (which can send the double point to infinity) preserve node type and
 //! parameters.
 
-use casteljau::classify::classify_rational;
+use casteljau::classify::RationalClassification;
+
+/// The rational classification of four homogeneous control points.
+fn classify_rational(h: &[casteljau::Point<num_rational::BigRational>]) -> casteljau::Result<RationalClassification> {
+    casteljau::classify::classify_rational(&casteljau::RationalBezier::from_homogeneous(h.to_vec())?)
+}
 use casteljau::classify::{NodeType, classify};
 use casteljau::strategies::{cubic, loop_between};
 use casteljau::{BezierCurve, Point, Scalar, rat};

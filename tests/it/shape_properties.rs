@@ -129,7 +129,12 @@ fn fill_rule() -> impl Strategy<Value = FillRule> {
 /// The operation, or `None` for a documented refusal (a tangential vertex whose order around
 /// it cannot be decided exactly).
 fn run(op: BooleanOp, inputs: &[Shape], fill: FillRule) -> Option<BooleanResult> {
-    match boolean(op, inputs, BooleanOptions { fill, orientation: Orientation::Ccw }) {
+    match boolean(
+        op,
+        inputs,
+        BooleanOptions { fill, orientation: Orientation::Ccw },
+        &casteljau::work::Budget::unlimited(),
+    ) {
         Ok(r) => Some(r),
         Err(e) if e.to_string().contains("tangentially") => {
             eprintln!("skipped, refused: {e}");
@@ -594,7 +599,7 @@ proptest! {
     #[test]
     fn arrangement_faces_and_euler(a in shape(), b in shape(), qs in points(5)) {
         let (sa, sb) = (to_shape(&a), to_shape(&b));
-        let arr = Arrangement::new(&[sa.clone(), sb.clone()]).unwrap();
+        let arr = Arrangement::new(&[sa.clone(), sb.clone()], &casteljau::work::Budget::unlimited()).unwrap();
         let faces = match arr.faces() {
             Ok(f) => f,
             Err(e) if is_tangential(&e) => return Ok(()),
@@ -669,7 +674,7 @@ fn area_identities_of(a: &Sh, b: &Sh, fill: FillRule) -> std::result::Result<(),
 /// Simplify of `A op B` for the minimal cases below.
 fn simplify_of(op: BooleanOp, ds: &[&str]) -> casteljau::Result<BooleanResult> {
     let shapes: Vec<Shape> = ds.iter().map(|d| d.parse().unwrap()).collect();
-    boolean(op, &shapes, BooleanOptions::default())
+    boolean(op, &shapes, BooleanOptions::default(), &casteljau::work::Budget::unlimited())
 }
 
 /// Found by `membership_on_a_coarse_grid` (shrunk twice, to the first two inputs). A line

@@ -15,7 +15,7 @@ fn shape(d: &str) -> Shape {
 
 fn run(op: BooleanOp, inputs: &[&str], fill: FillRule) -> BooleanResult {
     let shapes: Vec<Shape> = inputs.iter().map(|d| shape(d)).collect();
-    boolean(op, &shapes, BooleanOptions { fill, orientation: Orientation::Ccw })
+    boolean(op, &shapes, BooleanOptions { fill, orientation: Orientation::Ccw }, &casteljau::work::Budget::unlimited())
         .unwrap_or_else(|e| panic!("{inputs:?}: {e}"))
 }
 
@@ -99,17 +99,23 @@ fn circle(cx: i64, cy: i64, r: i64) -> Shape {
 fn tangent_circles_touch_at_one_point() {
     let (a, b) = (circle(0, 0, 1), circle(2, 0, 1));
     let o = BooleanOptions::default();
-    let u = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o).unwrap();
+    let u = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o, &casteljau::work::Budget::unlimited()).unwrap();
     assert_eq!(u.contours, 2);
     assert!(u.area.is_none(), "a disc's area is not rational");
     assert!((u.area_float - 2.0 * std::f64::consts::PI).abs() < 1e-9, "{}", u.area_float);
-    assert_eq!(boolean(BooleanOp::Intersection, &[a.clone(), b.clone()], o).unwrap().contours, 0);
+    assert_eq!(
+        boolean(BooleanOp::Intersection, &[a.clone(), b.clone()], o, &casteljau::work::Budget::unlimited())
+            .unwrap()
+            .contours,
+        0
+    );
     // internally tangent: a circle of radius 2 around (1, 0) touches the unit circle at (-1, 0)
     let big = circle(1, 0, 2);
-    let d = boolean(BooleanOp::Difference, &[big.clone(), a.clone()], o).unwrap();
+    let d =
+        boolean(BooleanOp::Difference, &[big.clone(), a.clone()], o, &casteljau::work::Budget::unlimited()).unwrap();
     assert_eq!(d.contours, 1, "the crescent is one contour through the tangency");
     assert!((d.area_float - 3.0 * std::f64::consts::PI).abs() < 1e-9);
-    let arr = Arrangement::new(&[big, a]).unwrap();
+    let arr = Arrangement::new(&[big, a], &casteljau::work::Budget::unlimited()).unwrap();
     let v = arr.vertices().iter().position(|v| v.point_float == [-1.0, 0.0]).expect("a vertex at (-1, 0)");
     assert_eq!(arr.locate(&p(rat(-1), rat(0))).unwrap(), Location::Vertex { vertex: v });
 }
@@ -128,7 +134,7 @@ fn a_curve_overlapping_part_of_another() {
     assert_eq!(ua, aa, "B lies inside A");
     assert_eq!(ia, ba);
     // the arrangement merges the shared arc: one edge carrying a piece of each input
-    let arr = Arrangement::new(&[shape(a), shape(b)]).unwrap();
+    let arr = Arrangement::new(&[shape(a), shape(b)], &casteljau::work::Budget::unlimited()).unwrap();
     let shared: Vec<_> = arr.edges().into_iter().filter(|e| e.pieces.len() == 2).collect();
     assert_eq!(shared.len(), 1);
     assert_eq!((shared[0].pieces[0].to.to_string(), shared[0].pieces[1].to.to_string()), ("1/2".into(), "1".into()));
@@ -149,7 +155,7 @@ fn three_curves_through_one_point() {
     // three lines through (1, 1) in three triangles
     let tris = ["M0 0 L2 2 L2 0 Z", "M0 2 L2 0 L0 0 Z", "M1 0 L1 2 L0 2 Z"];
     let shapes: Vec<Shape> = tris.iter().map(|d| shape(d)).collect();
-    let arr = Arrangement::new(&shapes).unwrap();
+    let arr = Arrangement::new(&shapes, &casteljau::work::Budget::unlimited()).unwrap();
     let center = arr.vertices().into_iter().find(|v| v.point_float == [1.0, 1.0]).expect("a vertex at (1, 1)");
     assert_eq!(center.degree, 6);
     let faces = arr.faces().unwrap();
@@ -188,7 +194,8 @@ fn nested_holes_by_orientation_and_rule() {
     assert_eq!(area(&r), rat(13));
     // clockwise output
     let o = BooleanOptions { fill: FillRule::NonZero, orientation: Orientation::Cw };
-    let c = boolean(BooleanOp::Simplify, &[shape(&format!("{outer} {cw}"))], o).unwrap();
+    let c = boolean(BooleanOp::Simplify, &[shape(&format!("{outer} {cw}"))], o, &casteljau::work::Budget::unlimited())
+        .unwrap();
     assert_eq!(c.orientation, vec![Orientation::Cw, Orientation::Ccw]);
     assert_eq!(area(&c), rat(-12));
 }
@@ -236,7 +243,7 @@ proptest! {
         let (Some(sa), Some(sb)) = (to_shape(&a), to_shape(&b)) else { return Ok(()) };
         let fill = if even { FillRule::EvenOdd } else { FillRule::NonZero };
         for op in [BooleanOp::Union, BooleanOp::Intersection, BooleanOp::Difference, BooleanOp::Xor] {
-            let r = boolean(op, &[sa.clone(), sb.clone()], BooleanOptions { fill, orientation: Orientation::Ccw }).unwrap();
+            let r = boolean(op, &[sa.clone(), sb.clone()], BooleanOptions { fill, orientation: Orientation::Ccw }, &casteljau::work::Budget::unlimited()).unwrap();
             for &(x, y) in &qs {
                 let q = p(ratio(x, 2) + ratio(1, 7), ratio(y, 2) + ratio(1, 11));
                 let (Some(ia), Some(ib)) = (inside(sa.path(), &q, fill), inside(sb.path(), &q, fill)) else { continue };
@@ -246,7 +253,7 @@ proptest! {
         }
         // area(A ∪ B) + area(A ∩ B) = area(A) + area(B), exactly
         let o = BooleanOptions { fill, orientation: Orientation::Ccw };
-        let ar = |op, s: &[Shape]| boolean(op, s, o).unwrap().area.unwrap();
+        let ar = |op, s: &[Shape]| boolean(op, s, o, &casteljau::work::Budget::unlimited()).unwrap().area.unwrap();
         let both = [sa.clone(), sb.clone()];
         prop_assert_eq!(ar(BooleanOp::Union, &both) + ar(BooleanOp::Intersection, &both),
             ar(BooleanOp::Simplify, std::slice::from_ref(&sa)) + ar(BooleanOp::Simplify, std::slice::from_ref(&sb)));
@@ -256,7 +263,7 @@ proptest! {
     #[test]
     fn face_windings_match_winding_at_a_point(a in polygon(), b in polygon(), qs in prop::collection::vec((-9i64..=9, -9i64..=9), 12)) {
         let (Some(sa), Some(sb)) = (to_shape(&a), to_shape(&b)) else { return Ok(()) };
-        let arr = Arrangement::new(&[sa.clone(), sb.clone()]).unwrap();
+        let arr = Arrangement::new(&[sa.clone(), sb.clone()], &casteljau::work::Budget::unlimited()).unwrap();
         for &(x, y) in &qs {
             let q = p(ratio(x, 2) + ratio(1, 7), ratio(y, 2) + ratio(1, 11));
             if let Location::Face { winding, .. } = arr.locate(&q).unwrap() {
@@ -275,7 +282,7 @@ fn the_oracle_accepts_a_right_float_answer_and_catches_wrong_ones() {
     use casteljau::work::Budget;
     let (a, b) = (shape("M0 0 H2 V2 H0 Z"), shape("M1 1 H3 V3 H1 Z"));
     let o = BooleanOptions::default();
-    let exact = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o).unwrap();
+    let exact = boolean(BooleanOp::Union, &[a.clone(), b.clone()], o, &casteljau::work::Budget::unlimited()).unwrap();
     let tol = ratio(1, 1000);
     let check = |d: &str| {
         check_against(BooleanOp::Union, &[a.clone(), b.clone()], o, &exact, &shape(d), &tol, &Budget::unlimited())

@@ -3,7 +3,7 @@
 //! Cox–de Boor evaluation and the seed's scale-ratio route.
 
 use casteljau::num::Point;
-use casteljau::rational::{ImplicitOutcome, prove_implicit};
+use casteljau::rational::ImplicitOutcome;
 use casteljau::spline::{Conversion, RationalSpline};
 use casteljau::{Scalar, rat, ratio};
 use num_rational::BigRational;
@@ -74,7 +74,7 @@ fn knots_circle_from_rational_arcs_has_four_segments_on_the_unit_circle() {
     let segs = c.bezier_segments().unwrap();
     assert_eq!(segs.len(), 4);
     for s in &segs {
-        match prove_implicit(s, "x^2 + y^2 - 1").unwrap() {
+        match ImplicitOutcome::new(s, "x^2 + y^2 - 1", &casteljau::work::Budget::unlimited()).unwrap() {
             ImplicitOutcome::Proved { .. } => {}
             other => panic!("{other:?}"),
         }
@@ -335,8 +335,10 @@ fn spline_check_falls_back_to_big_rationals_on_overflow_with_the_same_verdict() 
     let scaled: Vec<Point<BigRational>> =
         pts.iter().enumerate().map(|(i, p)| p.scale(&(big.clone() + rat(i as i64)))).collect();
     let budget = casteljau::work::Budget::unlimited();
-    let small = RationalSpline::from_knots(3, pts, &knots).unwrap().check_within(&budget).unwrap();
-    let large = RationalSpline::from_knots(3, scaled, &knots).unwrap().check_within(&budget).unwrap();
+    let small =
+        casteljau::spline::SplineCheck::new(&RationalSpline::from_knots(3, pts, &knots).unwrap(), &budget).unwrap();
+    let large =
+        casteljau::spline::SplineCheck::new(&RationalSpline::from_knots(3, scaled, &knots).unwrap(), &budget).unwrap();
     assert!(small.passed && large.passed);
     assert_eq!(small.boehm, Ok(14));
     assert_eq!(large.boehm, small.boehm);

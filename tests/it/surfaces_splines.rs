@@ -247,7 +247,7 @@ fn surface_eval_checked_agrees_with_every_route_small_and_large() {
         ];
         let patch = RationalPatch::new(rows, w).unwrap();
         let (u, v) = (casteljau::ratio(2, 7), casteljau::ratio(5, 9));
-        let c = patch.eval_checked(&u, &v).unwrap();
+        let c = patch.eval_checked(&u, &v, &casteljau::work::Budget::unlimited()).unwrap();
         assert_eq!(c.point, patch.eval(&u, &v).unwrap());
         assert_eq!(c.point, patch.eval_u_then_v(&u, &v).unwrap());
         assert!(c.de_casteljau_u_then_v_and_v_then_u_agree);

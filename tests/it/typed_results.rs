@@ -3,8 +3,11 @@
 //! the JSON the command line prints, and refuses over budget before any work.
 
 use casteljau::classify::{Classified, ClassifyOptions};
+use casteljau::curve::{
+    DegreeReduction, Derivative, Elevation, Evaluation, PowerForm, RepeatedSubdivision, Scheme, Subdivision,
+};
 use casteljau::num::parse_points;
-use casteljau::rational::ParameterInterval;
+use casteljau::rational::{Definedness, ParameterInterval, RationalElevation, RationalEvaluation, RationalSubdivision};
 use casteljau::surface::ParameterAxis;
 use casteljau::surface::RationalPatch;
 use casteljau::work::Budget;
@@ -18,7 +21,7 @@ fn curve(text: &str) -> BezierCurve<num_rational::BigRational> {
 fn typed_results_eval_agrees_with_de_casteljau_and_bernstein() {
     let c = curve("-1 -1, -1/3 1, 1/3 -1, 1 1");
     let ts = [rat(0), ratio(1, 3), ratio(-2, 7), ratio(5, 4), rat(1)];
-    let e = c.eval_within(&ts, &Budget::unlimited()).unwrap();
+    let e = Evaluation::new(&c, &ts, &Budget::unlimited()).unwrap();
     for (v, t) in e.values.iter().zip(&ts) {
         assert_eq!(v.t, *t);
         assert_eq!(v.point, c.eval(t));
@@ -29,7 +32,7 @@ fn typed_results_eval_agrees_with_de_casteljau_and_bernstein() {
 #[test]
 fn typed_results_subdivision_agrees_with_generic_de_casteljau() {
     let c = curve("0 1, 1 3, 2 4, 4 2");
-    let s = c.subdivide_within(&ratio(2, 5), &Budget::unlimited()).unwrap();
+    let s = Subdivision::new(&c, &ratio(2, 5), &Budget::unlimited()).unwrap();
     assert_eq!((s.left, s.right), c.subdivide(&ratio(2, 5)));
 }
 
@@ -39,25 +42,25 @@ fn typed_results_serialize_as_the_command_line_prints() {
     let b = Budget::unlimited();
     let json = |v: serde_json::Value| v.to_string();
     assert_eq!(
-        json(serde_json::to_value(c.eval_within(&[ratio(1, 2)], &b).unwrap()).unwrap()),
+        json(serde_json::to_value(Evaluation::new(&c, &[ratio(1, 2)], &b).unwrap()).unwrap()),
         r#"{"degree":3,"values":[{"point":["1","1/2"],"t":"1/2"}]}"#
     );
     assert_eq!(
-        json(serde_json::to_value(c.reduce_degree_within(&b).unwrap()).unwrap()),
+        json(serde_json::to_value(DegreeReduction::new(&c, &b).unwrap()).unwrap()),
         r#"{"degree":3,"points":[["0","0"],["1","1"],["2","0"]],"real_degree":2}"#
     );
     assert_eq!(
-        json(serde_json::to_value(c.derivative_within(3, &b).unwrap()).unwrap()),
+        json(serde_json::to_value(Derivative::new(&c, 3, &b).unwrap()).unwrap()),
         r#"{"degree":0,"order":3,"points":[["0","0"]]}"#
     );
-    let p = curve("0 0, 1 1").power_form_within(&b).unwrap();
+    let p = PowerForm::new(&curve("0 0, 1 1"), &b).unwrap();
     assert_eq!(
         serde_json::to_string(&p).unwrap(),
         r#"{"degree":1,"coefficients":[["0","0"],["1","1"]],"matrix":[["1","0"],["-1","1"]]}"#
     );
     let w =
         RationalBezier::new(parse_points("0 0, 1 1, 2 0", 2, None).unwrap(), vec![rat(1), rat(-1), rat(1)]).unwrap();
-    let d = w.defined_within(&ParameterInterval::unit(), &b).unwrap();
+    let d = Definedness::new(&w, &ParameterInterval::unit(), &b).unwrap();
     assert_eq!(serde_json::to_string(&d).unwrap(), r#"{"interval":["0","1"],"defined":false,"roots":["t = 1/2"]}"#);
     assert_eq!(serde_json::to_string(&w.conic().unwrap()).unwrap(), r#"{"conic":"parabola","shape_factor":"1"}"#);
 }
@@ -65,7 +68,7 @@ fn typed_results_serialize_as_the_command_line_prints() {
 #[test]
 fn typed_results_power_form_omits_the_matrix_above_degree_30() {
     let pts: String = (0..=31).map(|k| format!("{k} {}", k * k)).collect::<Vec<_>>().join(", ");
-    let p = curve(&pts).power_form_within(&Budget::unlimited()).unwrap();
+    let p = PowerForm::new(&curve(&pts), &Budget::unlimited()).unwrap();
     assert!(p.matrix.is_none());
     assert!(!serde_json::to_string(&p).unwrap().contains("matrix"));
 }
@@ -77,18 +80,18 @@ fn typed_results_budget_refuses_before_any_work() {
     let tight = Budget::new(10.0, "--max-work");
     let t = ratio(1, 3);
     let refused = |r: Result<(), Error>| matches!(r, Err(Error::WorkLimit { .. }));
-    assert!(refused(c.eval_within(std::slice::from_ref(&t), &tight).map(drop)));
-    assert!(refused(c.subdivide_within(&t, &tight).map(drop)));
-    assert!(refused(c.subdivide_repeatedly_within(&t, 3, &tight).map(drop)));
-    assert!(refused(c.elevate_within(2, &tight).map(drop)));
-    assert!(refused(c.power_form_within(&tight).map(drop)));
-    assert!(refused(c.triangle_within(&t, &tight).map(drop)));
-    assert!(refused(c.derivative_within(2, &tight).map(drop)));
-    assert!(refused(c.reduce_degree_within(&tight).map(drop)));
+    assert!(refused(Evaluation::new(&c, std::slice::from_ref(&t), &tight).map(drop)));
+    assert!(refused(Subdivision::new(&c, &t, &tight).map(drop)));
+    assert!(refused(RepeatedSubdivision::new(&c, &t, 3, &tight).map(drop)));
+    assert!(refused(Elevation::new(&c, 2, &tight).map(drop)));
+    assert!(refused(PowerForm::new(&c, &tight).map(drop)));
+    assert!(refused(Scheme::new(&c, &t, &tight).map(drop)));
+    assert!(refused(Derivative::new(&c, 2, &tight).map(drop)));
+    assert!(refused(DegreeReduction::new(&c, &tight).map(drop)));
     let r = RationalBezier::new(c.points().to_vec(), vec![rat(1); c.points().len()]).unwrap();
-    assert!(refused(r.eval_within(std::slice::from_ref(&t), &tight).map(drop)));
-    assert!(refused(r.subdivide_within(&t, &tight).map(drop)));
-    assert!(refused(r.elevate_within(1, &tight).map(drop)));
+    assert!(refused(RationalEvaluation::new(&r, std::slice::from_ref(&t), &tight).map(drop)));
+    assert!(refused(RationalSubdivision::new(&r, &t, &tight).map(drop)));
+    assert!(refused(RationalElevation::new(&r, 1, &tight).map(drop)));
 }
 
 #[test]
@@ -116,7 +119,7 @@ fn classify_routes_write_the_same_json() {
         };
         let c = curve(text);
         let big = casteljau::classify::ClassifyReport {
-            classification: casteljau::classify::classify_in(&c).unwrap(),
+            classification: casteljau::internal::classify_in(&c).unwrap(),
             evidence: None,
             float: None,
         };

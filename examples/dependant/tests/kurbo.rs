@@ -4,7 +4,12 @@
 //! casteljau decides.
 
 use casteljau::oracle::{FloatClassification, Tolerances, check_classification};
-use casteljau::rational::bounding_box_polynomial;
+use casteljau::rational::{BoundingBox, bounding_box};
+
+/// The exact box of a polynomial curve (as a rational one of unit weights), no work limit.
+fn bounding_box_polynomial(c: &casteljau::BezierCurve<num_rational::BigRational>) -> casteljau::Result<BoundingBox> {
+    bounding_box(&c.clone().into(), &casteljau::work::Budget::unlimited())
+}
 use casteljau::{BezierCurve, Point};
 use casteljau_dependant::within;
 use kurbo::{CubicBez, ParamCurveExtrema};

@@ -29,7 +29,7 @@ pub(crate) fn surface(op: SurfaceOp, out: &mut dyn Write) -> i32 {
             let budget = patch.curve.budget();
             run_patch(patch, out, &|p| {
                 let (u, v) = uv.clone()?;
-                p.eval_checked_within(&u, &v, &budget).map(|s| answers::surface_point(&s))
+                p.eval_checked(&u, &v, &budget).map(|s| answers::surface_point(&s))
             })
         }
         SurfaceOp::Subdivide { u, v, patch } => {
@@ -106,7 +106,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
     let code = rational_batch(&rational, curve, &mut sink, |c, w| {
         let opts = opts.clone()?;
-        opts.check_drawable_within(c, &budget)?;
+        opts.check_drawable(c, &budget)?;
         let k = *count.lock().expect("count");
         let color = PALETTE[k % PALETTE.len()];
         match (w, &family) {
@@ -187,8 +187,7 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
         claims
             .par_iter()
             .map(|c| {
-                let steps = casteljau::work::Budget::new(args.max_work, "--max-work").expression_steps();
-                let r = casteljau::proof::expr::with_step_limit(steps, || catalogue::check(c));
+                let r = catalogue::check(c, &casteljau::work::Budget::new(args.max_work, "--max-work"));
                 let k = finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 if progress {
                     eprint!("\r\x1b[K[{k}/{}] {}", claims.len(), c.id);

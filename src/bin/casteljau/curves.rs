@@ -7,10 +7,15 @@ use crate::answers;
 use crate::args::{CurveArgs, Detail, RationalArgs};
 use crate::batch::{batch, batch_lines_with, rational_batch};
 use crate::options::{Weights, option_number_in, rational_curve};
-use casteljau::classify::{ClassifyOptions, classify_rational_curve};
+use casteljau::classify::{ClassifyOptions, classify_rational};
+use casteljau::curve::{
+    DegreeReduction, Derivative, Elevation, Evaluation, PowerForm, RepeatedSubdivision, Scheme, Subdivision,
+};
 use casteljau::error::{Error, Result};
-use casteljau::rational::ParameterInterval;
-use casteljau::rational::bounding_box_within;
+use casteljau::rational::{
+    Definedness, ImplicitOutcome, ParameterInterval, RationalElevation, RationalEvaluation, RationalSubdivision,
+    bounding_box,
+};
 use num_rational::BigRational;
 use std::io::Write;
 
@@ -22,8 +27,8 @@ pub(crate) fn eval(t: &[String], rational: &RationalArgs, curve: CurveArgs, out:
     rational_batch(rational, curve, out, move |c, w| {
         let ts = ts.clone()?;
         match w {
-            Weights::Polynomial => c.eval_within(&ts, &budget).map(|e| answers::eval(&e)),
-            w => rational_curve(c, w)?.eval_within(&ts, &budget).map(|e| answers::eval_rational(&e)),
+            Weights::Polynomial => Evaluation::new(c, &ts, &budget).map(|e| answers::eval(&e)),
+            w => RationalEvaluation::new(&rational_curve(c, w)?, &ts, &budget).map(|e| answers::eval_rational(&e)),
         }
     })
 }
@@ -41,14 +46,16 @@ pub(crate) fn subdivide(
     rational_batch(rational, curve, out, move |c, w| {
         let t = t.clone()?;
         match (w, depth) {
-            (Weights::Polynomial, None) => c.subdivide_within(&t, &budget).map(|s| answers::subdivide(&s)),
+            (Weights::Polynomial, None) => Subdivision::new(c, &t, &budget).map(|s| answers::subdivide(&s)),
             (Weights::Polynomial, Some(depth)) => {
-                c.subdivide_repeatedly_within(&t, depth, &budget).map(|s| answers::subdivide_repeatedly(&s))
+                RepeatedSubdivision::new(c, &t, depth, &budget).map(|s| answers::subdivide_repeatedly(&s))
             }
             (_, Some(d)) if d != 1 => Err(Error::InvalidArgument {
                 message: "--depth is for polynomial curves; rational curves split once".into(),
             }),
-            (w, _) => rational_curve(c, w)?.subdivide_within(&t, &budget).map(|s| answers::subdivide_rational(&s)),
+            (w, _) => {
+                RationalSubdivision::new(&rational_curve(c, w)?, &t, &budget).map(|s| answers::subdivide_rational(&s))
+            }
         }
     })
 }
@@ -57,8 +64,8 @@ pub(crate) fn subdivide(
 pub(crate) fn elevate(by: usize, rational: &RationalArgs, curve: CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
     rational_batch(rational, curve, out, move |c, w| match w {
-        Weights::Polynomial => c.elevate_within(by, &budget).map(|e| answers::curve(&e)),
-        w => rational_curve(c, w)?.elevate_within(by, &budget).map(|e| answers::rational(&e)),
+        Weights::Polynomial => Elevation::new(c, by, &budget).map(|e| answers::curve(&e.curve)),
+        w => RationalElevation::new(&rational_curve(c, w)?, by, &budget).map(|e| answers::rational(&e.curve)),
     })
 }
 
@@ -66,7 +73,7 @@ pub(crate) fn elevate(by: usize, rational: &RationalArgs, curve: CurveArgs, out:
 pub(crate) fn implicit(poly: &str, rational: &RationalArgs, curve: CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
     rational_batch(rational, curve, out, move |c, w| {
-        rational_curve(c, w)?.implicit_within(poly, &budget).map(|o| answers::implicit(&o))
+        ImplicitOutcome::new(&rational_curve(c, w)?, poly, &budget).map(|o| answers::implicit(&o))
     })
 }
 
@@ -81,7 +88,7 @@ pub(crate) fn defined(from: &str, to: &str, rational: &RationalArgs, curve: Curv
     let budget = curve.budget();
     rational_batch(rational, curve, out, move |c, w| {
         let interval = interval.clone()?;
-        rational_curve(c, w)?.defined_within(&interval, &budget).map(|d| answers::defined(&d))
+        Definedness::new(&rational_curve(c, w)?, &interval, &budget).map(|d| answers::defined(&d))
     })
 }
 
@@ -89,7 +96,7 @@ pub(crate) fn defined(from: &str, to: &str, rational: &RationalArgs, curve: Curv
 pub(crate) fn bbox(rational: &RationalArgs, curve: CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
     rational_batch(rational, curve, out, move |c, w| {
-        bounding_box_within(&rational_curve(c, w)?, &budget).map(|b| answers::bbox(&b))
+        bounding_box(&rational_curve(c, w)?, &budget).map(|b| answers::bbox(&b))
     })
 }
 
@@ -101,7 +108,7 @@ pub(crate) fn conic(rational: &RationalArgs, curve: CurveArgs, out: &mut dyn Wri
 /// `power`.
 pub(crate) fn power(curve: &CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
-    batch(curve, out, |c| c.power_form_within(&budget).map(|p| answers::power(&p)))
+    batch(curve, out, |c| PowerForm::new(c, &budget).map(|p| answers::power(&p)))
 }
 
 /// `triangle --t`.
@@ -110,20 +117,20 @@ pub(crate) fn triangle(t: &str, curve: &CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
     batch(curve, out, |c| {
         let t = t.clone()?;
-        c.triangle_within(&t, &budget).map(|s| answers::triangle(&s))
+        Scheme::new(c, &t, &budget).map(|s| answers::triangle(&s))
     })
 }
 
 /// `derivative --order`.
 pub(crate) fn derivative(order: usize, curve: &CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
-    batch(curve, out, |c| c.derivative_within(order, &budget).map(|d| answers::derivative(&d)))
+    batch(curve, out, |c| Derivative::new(c, order, &budget).map(|d| answers::derivative(&d)))
 }
 
 /// `reduce`.
 pub(crate) fn reduce(curve: &CurveArgs, out: &mut dyn Write) -> i32 {
     let budget = curve.budget();
-    batch(curve, out, |c| c.reduce_degree_within(&budget).map(|r| answers::reduce(&r)))
+    batch(curve, out, |c| DegreeReduction::new(c, &budget).map(|r| answers::reduce(&r)))
 }
 
 /// `classify`: polynomial curves by the route [`ClassifyOptions`] chooses (JSON straight from
@@ -137,7 +144,7 @@ pub(crate) fn classify(
 ) -> i32 {
     if rational.weights.is_some() || rational.homogeneous {
         return rational_batch(rational, curve, out, move |c, w| {
-            classify_rational_curve(&rational_curve(c, w)?).map(|k| answers::classified_rational(&k))
+            classify_rational(&rational_curve(c, w)?).map(|k| answers::classified_rational(&k))
         });
     }
     let options =

@@ -27,7 +27,7 @@ use casteljau::num::NumberMode;
 use casteljau::oracle::Agreement;
 use casteljau::oracle::check_against;
 use casteljau::path::FillRule;
-use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Orientation, Shape, boolean_within};
+use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Orientation, Shape, boolean};
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -372,7 +372,7 @@ fn glyph(ctx: &Context<'_>, font: &Font<'_>, file: &str, face: Option<u32>, gid:
     let answer = || -> Result<(usize, BooleanResult, bool, Option<Judged>)> {
         let shape = font.shape(gid)?;
         let before = shape.path().contours().len();
-        let r = boolean_within(op, std::slice::from_ref(&shape), options, &ctx.budget)?;
+        let r = boolean(op, std::slice::from_ref(&shape), options, &ctx.budget)?;
         let changed = r.changes(&shape);
         let judged = match ctx.against.map(|a| a.get(file, gid, name.as_deref())) {
             None => None,

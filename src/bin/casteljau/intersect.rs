@@ -6,7 +6,7 @@ use crate::args::IntersectArgs;
 use crate::batch::{Answer, Json, batch_lines, numbers_in};
 use casteljau::error::{Error, Result};
 use casteljau::format::fill_path;
-use casteljau::intersect::{Domain, Intersections, intersect, intersect_within, self_intersect, self_intersect_within};
+use casteljau::intersect::{Domain, Intersections, intersect, self_intersect};
 use casteljau::num::rat;
 use casteljau::num::{NumberMode, parse_points_in};
 use casteljau::path::{ClosedPath, FillRule, PathWinding};
@@ -92,12 +92,12 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
     let json_out = args.batch.json;
     batch_lines(&curve_args, out, |line, text_line| {
         let r = if self_mode {
-            self_intersect_within(&curve(text_line, line, mode, &wa)?, domain, &budget)?
+            self_intersect(&curve(text_line, line, mode, &wa)?, domain, &budget)?
         } else {
             let (a, b) = text_line
                 .split_once(';')
                 .ok_or_else(|| Error::InvalidArgument { message: "a pair of curves is written \"A ; B\"".into() })?;
-            intersect_within(&curve(a, line, mode, &wa)?, &curve(b, line, mode, &wb)?, domain, &budget)?
+            intersect(&curve(a, line, mode, &wa)?, &curve(b, line, mode, &wb)?, domain, &budget)?
         };
         // only the output asked for is rendered (an algebraic number's spelling has a cost)
         Ok(if json_out {
@@ -180,8 +180,8 @@ fn plot(
         (curve(x, None, mode, wa)?, Some(curve(y, None, mode, wb)?))
     };
     let r = match &b {
-        Some(b) => intersect(&a, b, domain)?,
-        None => self_intersect(&a, domain)?,
+        Some(b) => intersect(&a, b, domain, &casteljau::work::Budget::unlimited())?,
+        None => self_intersect(&a, domain, &casteljau::work::Budget::unlimited())?,
     };
     let mut fig = Figure::new().title(if self_mode { "self-intersections" } else { "intersections" });
     draw_rational(&mut fig, &a, "#1f5fbf", false);

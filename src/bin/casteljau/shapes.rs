@@ -16,8 +16,7 @@ use casteljau::format::{fill_path, fill_svg};
 use casteljau::num::{NumberMode, Point2, parse_points_in};
 use casteljau::oracle::check_against;
 use casteljau::shape::{
-    Arrangement, BooleanOp, BooleanOptions, BooleanResult, Edge, Face, InputPiece, Location, Orientation, Shape,
-    Vertex, boolean_within,
+    Arrangement, BooleanOp, BooleanOptions, BooleanResult, Edge, Face, InputPiece, Location, Orientation, Shape, Vertex,
 };
 use casteljau::work::Budget;
 use num_rational::BigRational;
@@ -205,7 +204,7 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
             }));
         }
         let shapes = parts.iter().map(|p| operand(p, mode)).collect::<Result<Vec<_>>>()?;
-        let result = boolean_within(op, &shapes, options, &budget)?;
+        let result = casteljau::shape::boolean(op, &shapes, options, &budget)?;
         let verdict = match against.shape(line, mode)? {
             Some(found) => Some(check_against(op, &shapes, options, &result, &found, &tol, &budget)?),
             None => None,
@@ -264,7 +263,7 @@ fn plot(shapes: &[Shape], result: &BooleanResult, budget: &Budget, path: &std::p
         }
         fig.polyline(c, "#d55e00", 2.0, false);
     }
-    let arr = Arrangement::new_within(shapes, budget)?;
+    let arr = Arrangement::new(shapes, budget)?;
     for v in arr.vertices() {
         fig.dot((v.point_float[0], v.point_float[1]), 3.0, "#000000");
     }
@@ -317,7 +316,7 @@ fn run_arrange(args: &ArrangeArgs, out: &mut dyn Write) -> Result<()> {
         })
         .collect::<Result<Vec<_>>>()?;
     let shapes = args.shapes.iter().map(|s| operand(s, mode)).collect::<Result<Vec<_>>>()?;
-    let arr = Arrangement::new_within(&shapes, &Budget::new(args.max_work, "--max-work"))?;
+    let arr = Arrangement::new(&shapes, &Budget::new(args.max_work, "--max-work"))?;
     let faces = arr.faces()?;
     let locations = points.iter().map(|q| arr.locate(q)).collect::<Result<Vec<_>>>()?;
     let (vertices, edges) = (arr.vertices(), arr.edges());

@@ -7,8 +7,10 @@ use crate::batch::{Answer, Json, batch_lines, numbers, option_number, parse_weig
 use casteljau::error::{Error, Position, Result};
 use casteljau::num::Point;
 use casteljau::num::{parse_number, parse_points};
-use casteljau::spline::NurbsSurface;
-use casteljau::spline::{RationalSpline, homogeneous_control_points, joins_text};
+use casteljau::spline::{
+    BezierConversion, NurbsSurface, RationalSpline, SplineCheck, SplineValues, SurfaceExtraction,
+    homogeneous_control_points, joins_text,
+};
 use casteljau::work::Budget;
 use num_rational::BigRational;
 use serde::Deserialize;
@@ -132,7 +134,7 @@ fn spline_text(sp: &RationalSpline) -> String {
 }
 
 fn to_bezier(sp: &RationalSpline, method: Method, budget: &Budget) -> Result<Answer> {
-    let r = sp.bezier_conversion_within(method.into(), budget)?;
+    let r = BezierConversion::new(sp, method.into(), budget)?;
     let mut lines: Vec<String> =
         r.segments.iter().map(|s| format!("[{}, {}]: {}", s.span.0, s.span.1, weighted_text(&s.curve))).collect();
     if !r.joins.is_empty() {
@@ -142,12 +144,12 @@ fn to_bezier(sp: &RationalSpline, method: Method, budget: &Budget) -> Result<Ans
 }
 
 fn check(sp: &RationalSpline, budget: &Budget) -> Result<Answer> {
-    let r = sp.check_within(budget)?;
+    let r = SplineCheck::new(sp, budget)?;
     Ok(Answer { text: r.report.join("\n"), json: json_of(&r), failed: !r.passed })
 }
 
 fn eval(sp: &RationalSpline, us: &[BigRational], budget: &Budget) -> Result<Answer> {
-    let r = sp.eval_many_within(us, budget)?;
+    let r = SplineValues::new(sp, us, budget)?;
     let text = r.values.iter().map(|v| format!("C({}) = {}", v.u, v.point)).collect::<Vec<_>>().join("\n");
     Ok(Answer { text, json: json_of(&r), failed: false })
 }
@@ -251,7 +253,7 @@ pub(crate) fn run(op: SplineOp, out: &mut dyn Write) -> i32 {
 }
 
 fn surface(s: &NurbsSurface, budget: &Budget) -> Result<Answer> {
-    let r = s.extraction_within(budget)?;
+    let r = SurfaceExtraction::new(s, budget)?;
     let mut lines: Vec<String> = r
         .patches
         .iter()

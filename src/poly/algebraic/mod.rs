@@ -377,7 +377,7 @@ impl RealAlgebraic {
 
     /// A lower bound for the degree of the number over `Q` (the degree of its minimal
     /// polynomial): `1` for a rational, at least `2` for a root (which is irrational), more when
-    /// [`crate::poly::min_factor_degree`] proves that its polynomial has no factor of
+    /// reductions modulo primes prove that its polynomial has no factor of
     /// smaller degree. Stops looking once the bound reaches `enough`.
     ///
     /// # Example
