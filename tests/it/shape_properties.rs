@@ -644,10 +644,10 @@ proptest! {
     }
 }
 
-/// 5. `area(A ∪ B) + area(A ∩ B) = area(A) + area(B)`, `area(A − B) + area(A ∩ B) = area(A)`
-/// and `area(A △ B) = area(A ∪ B) − area(A ∩ B)`, from the union `u`, intersection `i`,
-/// difference `d`, xor `x` and simplified inputs `aa`, `bb`: exactly when all the areas involved
-/// are rational, else in floats (1e-9 relative).
+/// Property 5: `area(A ∪ B) + area(A ∩ B) = area(A) + area(B)`,
+/// `area(A − B) + area(A ∩ B) = area(A)` and `area(A △ B) = area(A ∪ B) − area(A ∩ B)`, from the
+/// union `u`, intersection `i`, difference `d`, xor `x` and simplified inputs `aa`, `bb`: exactly
+/// when all the areas involved are rational, else in floats (1e-9 relative).
 fn area_identities_of(
     u: &BooleanResult,
     i: &BooleanResult,
