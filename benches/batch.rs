@@ -6,7 +6,7 @@
 //! cubics (|coordinates| ≤ 2048, a tenth with a cusp at t = 0), 4,096 cubics with small
 //! rational coordinates, and 31 copies of the first (1,015,808 lines, command line only).
 //! Also `spline check` on 20,000 degree-1 lines (in process and the command line).
-//! `cargo bench --bench batch` (`-- spline_check` for that group only).
+//! `cargo bench -p casteljau-bench --bench batch` (`-- spline_check` for that group only).
 
 use casteljau::BezierCurve;
 use casteljau::classify::classify;
@@ -73,7 +73,7 @@ fn write_input(name: &str, text: &str) -> PathBuf {
 
 /// The command line, output discarded.
 fn cli(path: &PathBuf, threads: usize) {
-    let status = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+    let status = Command::new(env!("CARGO_BIN_EXE_casteljau-cli"))
         .args(["classify", "--json", "--input"])
         .arg(path)
         .args(["--threads", &threads.to_string()])
@@ -329,7 +329,7 @@ fn font_lines(n: usize) -> String {
 
 /// `spline check` on degree-1 lines, in process (parse → spline → check → JSON) and by the
 /// command line on one thread: the lines/s of the spline batch route. Bounded: 20,000 lines,
-/// ten samples. `cargo bench --bench batch -- spline_check`.
+/// ten samples. `cargo bench -p casteljau-bench --bench batch -- spline_check`.
 fn spline_check(c: &mut Criterion) {
     use casteljau::spline::{RationalSpline, homogeneous_control_points};
     use casteljau::work::Budget;
@@ -364,7 +364,7 @@ fn spline_check(c: &mut Criterion) {
     });
     g.bench_function("cli_1_thread", |b| {
         b.iter(|| {
-            let status = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+            let status = Command::new(env!("CARGO_BIN_EXE_casteljau-cli"))
                 .args(["spline", "check", "--degree", "1", "--knots", "0 0 1 1", "--json", "--threads", "1", "--input"])
                 .arg(&path)
                 .stdout(Stdio::null())

@@ -2,7 +2,7 @@
 //! classifier, the exact class-and-features path (unchecked i128 under a proved bound → checked
 //! i128 → BigInt), the certified f64 filter, the full classification (every exact field) on the fixed-width route, the library's
 //! `classify` (fixed-width route, answer converted to `BigRational`) and the full classification in
-//! `BigRational` throughout, in one run. `cargo bench --bench classify`.
+//! `BigRational` throughout, in one run. `cargo bench -p casteljau-bench --bench classify`.
 
 use casteljau::classify::classify;
 use casteljau::internal::classify_in;

@@ -5,7 +5,7 @@
 //! pair on its own and prints the median per pair of both routes and their ratio (the issue's
 //! target is stated for the median); `command_line` times `casteljau intersect --json -i FILE`
 //! end to end on 1,024 such pairs (eight times the 128), on 1 and 2 threads.
-//! `cargo bench --bench intersect`.
+//! `cargo bench -p casteljau-bench --bench intersect`.
 
 use casteljau::BezierCurve;
 use casteljau::intersect::{Domain, Intersections};
@@ -187,7 +187,7 @@ fn command_line(c: &mut Criterion) {
     for threads in [1, 2] {
         g.bench_function(format!("cli_1024_pairs_{threads}_thread"), |bn| {
             bn.iter(|| {
-                let status = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau"))
+                let status = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau-cli"))
                     .args(["intersect", "--json", "-i"])
                     .arg(&path)
                     .args(["--threads", &threads.to_string()])

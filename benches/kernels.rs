@@ -1,6 +1,6 @@
 //! Exact-kernel benchmarks: f64, naive BigRational and fraction-free de Casteljau in one run.
 //!
-//! `cargo bench --bench kernels`; README's table is read from this run's output.
+//! `cargo bench -p casteljau-bench --bench kernels`; README's table is read from this run's output.
 
 use casteljau::internal::{eval_de_casteljau, subdivide_de_casteljau};
 use casteljau::{BezierCurve, Point, Scalar, ratio};

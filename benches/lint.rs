@@ -3,8 +3,8 @@
 //! library's `casteljau::lint::lint` in process on one thread, with every kind, with the segment
 //! and node kinds only, and with the arrangement kinds only; and, in the same run, a float
 //! heuristic of the kind font QA tools use (kurbo: the extrema of each segment and the turn at
-//! each node in `f64`), for the ratio. `cargo bench --bench lint` (skipped with a message when
-//! the font is absent; another font: `CASTELJAU_BENCH_FONT=PATH`).
+//! each node in `f64`), for the ratio. `cargo bench -p casteljau-bench --bench lint` (skipped with
+//! a message when the font is absent; another font: `CASTELJAU_BENCH_FONT=PATH`).
 
 use casteljau::format::{Font, Segment};
 use casteljau::lint::{Glyph, Kind, LintOptions, lint};
@@ -113,7 +113,7 @@ fn lint_font(c: &mut Criterion) {
     g.warm_up_time(Duration::from_secs(1));
     g.measurement_time(Duration::from_secs(30));
     let cli = |threads: &str| {
-        let st = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau"))
+        let st = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau-cli"))
             .args(["lint", &path, "--json", "--quiet", "--deny", "none", "--threads", threads])
             .stdout(std::process::Stdio::null())
             .stderr(std::process::Stdio::null())

@@ -1,14 +1,14 @@
 //! Overlap removal ("simplify", non-zero) of every glyph of DejaVu Sans, single-threaded, by the
 //! float peers of `casteljau boolean`: linesweeper and flo_curves (the calls of
-//! `examples/peers/mod.rs`, as in `examples/path_ops_peers.rs`; a glyph on which a peer panics
-//! counts its time up to the panic), and the exact `casteljau::shape::boolean` simplify in the
-//! same run: in process on one thread and on two (the glyphs dealt to two scoped threads), and
-//! end to end through the command line (`casteljau boolean simplify FONT --json` on all cores,
-//! output discarded).
-//! `cargo bench --bench shapes_peers` (skipped with a message when the font is absent; another
-//! font: `CASTELJAU_BENCH_FONT=PATH`).
+//! `benches/examples/peers/mod.rs`, as in `benches/examples/path_ops_peers.rs`; a glyph on which a
+//! peer panics counts its time up to the panic), and the exact `casteljau::shape::boolean`
+//! simplify in the same run: in process on one thread and on two (the glyphs dealt to two scoped
+//! threads), and end to end through the command line (`casteljau boolean simplify FONT --json` on
+//! all cores, output discarded).
+//! `cargo bench -p casteljau-bench --bench shapes_peers` (skipped with a message when the font is
+//! absent; another font: `CASTELJAU_BENCH_FONT=PATH`).
 
-#[path = "../examples/peers/mod.rs"]
+#[path = "examples/peers/mod.rs"]
 mod peers;
 
 use casteljau::format::Font;
@@ -61,7 +61,7 @@ fn simplify_font(c: &mut Criterion) {
     });
     g.bench_function("casteljau_cli_all_cores", |b| {
         b.iter(|| {
-            let st = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau"))
+            let st = std::process::Command::new(env!("CARGO_BIN_EXE_casteljau-cli"))
                 .args(["boolean", "simplify", &path, "--json", "--quiet"])
                 .stdout(std::process::Stdio::null())
                 .stderr(std::process::Stdio::null())

@@ -1,4 +1,4 @@
-//! The float peers of `casteljau boolean`, shared by `examples/path_ops_peers.rs` and
+//! The float peers of `casteljau boolean`, shared by `benches/examples/path_ops_peers.rs` and
 //! `benches/shapes_peers.rs`: linesweeper (`binary_op` on kurbo `BezPath`s, with a fill rule) and
 //! flo_curves (`path_remove_overlapped_points`, `path_add`, `path_sub`, `path_intersect` on
 //! `SimpleBezierPath`s; even-odd only, see [`flo_simplify_raw`]).

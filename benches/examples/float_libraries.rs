@@ -5,9 +5,9 @@
 //! every cubic of the CFF test fonts. Prints the disagreement table and one minimal example per
 //! (library, field, kind).
 //!
-//! `cargo run --release --example float_libraries -- [cases per family, default 2000]` (the
-//! intersection table at the end uses a tenth as many cases per family: exact intersection is
-//! slower).
+//! `cargo run -p casteljau-bench --release --example float_libraries -- [cases per family,
+//! default 2000]` (the intersection table at the end uses a tenth as many cases per family: exact
+//! intersection is slower).
 //!
 //! Settings, stated, not tuned: oracle tolerance `1e-6` in `t` (`--tol` of `casteljau check`),
 //! flo_curves' loop-search accuracy `1e-9`. Cases come from a fixed proptest seed.
@@ -69,7 +69,7 @@ fn families() -> Vec<(&'static str, BoxedStrategy<Curve>)> {
 fn font_cubics() -> Vec<Vec<[f64; 2]>> {
     let mut out = vec![];
     for name in ["cantarell_vf_trimmed.ttf", "NotoSansJP-Regular.subset.otf"] {
-        let data = std::fs::read(format!("{}/tests/data/fonts/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let data = std::fs::read(format!("{}/../tests/data/fonts/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let f = Font::open(&data, 0).unwrap();
         for gid in 0..f.num_glyphs() {
             for c in f.outline(gid).unwrap() {
