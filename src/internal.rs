@@ -7,12 +7,17 @@ pub use crate::classify::certified::{
     Certified, SMALL_INT_LIMIT, SignRing, SmallInt, Summary, decide, filter_f64, summarize, summarize_f64,
     summarize_integers,
 };
-pub use crate::classify::classify_in;
 pub use crate::classify::integer::{MAX_COORDINATE, classify_json, classify_json_scaled, classify_json_small};
+pub use crate::classify::{classify_in, loop_blinn};
+pub use crate::curve::casteljau::subdivision_intervals;
 pub use crate::curve::fraction_free::{IntegerCurve, eval_integer};
+#[cfg(feature = "svg")]
+pub use crate::format::svg::parse_transform;
 pub use crate::num::CheckedRing;
 pub use crate::num::parse::{integer_cubic, parse_points_small, parse_points_small_in, small_cubic};
 pub use crate::num::small::{SmallRational, checked};
+pub use crate::proof::identity_8;
+pub use crate::spline::{check_segments, seed_cubic_segment, seed_quadratic_segment};
 
 pub use crate::curve::casteljau::{
     subdivide as subdivide_de_casteljau, subdivide_repeatedly as subdivide_repeatedly_de_casteljau,

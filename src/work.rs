@@ -158,6 +158,8 @@ pub(crate) fn repeated_subdivision(n: usize, dim: usize, beta: u64, tau: u64, de
 /// proof of a depth-8 subdivision of a degree-10 curve, 306-bit numbers:
 /// 1.3 ms measured per evaluation, 1.7 ms estimated).
 ///
+// used by the catalogue (feature `catalogue`) and the unit tests
+#[cfg_attr(not(feature = "catalogue"), allow(dead_code))]
 pub(crate) fn rational_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let nf = n as f64;
     let g = limbs(grown(beta, n, tau));
@@ -170,6 +172,8 @@ pub(crate) fn rational_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> 
 /// `n⁴/12` products in all, each `700·L(g)²` with `g = β + nτ` (degree 20, 41 parameters:
 /// 6.0 s measured, 6.4 s estimated).
 ///
+// used by the catalogue (feature `catalogue`) and the unit tests
+#[cfg_attr(not(feature = "catalogue"), allow(dead_code))]
 pub(crate) fn saito_hosaka_evaluation(n: usize, dim: usize, beta: u64, tau: u64) -> f64 {
     let nf = n as f64 + 1.0;
     let g = limbs(grown(beta, n, tau));

@@ -6,7 +6,7 @@ use crate::num::parse::parse_points;
 use crate::num::point::Point;
 use crate::num::scalar::rat;
 use crate::proof::Reading;
-use crate::spline::net::{SplineNet, check_net};
+use crate::spline::net::SplineNet;
 use crate::spline::{Conversion, RationalSpline, check_segments};
 use crate::surface::RationalPatch;
 use num_rational::BigRational;
@@ -206,7 +206,7 @@ impl Net {
                 .ok_or_else(|| bad(format!("degrees must be \"nu,nv\", not {d:?}")))?,
         };
         let net = SplineNet::new((nu, nv), rows, weights, scalars(&c.ratios)?, scalars(&c.ratios_v)?)?;
-        let r = check_net(&net, c.method)?;
+        let r = net.check(c.method)?;
         let ok = r.order_independent && r.equals_nurbs && r.smooth_joins;
         Ok(verdict(
             ok,

@@ -16,7 +16,7 @@
 //!
 //! Segment features on the closed interval `[0, 1]` are decided exactly in `Q(√d)`.
 //! The seed's moving-line route ([`MovingLines`]) and the Loop–Blinn discriminant
-//! ([`loop_blinn`]) are independent cross-checks.
+//! (Loop–Blinn) are independent cross-checks.
 
 pub(crate) mod canonical;
 pub(crate) mod certified;
@@ -282,7 +282,7 @@ fn t_e_and_d_json<K: fmt::Display, S: serde::Serializer>(
 }
 
 /// Largest degree [`classify`] accepts.
-pub const MAX_CLASSIFY_DEGREE: usize = 3;
+pub(crate) const MAX_CLASSIFY_DEGREE: usize = 3;
 
 /// A planar vector of the power form, held inline (the classifier allocates no points).
 type Vector<K> = [K; 2];
@@ -602,6 +602,7 @@ fn turning_points<K: Radical>(a: &[Vector<K>; 4]) -> Vec<Parameter<K>> {
 /// Returns `(d1, d2, d3)` and the node type it implies for a genuine cubic: serpentine =
 /// acnode (discriminant > 0), loop = crunode (< 0), cusp (= 0, d1 ≠ 0), cusp at infinity =
 /// explicit (d1 = 0, d2 ≠ 0); `None` for d1 = d2 = 0 (not a genuine cubic).
+#[doc(hidden)]
 pub fn loop_blinn(curve: &BezierCurve<BigRational>) -> ([BigRational; 3], Option<NodeType>) {
     let b: Vec<Point<BigRational>> = curve.points().iter().map(|p| p.to_homogeneous(&rat(1))).collect();
     let x = |i: usize, j: usize, k: usize| b[i].dot(&b[j].cross(&b[k]).expect("3-vectors"));
@@ -687,35 +688,38 @@ impl std::fmt::Display for SegmentFlag {
     }
 }
 
-/// The [`SegmentFlag`]s of one segment, in the order of the enum.
-///
-/// # Example
-/// ```
-/// use casteljau::{BezierCurve, classify::{SegmentFlag, classify, segment_flags}, num::parse_points};
-/// let c = BezierCurve::new(parse_points("0 0, 0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
-/// let k = classify(&c).unwrap();
-/// assert_eq!(segment_flags(c.points(), &k), [SegmentFlag::ZeroLengthHandle, SegmentFlag::CuspAtEndpoint]);
-/// ```
-pub fn segment_flags<K: Radical>(points: &[Point<K>], k: &Classification<K>) -> Vec<SegmentFlag> {
-    let mut flags = vec![];
-    let n = points.len().saturating_sub(1);
-    if k.real_degree < k.degree {
-        flags.push(SegmentFlag::Degenerate);
+impl<K: Radical> Classification<K> {
+    /// The [`SegmentFlag`]s of one segment, in the order of the enum.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::{BezierCurve, classify::{SegmentFlag, classify}, num::parse_points};
+    /// let c = BezierCurve::new(parse_points("0 0, 0 0, 1 1, 2 0", 2, None).unwrap()).unwrap();
+    /// let k = classify(&c).unwrap();
+    /// assert_eq!(k.segment_flags(c.points()), [SegmentFlag::ZeroLengthHandle, SegmentFlag::CuspAtEndpoint]);
+    /// ```
+    pub fn segment_flags(&self, points: &[Point<K>]) -> Vec<SegmentFlag> {
+        let k = self;
+        let mut flags = vec![];
+        let n = points.len().saturating_sub(1);
+        if k.real_degree < k.degree {
+            flags.push(SegmentFlag::Degenerate);
+        }
+        if n >= 2 && (points[0] == points[1] || points[n - 1] == points[n]) {
+            flags.push(SegmentFlag::ZeroLengthHandle);
+        }
+        let at_end = |ps: &[Parameter<K>]| {
+            ps.iter().any(|t| t.radicand().is_zero() && (t.rational_part().is_zero() || *t.rational_part() == K::one()))
+        };
+        if at_end(&k.cusp_parameters) {
+            flags.push(SegmentFlag::CuspAtEndpoint);
+        }
+        if k.node_type == Some(NodeType::Crunode) && at_end(&k.double_point_parameters) {
+            flags.push(SegmentFlag::LoopAtEndpoint);
+        }
+        if at_end(&k.inflection_parameters) {
+            flags.push(SegmentFlag::InflectionAtEndpoint);
+        }
+        flags
     }
-    if n >= 2 && (points[0] == points[1] || points[n - 1] == points[n]) {
-        flags.push(SegmentFlag::ZeroLengthHandle);
-    }
-    let at_end = |ps: &[Parameter<K>]| {
-        ps.iter().any(|t| t.radicand().is_zero() && (t.rational_part().is_zero() || *t.rational_part() == K::one()))
-    };
-    if at_end(&k.cusp_parameters) {
-        flags.push(SegmentFlag::CuspAtEndpoint);
-    }
-    if k.node_type == Some(NodeType::Crunode) && at_end(&k.double_point_parameters) {
-        flags.push(SegmentFlag::LoopAtEndpoint);
-    }
-    if at_end(&k.inflection_parameters) {
-        flags.push(SegmentFlag::InflectionAtEndpoint);
-    }
-    flags
 }

@@ -15,7 +15,7 @@ use std::fmt;
 pub const MAX_DEGREE: usize = 10_000;
 
 /// Refuses, before any number of it is read, a control polygon's text whose numbers would make
-/// a curve of degree above [`MAX_DEGREE`] in dimension `dim`: [`Error::TooLarge`], the error
+/// a curve of degree above 10,000 (`MAX_DEGREE`) in dimension `dim`: [`Error::TooLarge`], the error
 /// [`BezierCurve::new`] gives once the points exist.
 ///
 /// Reading first and checking after costs about 200 bytes per number (each a pair of big
@@ -26,14 +26,6 @@ pub const MAX_DEGREE: usize = 10_000;
 ///
 /// # Errors
 /// [`Error::TooLarge`] when `numbers / dim − 1 > MAX_DEGREE`.
-///
-/// # Example
-/// ```
-/// use casteljau::curve::{MAX_DEGREE, check_polygon_text};
-/// assert!(check_polygon_text("0 0, 1 1, 2 0", 2).is_ok());
-/// let huge = "1 2, ".repeat(MAX_DEGREE + 2);
-/// assert!(check_polygon_text(&huge, 2).unwrap_err().to_string().contains("exceeds the limit 10000"));
-/// ```
 pub fn check_polygon_text(text: &str, dim: usize) -> Result<()> {
     let mut numbers = 0usize;
     let mut inside = false;
@@ -51,11 +43,11 @@ pub fn check_polygon_text(text: &str, dim: usize) -> Result<()> {
     Ok(())
 }
 
-/// [`check_polygon_text`], then the control points read in `mode` and the curve: the route for
+/// the polygon-text check, then the control points read in `mode` and the curve: the route for
 /// untrusted text (a line of a batch), whose memory stays proportional to the text.
 ///
 /// # Errors
-/// As [`check_polygon_text`], [`crate::num::parse_points_in`] and [`BezierCurve::new`].
+/// As the polygon-text check, [`crate::num::parse_points_in`] and [`BezierCurve::new`].
 ///
 /// # Example
 /// ```
@@ -78,7 +70,7 @@ pub fn parse_curve_in(
 /// A Bézier curve: `n + 1 ≥ 1` control points of one dimension `≥ 1`.
 ///
 /// # Invariants
-/// At least one control point; all of the same dimension `≥ 1`; degree ≤ [`MAX_DEGREE`].
+/// At least one control point; all of the same dimension `≥ 1`; degree ≤ 10,000 (`MAX_DEGREE`).
 ///
 /// # Example
 /// ```
@@ -98,7 +90,7 @@ impl<S: Scalar> BezierCurve<S> {
     ///
     /// # Errors
     /// [`Error::EmptyCurve`] for no points, [`Error::DimensionMismatch`] for mixed or zero
-    /// dimensions, [`Error::TooLarge`] beyond [`MAX_DEGREE`].
+    /// dimensions, [`Error::TooLarge`] beyond 10,000 (`MAX_DEGREE`).
     pub fn new(points: Vec<Point<S>>) -> Result<Self> {
         let first = points.first().ok_or(Error::EmptyCurve { line: None })?;
         let dim = first.dim();
@@ -204,5 +196,17 @@ impl<S: fmt::Display> fmt::Display for BezierCurve<S> {
             }
         }
         Ok(())
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn check_polygon_text_example() {
+        use crate::curve::bezier::{MAX_DEGREE, check_polygon_text};
+        assert!(check_polygon_text("0 0, 1 1, 2 0", 2).is_ok());
+        let huge = "1 2, ".repeat(MAX_DEGREE + 2);
+        assert!(check_polygon_text(&huge, 2).unwrap_err().to_string().contains("exceeds the limit 10000"));
     }
 }

@@ -130,7 +130,7 @@ pub struct PowerForm {
     /// `a_0, …, a_n`, one point each.
     pub coefficients: Vec<Point<BigRational>>,
     /// The Bernstein-to-power matrix (`M[k][i]`: the coefficient of `t^k` in `B_i^n`), up to
-    /// degree [`MAX_MATRIX_DEGREE`].
+    /// degree 30 (`MAX_MATRIX_DEGREE`).
     #[serde(skip_serializing_if = "Option::is_none", serialize_with = "matrix")]
     pub matrix: Option<Vec<Vec<BigInt>>>,
 }
@@ -240,7 +240,7 @@ impl Scheme {
     /// The whole de Casteljau scheme at `t`, within `budget` (its estimate).
     ///
     /// # Errors
-    /// [`Error::TooLarge`] above degree [`MAX_TRIANGLE_DEGREE`]; [`Error::WorkLimit`] when the
+    /// [`Error::TooLarge`] above degree 500 (`MAX_TRIANGLE_DEGREE`); [`Error::WorkLimit`] when the
     /// estimate exceeds `budget`.
     ///
     /// ```
@@ -262,7 +262,7 @@ impl Scheme {
 }
 
 impl PowerForm {
-    /// The power form, with the conversion matrix up to degree [`MAX_MATRIX_DEGREE`], within
+    /// The power form, with the conversion matrix up to degree 30 (`MAX_MATRIX_DEGREE`), within
     /// `budget` (its estimate).
     ///
     /// # Errors
@@ -324,8 +324,8 @@ impl RepeatedSubdivision {
     ///
     /// # Errors
     /// [`Error::WorkLimit`] when the estimate exceeds `budget`; [`Error::TooLarge`] when the
-    /// pieces would hold more than [`MAX_SUBDIVISION_POINTS`] points or `depth` exceeds
-    /// [`MAX_SUBDIVISION_DEPTH`](crate::curve::casteljau::MAX_SUBDIVISION_DEPTH).
+    /// pieces would hold more than 2²⁰ (`MAX_SUBDIVISION_POINTS`) points or `depth` exceeds
+    /// 16 (`MAX_SUBDIVISION_DEPTH`).
     ///
     /// ```
     /// use casteljau::{BezierCurve, curve::RepeatedSubdivision, num::parse_points, ratio, work::Budget};

@@ -201,7 +201,7 @@ fn integer_edges<I: Int>(curve: &IntegerCurve, p: &BigInt, q: &BigInt) -> Option
 ///
 /// # Errors
 /// [`Error::TooLarge`](crate::Error::TooLarge) for `depth` beyond
-/// [`MAX_SUBDIVISION_DEPTH`](crate::curve::casteljau::MAX_SUBDIVISION_DEPTH).
+/// 16 (`MAX_SUBDIVISION_DEPTH`).
 pub fn subdivide_repeatedly(
     curve: &BezierCurve<BigRational>,
     t0: &BigRational,

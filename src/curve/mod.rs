@@ -10,10 +10,10 @@ pub(crate) mod fraction_free;
 mod operations;
 pub(crate) mod parametric;
 
-pub use bezier::{BezierCurve, MAX_DEGREE, check_polygon_text, parse_curve_in};
-pub use casteljau::{DeCasteljauTriangle, MAX_SUBDIVISION_DEPTH, subdivision_intervals};
+pub use bezier::{BezierCurve, parse_curve_in};
+pub use casteljau::DeCasteljauTriangle;
 pub use exact::{
-    DegreeReduction, Derivative, Elevation, Evaluation, MAX_MATRIX_DEGREE, MAX_SUBDIVISION_POINTS, MAX_TRIANGLE_DEGREE,
-    Piece, PointAt, PowerForm, RepeatedSubdivision, Scheme, Subdivision,
+    DegreeReduction, Derivative, Elevation, Evaluation, Piece, PointAt, PowerForm, RepeatedSubdivision, Scheme,
+    Subdivision,
 };
 pub use parametric::Parametric;

@@ -175,10 +175,11 @@ impl<S: Scalar> BezierCurve<S> {
 
     /// Subdivides `depth` times, each piece at its own local parameter `t0`: `2^depth` pieces in
     /// order along the curve (seed 001, Fig. 10: `t0 = 1/2`, depth 4); piece `k` covers
-    /// [`subdivision_intervals`](crate::curve::subdivision_intervals)`(t0, depth)[k]`.
+    /// the `k`-th interval of the `2^depth` intervals of this nested splitting (the pieces of
+    /// [`RepeatedSubdivision`](crate::curve::RepeatedSubdivision) list them).
     ///
     /// # Errors
-    /// [`Error::TooLarge`] for `depth >` [`MAX_SUBDIVISION_DEPTH`](crate::curve::MAX_SUBDIVISION_DEPTH).
+    /// [`Error::TooLarge`] for `depth >` 16 (`MAX_SUBDIVISION_DEPTH`).
     pub fn subdivide_repeatedly(&self, t0: &S, depth: u32) -> Result<Vec<Self>> {
         if let Some((c, t)) = as_exact(self, t0) {
             return fraction_free::subdivide_repeatedly(c, t, depth).map(same);
@@ -190,7 +191,7 @@ impl<S: Scalar> BezierCurve<S> {
     /// `b'_i = Σ_j C(r, i−j) C(n, j) / C(n+r, i) · b_j`.
     ///
     /// # Errors
-    /// [`Error::TooLarge`] when `n + r` exceeds [`MAX_DEGREE`].
+    /// [`Error::TooLarge`] when `n + r` exceeds 10,000 (`MAX_DEGREE`).
     pub fn elevate(&self, r: usize) -> Result<Self> {
         if let Some(c) = (self as &dyn Any).downcast_ref::<BezierCurve<BigRational>>() {
             return fraction_free::elevate(c, r).map(same);

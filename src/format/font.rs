@@ -59,17 +59,6 @@ fn fail(message: String) -> Error {
     Error::InvalidArgument { message }
 }
 
-/// The number of fonts in a font file (1 for `.ttf`/`.otf`, the count of a collection).
-///
-/// # Errors
-/// [`Error::InvalidArgument`] when the data is not an OpenType font or collection.
-pub fn font_count(data: &[u8]) -> Result<u32> {
-    match FileRef::new(data).map_err(|e| fail(format!("not a font file: {e}")))? {
-        FileRef::Font(_) => Ok(1),
-        FileRef::Collection(c) => Ok(c.len()),
-    }
-}
-
 enum Outlines<'a> {
     Glyf { glyf: Glyf<'a>, loca: Loca<'a> },
     Cff(read_fonts::ps::cff::CffFontRef<'a>),
@@ -86,6 +75,18 @@ pub struct Font<'a> {
 }
 
 impl<'a> Font<'a> {
+    /// The number of fonts in a font file (1 for `.ttf`/`.otf`, the count of a collection): the
+    /// faces [`Font::open`] takes.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] when the data is not an OpenType font or collection.
+    pub fn count(data: &[u8]) -> Result<u32> {
+        match FileRef::new(data).map_err(|e| fail(format!("not a font file: {e}")))? {
+            FileRef::Font(_) => Ok(1),
+            FileRef::Collection(c) => Ok(c.len()),
+        }
+    }
+
     /// The font at `index` of a font file (0 for a single font).
     ///
     /// # Errors
@@ -202,7 +203,7 @@ impl<'a> Font<'a> {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming the glyph for malformed glyph data, a composite nested
-    /// deeper than [`MAX_COMPONENT_DEPTH`] (or cyclic), or more than [`MAX_GLYPH_POINTS`] points.
+    /// deeper than 16 (`MAX_COMPONENT_DEPTH`) (or cyclic), or more than 2²⁰ (`MAX_GLYPH_POINTS`) points.
     pub fn outline(&self, gid: u32) -> Result<Vec<Contour>> {
         if gid >= self.num_glyphs {
             return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
@@ -267,7 +268,7 @@ impl<'a> Font<'a> {
 
     /// The glyph as a filled [`crate::shape::Shape`], the input of [`crate::shape::boolean`]: its
     /// contours ([`Self::outline`]), every contour closed for fill (a closing line where it does
-    /// not end where it starts, as [`super::close_for_fill`]), empty contours left out. Contour
+    /// not end where it starts, as SVG fills an open subpath), empty contours left out. Contour
     /// `k` of the shape is the glyph's `k`-th non-empty contour, its segments those of
     /// [`Self::outline`] in order (with the closing line, if any, last).
     ///
@@ -275,7 +276,7 @@ impl<'a> Font<'a> {
     /// As [`Self::outline`]; [`Error::InvalidArgument`] with the reason for a piece that is not a
     /// polynomial Bézier curve ([`Segment::Skipped`]: the `glyf` and CFF readers make none, so
     /// this is a safeguard); [`Error::TooLarge`] for a contour of more than
-    /// [`crate::path::MAX_PATH_SEGMENTS`] segments.
+    /// 100,000 (`MAX_PATH_SEGMENTS`) segments.
     ///
     /// # Example
     /// ```
@@ -297,7 +298,7 @@ impl<'a> Font<'a> {
     pub fn shape(&self, gid: u32) -> Result<crate::shape::Shape> {
         let mut contours = vec![];
         for c in self.outline(gid)? {
-            let segs = super::close_for_fill(&c)?;
+            let segs = super::svg_path::close_for_fill(&c)?;
             if !segs.is_empty() {
                 contours.push(segs);
             }
@@ -356,11 +357,6 @@ impl<'a> Font<'a> {
         }
         let set: std::collections::BTreeSet<u32> = names.iter().map(|n| ids[n.as_ref()]).collect();
         Ok(set.into_iter().collect())
-    }
-
-    /// The underlying `read-fonts` font.
-    pub fn font_ref(&self) -> &FontRef<'a> {
-        &self.font
     }
 }
 

@@ -16,11 +16,11 @@ pub(crate) mod svg;
 pub(crate) mod svg_path;
 
 #[cfg(feature = "fonts")]
-pub use font::{Font, MAX_COMPONENT_DEPTH, MAX_GLYPH_POINTS, font_count};
+pub use font::Font;
 pub use scan::{Element, ScanRecord, Source};
 #[cfg(feature = "svg")]
-pub use svg::{MAX_SVG_NODES, ShapeProblem, SvgShape, fill_svg, parse_transform, read_svg};
-pub use svg_path::{MAX_PATH_BYTES, close_for_fill, fill_path, parse_path};
+pub use svg::{ShapeProblem, SvgShape, fill_svg, read_svg};
+pub use svg_path::{fill_path, parse_path};
 
 /// Per segment of a contour, per control point, the index of that point among the contour's
 /// stored points (`None`: a point the format implies, such as TrueType's on-curve midpoint

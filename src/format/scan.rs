@@ -5,13 +5,13 @@
 //!
 //! # Example
 //! ```
-//! use casteljau::classify::{classify, segment_flags};
+//! use casteljau::classify::classify;
 //! use casteljau::format::{ScanRecord, Source};
 //! use casteljau::{BezierCurve, num::parse_points};
 //! let ps = parse_points("0 0, 1 1", 2, None).unwrap();
 //! let k = classify(&BezierCurve::new(ps.clone()).unwrap()).unwrap();
 //! let at = Source { line: Some(3), ..Source::new("curves.txt") };
-//! let r = ScanRecord::Segment { at: &at, index: 0, classification: &k, points: &ps, flags: segment_flags(&ps, &k) };
+//! let r = ScanRecord::Segment { at: &at, index: 0, classification: &k, points: &ps, flags: k.segment_flags(&ps) };
 //! let json = serde_json::to_string(&r).unwrap();
 //! assert!(json.starts_with(r#"{"file":"curves.txt","line":3,"index":0,"degree":1,"#));
 //! assert!(json.ends_with(r#""points":[["0","0"],["1","1"]],"flags":[]}"#));

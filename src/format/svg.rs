@@ -150,7 +150,7 @@ pub fn read_svg(text: &str, mode: NumberMode) -> Result<Vec<SvgShape>> {
 
 /// An SVG document as the one shape its elements fill: every shape element of [`read_svg`]
 /// (transforms applied), in document order, each subpath closed for fill as SVG fills it
-/// ([`close_for_fill`](crate::format::close_for_fill)) and empty ones left out, all in one
+/// (a closing line as SVG fills it) and empty ones left out, all in one
 /// [`Shape`](crate::shape::Shape), so where elements overlap their windings add up (the fill
 /// rule is the operation's, e.g. [`crate::shape::BooleanOptions::fill`]). Nothing is
 /// approximated: an element that is not made of polynomial Bézier pieces is refused.
@@ -161,7 +161,7 @@ pub fn read_svg(text: &str, mode: NumberMode) -> Result<Vec<SvgShape>> {
 /// shape elements when it has no `id`) for an element that is skipped (a circle, an ellipse, a
 /// transform that is not rational), malformed (bad path data, a unit), or holds a piece that is
 /// no polynomial Bézier curve (an arc, a rounded corner); [`Error::TooLarge`] for a contour of
-/// more than [`crate::path::MAX_PATH_SEGMENTS`] segments.
+/// more than 100,000 (`MAX_PATH_SEGMENTS`) segments.
 ///
 /// # Example
 /// ```

@@ -160,7 +160,7 @@ impl Scanner<'_> {
 /// # Errors
 /// [`Error::ParseNumber`] naming the token and its column for a malformed number, a missing
 /// coordinate, an unknown command or path data that does not start with a move-to;
-/// [`Error::TooLarge`] beyond [`MAX_PATH_BYTES`].
+/// [`Error::TooLarge`] beyond 64 MiB (`MAX_PATH_BYTES`).
 pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
     if d.len() > MAX_PATH_BYTES {
         return Err(Error::TooLarge { what: "path data bytes", value: d.len(), limit: MAX_PATH_BYTES });
@@ -345,16 +345,6 @@ fn reflect(c: Option<&P>, cur: &P) -> P {
 /// # Errors
 /// [`Error::InvalidArgument`] with the reason for a piece that is no polynomial Bézier curve
 /// (an elliptical arc, [`Segment::Skipped`]).
-///
-/// # Example
-/// ```
-/// use casteljau::format::{close_for_fill, parse_path};
-/// use casteljau::num::NumberMode;
-/// let subpaths = parse_path("M0 0 Q1 2 2 0", NumberMode::Exact).unwrap();
-/// let closed = close_for_fill(&subpaths[0]).unwrap();
-/// assert_eq!(closed.len(), 2); // the quadratic and the line back to (0, 0)
-/// assert_eq!(closed[1].points()[1].to_string(), "(0, 0)");
-/// ```
 pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>> {
     let mut segs = Vec::with_capacity(contour.segments.len() + 1);
     for s in &contour.segments {
@@ -373,10 +363,10 @@ pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>
 }
 
 /// SVG path data as the closed path its fill covers: [`parse_path`], each subpath closed by
-/// [`close_for_fill`], empty subpaths (a lone move-to) left out.
+/// a closing line as SVG fills it, empty subpaths (a lone move-to) left out.
 ///
 /// # Errors
-/// As [`parse_path`] and [`close_for_fill`].
+/// As [`parse_path`] and a closing line as SVG fills it.
 ///
 /// # Example
 /// ```
@@ -447,5 +437,20 @@ mod tests {
         assert!(e.to_string().contains("move-to"), "{e}");
         let e = parse_path("M0 0 X1 1", NumberMode::Exact).unwrap_err();
         assert!(e.to_string().contains("column 6"), "{e}");
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn close_for_fill_example() {
+        use crate::format::parse_path;
+        use crate::format::svg_path::close_for_fill;
+        use crate::num::NumberMode;
+        let subpaths = parse_path("M0 0 Q1 2 2 0", NumberMode::Exact).unwrap();
+        let closed = close_for_fill(&subpaths[0]).unwrap();
+        assert_eq!(closed.len(), 2); // the quadratic and the line back to (0, 0)
+        assert_eq!(closed[1].points()[1].to_string(), "(0, 0)");
     }
 }

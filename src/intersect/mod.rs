@@ -46,7 +46,7 @@ use crate::rational::RationalBezier;
 use num_rational::BigRational;
 
 /// Largest degree of either curve [`intersect`] accepts.
-pub const MAX_INTERSECT_DEGREE: usize = 10;
+pub(crate) const MAX_INTERSECT_DEGREE: usize = 10;
 
 /// Where parameters are sought.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -148,7 +148,7 @@ fn integer_points(points: &[Point<BigRational>], weighted: bool) -> Option<Vec<[
         .collect()
 }
 
-/// Planar, and of degree at most [`MAX_INTERSECT_DEGREE`].
+/// Planar, and of degree at most 10 (`MAX_INTERSECT_DEGREE`).
 fn check_shape(dim: usize, degree: usize) -> Result<()> {
     if dim != 2 {
         return Err(Error::DimensionMismatch { expected: 2, found: dim });
@@ -168,7 +168,7 @@ fn check(c: &RationalBezier<BigRational>, domain: Domain) -> Result<()> {
 }
 
 /// Every intersection of two planar curves (polynomial or rational, degree ≤
-/// [`MAX_INTERSECT_DEGREE`]) with parameters in the domain, and their shared arcs.
+/// 10 (`MAX_INTERSECT_DEGREE`)) with parameters in the domain, and their shared arcs.
 ///
 /// Overlaps: when the curves share a component, the shared arcs are reported as matching
 /// parameter intervals inside `[0, 1]²` (also with [`Domain::All`], where only the isolated

@@ -23,7 +23,7 @@
 use super::exact::{ExactValue, segment_area};
 use super::{Evidence, Finding, Glyph, Kind, LintOptions, SharedPiece};
 use crate::error::Result;
-use crate::format::close_for_fill;
+use crate::format::svg_path::close_for_fill;
 use crate::num::scalar::rat;
 use crate::path::ClosedPath;
 use crate::poly::algebraic::RealAlgebraic;

@@ -78,7 +78,7 @@ impl std::str::FromStr for FillRule {
 
 /// A path of closed contours, each a chain of planar (rational) Bézier segments that ends
 /// where it starts: what a fill rule fills. Open outlines become closed ones by
-/// [`crate::format::close_for_fill`] (a closing line, as SVG fills them).
+/// a closing line as SVG fills it (a closing line, as SVG fills them).
 ///
 /// # Example
 /// ```
@@ -108,7 +108,7 @@ impl ClosedPath {
     /// [`Error::InvalidArgument`] for an empty contour, a segment that is not planar, or a
     /// contour that is not closed (naming the segments); [`Error::WeightsVanish`] for a
     /// segment undefined at an end; [`Error::TooLarge`] for a contour beyond
-    /// [`MAX_PATH_SEGMENTS`].
+    /// 100,000 (`MAX_PATH_SEGMENTS`).
     ///
     /// # Example
     /// ```

@@ -34,4 +34,4 @@ pub(crate) mod winding;
 pub use closed_path::{BoundaryPoint, ClosedPath, FillRule, PathWinding, WindingNumber};
 
 /// Most segments in one contour of a [`ClosedPath`].
-pub const MAX_PATH_SEGMENTS: usize = 100_000;
+pub(crate) const MAX_PATH_SEGMENTS: usize = 100_000;

@@ -88,7 +88,7 @@ pub(super) fn check_closed(path: &[RationalBezier<BigRational>]) -> Result<()> {
 /// [`Error::InvalidArgument`] when the path is empty, not planar, or not closed (a segment does
 /// not start where the previous one ends, or the last does not end at the first's start);
 /// [`Error::WeightsVanish`] for a rational segment undefined on `[0, 1]`; [`Error::TooLarge`]
-/// beyond [`MAX_PATH_SEGMENTS`].
+/// beyond 100,000 (`MAX_PATH_SEGMENTS`).
 pub(crate) fn winding_number_rational(
     path: &[RationalBezier<BigRational>],
     q: &Point2<BigRational>,

@@ -1,7 +1,6 @@
 //! The seed figures that can be reproduced, as deterministic SVG files with an `index.html`.
 
 use crate::curve::bezier::BezierCurve;
-use crate::error::{Error, Result};
 use crate::num::parse::parse_points;
 use crate::num::point::Point;
 use crate::num::scalar::{rat, ratio, ratio_to_f64};
@@ -12,10 +11,9 @@ use crate::spline::RationalSpline;
 use crate::spline::net::SplineNet;
 use crate::surface::RationalPatch;
 use num_rational::BigRational;
-use std::path::Path;
 
 /// Width of the gallery images, in pixels.
-pub const WIDTH: u32 = 480;
+pub(crate) const WIDTH: u32 = 480;
 
 fn curve(s: &str) -> BezierCurve<BigRational> {
     BezierCurve::new(parse_points(s, 2, None).expect("gallery data parses")).expect("gallery data is a curve")
@@ -30,7 +28,7 @@ fn homogeneous(s: &str) -> RationalBezier<BigRational> {
 }
 
 /// One gallery figure: file stem, caption, and the figure.
-pub struct Entry {
+pub(crate) struct Entry {
     /// File name without `.svg`.
     pub name: &'static str,
     /// What the figure shows, with its seed source.
@@ -92,7 +90,7 @@ fn net_5x5(k22: BigRational) -> SplineNet {
 }
 
 /// Every reproducible figure.
-pub fn entries() -> Vec<Entry> {
+pub(crate) fn entries() -> Vec<Entry> {
     let mut out = Vec::new();
     let ex1 = "-2 0, -1 3, 1 2, 2 0";
     let mut f = Figure::new().title("seed 000 Fig. 17: weights pull the curve (w = 1111, 1311, 1141)");
@@ -289,20 +287,4 @@ pub fn files() -> Vec<(String, String)> {
     html += "</body></html>\n";
     out.push(("index.html".into(), html));
     out
-}
-
-/// Writes [`files`] into `dir` (created if missing): everything is generated first, then each
-/// file is written to a temporary name and renamed ([`crate::plot::write_atomically`]), so no
-/// file is ever half-written. Returns the file names.
-///
-/// # Errors
-/// [`Error::InvalidArgument`] naming the folder when it cannot be created or written.
-pub fn write(dir: &Path) -> Result<Vec<String>> {
-    let io = |e: std::io::Error| Error::InvalidArgument { message: format!("cannot write {}: {e}", dir.display()) };
-    let files = files();
-    std::fs::create_dir_all(dir).map_err(io)?;
-    for (name, content) in &files {
-        crate::plot::write_atomically(&dir.join(name), content.as_bytes()).map_err(io)?;
-    }
-    Ok(files.into_iter().map(|(n, _)| n).collect())
 }

@@ -43,7 +43,7 @@ pub struct Figure {
 
 /// The fitted view: curve coordinates `[min_x, min_x + w] × [min_y, min_y + h]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct View {
+pub(crate) struct View {
     /// Left edge.
     pub min_x: f64,
     /// Bottom edge.
@@ -157,7 +157,7 @@ impl Figure {
     }
 
     /// The view box: the bounding box of every item, with a 6% margin (and a minimum size).
-    pub fn view(&self) -> View {
+    pub(crate) fn view(&self) -> View {
         let points: Vec<(f64, f64)> = self
             .items
             .iter()
@@ -343,7 +343,7 @@ fn f64_point(p: &Point<BigRational>) -> (f64, f64) {
 /// within `[0, 1]`, ends included) are always vertices; each interval is halved (exactly, on
 /// rationals) until the chord is within 0.2% of the figure size, at least 8 and at most 4096
 /// pieces per interval. Evaluations that fail (a pole) split the polyline.
-pub fn sample(
+pub(crate) fn sample(
     eval: &dyn Fn(&BigRational) -> Option<(f64, f64)>,
     breaks: &[BigRational],
     size: f64,
@@ -413,7 +413,7 @@ impl Sampler<'_> {
 }
 
 /// Sorted, deduplicated break parameters in `[0, 1]`: ends, and `extra` inside.
-pub fn breaks(extra: impl IntoIterator<Item = BigRational>) -> Vec<BigRational> {
+pub(crate) fn breaks(extra: impl IntoIterator<Item = BigRational>) -> Vec<BigRational> {
     let (z, o) = (crate::num::scalar::rat(0), crate::num::scalar::rat(1));
     let mut v: Vec<BigRational> = extra.into_iter().filter(|t| *t > z && *t < o).collect();
     v.push(z);
@@ -636,27 +636,4 @@ pub fn draw_rational(fig: &mut Figure, curve: &RationalBezier<BigRational>, colo
         }
         fig.polyline(line, "#888888", 1.0, true);
     }
-}
-
-/// Writes `bytes` to `path` all or nothing: into a temporary file beside it, then renamed over
-/// `path`; on any error the temporary file is removed and `path` is untouched.
-///
-/// # Errors
-/// The file system's.
-///
-/// # Example
-/// ```
-/// let path = std::env::temp_dir().join(format!("casteljau-doc-{}.txt", std::process::id()));
-/// casteljau::plot::write_atomically(&path, b"exact").unwrap();
-/// assert_eq!(std::fs::read(&path).unwrap(), b"exact");
-/// # std::fs::remove_file(path).unwrap();
-/// ```
-pub fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = path.with_file_name(format!(".{name}.tmp-{}", std::process::id()));
-    let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }

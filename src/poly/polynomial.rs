@@ -85,11 +85,6 @@ impl<S: Scalar> Poly<S> {
         &self.coeffs
     }
 
-    /// The coefficients, by value.
-    pub fn into_coeffs(self) -> Vec<S> {
-        self.coeffs
-    }
-
     /// The coefficient of `t^k` (zero above the degree).
     pub fn coeff(&self, k: usize) -> S {
         self.coeffs.get(k).cloned().unwrap_or_else(S::zero)
@@ -112,7 +107,7 @@ impl<S: Scalar> Poly<S> {
 
     /// `p(t)` in binary64 by Horner's rule, each coefficient rounded to `f64` first (for
     /// drawings and float estimates; never for a decision).
-    pub fn eval_f64(&self, t: f64) -> f64 {
+    pub(crate) fn eval_f64(&self, t: f64) -> f64 {
         self.coeffs.iter().rev().fold(0.0, |acc, c| acc * t + c.to_f64())
     }
 
@@ -163,7 +158,7 @@ impl<S: Scalar> Poly<S> {
     }
 
     /// `p(−u)`: the odd coefficients negated.
-    pub fn reflect(&self) -> Self {
+    pub(crate) fn reflect(&self) -> Self {
         Poly::new(
             self.coeffs.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect(),
         )
@@ -171,7 +166,7 @@ impl<S: Scalar> Poly<S> {
 
     /// The power series `p·q` truncated after `t^order` (`order + 1` coefficients, trailing
     /// zeros dropped).
-    pub fn mul_truncated(&self, q: &Self, order: usize) -> Self {
+    pub(crate) fn mul_truncated(&self, q: &Self, order: usize) -> Self {
         let mut out = vec![S::zero(); order + 1];
         for (i, x) in self.coeffs.iter().enumerate().take(order + 1) {
             if x.is_zero() {
@@ -188,7 +183,7 @@ impl<S: Scalar> Poly<S> {
     ///
     /// # Panics
     /// **Panics if `q(0) = 0`** (the quotient is no power series).
-    pub fn div_truncated(&self, q: &Self, order: usize) -> Self {
+    pub(crate) fn div_truncated(&self, q: &Self, order: usize) -> Self {
         let q0 = q.coeff(0);
         assert!(!q0.is_zero(), "a power series quotient needs q(0) ≠ 0");
         let mut out: Vec<S> = Vec::with_capacity(order + 1);
@@ -206,7 +201,7 @@ impl<S: Scalar> Poly<S> {
     }
 
     /// The power series `p(q(t))` truncated after `t^order` (`q(0) = 0`), by Horner's rule.
-    pub fn compose_truncated(&self, q: &Self, order: usize) -> Self {
+    pub(crate) fn compose_truncated(&self, q: &Self, order: usize) -> Self {
         let mut out = Poly::zero();
         for c in self.coeffs.iter().take(order + 1).rev() {
             out = &out.mul_truncated(q, order) + &Poly::constant(c.clone());
@@ -221,13 +216,7 @@ impl<S: Scalar> Poly<S> {
     /// # Panics
     /// **Panics if `p'(0) = 0`.**
     ///
-    /// ```
-    /// use casteljau::{rat, poly::Poly};
-    /// // u = t + t²: t = u − u² + 2u³ − 5u⁴ + … (Catalan numbers)
-    /// let p = Poly::new(vec![rat(0), rat(1), rat(1)]);
-    /// assert_eq!(p.reversion(4).to_string(), "t - t^2 + 2t^3 - 5t^4");
-    /// ```
-    pub fn reversion(&self, order: usize) -> Self {
+    pub(crate) fn reversion(&self, order: usize) -> Self {
         let p1 = self.coeff(1);
         assert!(!p1.is_zero(), "a series reversion needs p'(0) ≠ 0");
         let mut rest = self.coeffs.clone();
@@ -339,7 +328,7 @@ impl Poly<BigRational> {
     }
 
     /// A positive multiple of `p` with integer coefficients (the denominators cleared).
-    pub fn to_integer(&self) -> Vec<num_bigint::BigInt> {
+    pub(crate) fn to_integer(&self) -> Vec<num_bigint::BigInt> {
         super::integer::to_integer(&self.coeffs)
     }
 }
@@ -361,12 +350,7 @@ impl<S: Exact> Poly<S> {
     /// The polynomial written in `var`, highest degree first, with `*` after every coefficient
     /// that is not 1: `3*t^2 - 2*t + 5` (how the polynomial of an algebraic number is shown).
     ///
-    /// ```
-    /// use casteljau::{rat, poly::Poly};
-    /// let p = Poly::new(vec![rat(-2), rat(0), rat(3)]);
-    /// assert_eq!(p.text_descending("t").to_string(), "3*t^2 - 2");
-    /// ```
-    pub fn text_descending<'a>(&'a self, var: &'a str) -> impl fmt::Display + 'a {
+    pub(crate) fn text_descending<'a>(&'a self, var: &'a str) -> impl fmt::Display + 'a {
         PolyText { poly: self, var, descending: true }
     }
 }
@@ -456,5 +440,24 @@ pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<
             let r = disc / &(K::from_i64(4) * c2 * c2);
             center_plus_minus_sqrt(&center, &r).into_iter().map(|x| (x, 1)).collect()
         }
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn reversion_example() {
+        use crate::{poly::Poly, rat};
+        // u = t + t²: t = u − u² + 2u³ − 5u⁴ + … (Catalan numbers)
+        let p = Poly::new(vec![rat(0), rat(1), rat(1)]);
+        assert_eq!(p.reversion(4).to_string(), "t - t^2 + 2t^3 - 5t^4");
+    }
+
+    #[test]
+    fn text_descending_example() {
+        use crate::{poly::Poly, rat};
+        let p = Poly::new(vec![rat(-2), rat(0), rat(3)]);
+        assert_eq!(p.text_descending("t").to_string(), "3*t^2 - 2");
     }
 }

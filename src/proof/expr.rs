@@ -98,6 +98,8 @@ pub fn with_step_limit<T>(steps: u64, f: impl FnOnce() -> T) -> T {
 }
 
 /// The budget of the innermost [`with_step_limit`] on this thread, to share with workers.
+// used by the catalogue (feature `catalogue`) and the unit tests
+#[cfg_attr(not(feature = "catalogue"), allow(dead_code))]
 pub(crate) fn current_steps() -> Option<std::sync::Arc<StepBudget>> {
     STEPS.with(|s| s.borrow().clone())
 }
@@ -150,6 +152,8 @@ fn step_n(n: u64) -> std::result::Result<(), EvalError> {
 /// # Errors
 /// [`EvalError::Invalid`] naming the limit (and `--max-work`) once the budget is spent.
 ///
+// used by the catalogue (feature `catalogue`) and the unit tests
+#[cfg_attr(not(feature = "catalogue"), allow(dead_code))]
 pub(crate) fn charge_steps(n: u64) -> std::result::Result<(), EvalError> {
     step_n(n)
 }

@@ -48,7 +48,7 @@ use crate::num::scalar::Exact;
 use std::fmt;
 
 /// Largest number of grid points one check may visit.
-pub const MAX_GRID_POINTS: usize = 50_000_000;
+pub(crate) const MAX_GRID_POINTS: usize = 50_000_000;
 
 /// Evidence that an identity holds: the degree bounds and the grid it vanished on. Its JSON:
 /// `degrees`, `nodes` (exact strings), `points_checked`, `identities`.
@@ -123,7 +123,7 @@ impl<S: Exact> GridProver<S> {
     /// The default grid: the integers `0, 1, …, d_j` for variable `j`.
     ///
     /// # Errors
-    /// [`Error::TooLarge`] when the grid has more than [`MAX_GRID_POINTS`] points.
+    /// [`Error::TooLarge`] when the grid has more than 5·10⁷ (`MAX_GRID_POINTS`) points.
     pub fn new(degrees: &[usize]) -> Result<Self> {
         let nodes = degrees.iter().map(|&d| (0..=d as i64).map(S::from_i64).collect()).collect();
         Self::with_nodes(degrees, nodes)
@@ -239,7 +239,7 @@ impl<S: Exact> GridProver<S> {
 /// A [`Counterexample`] where `f ≠ 0`.
 ///
 /// # Panics
-/// **Panics** when the grid exceeds [`MAX_GRID_POINTS`] (use [`GridProver::new`] to get an error).
+/// **Panics** when the grid exceeds 5·10⁷ (`MAX_GRID_POINTS`) (use [`GridProver::new`] to get an error).
 pub fn identity<S: Exact>(
     degrees: &[usize],
     f: impl FnMut(&[S]) -> S,
@@ -254,7 +254,7 @@ pub fn identity<S: Exact>(
 /// A [`Counterexample`] naming the failing identity's index.
 ///
 /// # Panics
-/// **Panics** when the grid exceeds [`MAX_GRID_POINTS`].
+/// **Panics** when the grid exceeds 5·10⁷ (`MAX_GRID_POINTS`).
 pub fn identities<S: Exact>(
     degrees: &[usize],
     f: impl FnMut(&[S]) -> Vec<S>,
@@ -270,6 +270,7 @@ pub fn identities<S: Exact>(
 ///
 /// # Errors
 /// A counterexample `(s, t)` with the failing `j` as its `identity`.
+#[doc(hidden)]
 pub fn identity_8(
     n: usize,
     upper: usize,

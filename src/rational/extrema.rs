@@ -86,7 +86,7 @@ pub struct BoundingBox {
 ///
 /// # Errors
 /// [`Error::WeightsVanish`] when the denominator vanishes on `[0, 1]`; [`Error::TooLarge`] above
-/// [`MAX_EXTREMA_DEGREE`]; [`Error::WorkLimit`] when the estimate exceeds `budget`.
+/// 20 (`MAX_EXTREMA_DEGREE`); [`Error::WorkLimit`] when the estimate exceeds `budget`.
 pub fn bounding_box(curve: &RationalBezier<BigRational>, budget: &crate::work::Budget) -> Result<BoundingBox> {
     let n = curve.degree();
     if n > MAX_EXTREMA_DEGREE {

@@ -11,7 +11,7 @@ pub(crate) mod menelaus;
 pub(crate) mod rational_bezier;
 
 pub use exact::{Conic, Definedness, ParameterInterval, RationalElevation, RationalEvaluation, RationalSubdivision};
-pub use extrema::{BoundingBox, MAX_EXTREMA_DEGREE, Stationary, bounding_box};
-pub use implicit::{ImplicitOutcome, MAX_IMPLICIT_DEGREE};
+pub use extrema::{BoundingBox, Stationary, bounding_box};
+pub use implicit::ImplicitOutcome;
 pub use menelaus::Configuration;
 pub use rational_bezier::{ConicType, RationalBezier};

@@ -192,7 +192,7 @@ impl<S: Scalar> RationalBezier<S> {
     }
 
     /// `W_i(t; r) = (1 − t + tE)^r w_i = Σ_k C(r,k) (1−t)^{r−k} t^k w_{i+k}` (seed 002, (11)).
-    pub fn shifted_weight(&self, i: usize, r: usize, t: &S) -> S {
+    pub(crate) fn shifted_weight(&self, i: usize, r: usize, t: &S) -> S {
         let w = self.weights();
         let u = S::one() - t;
         (0..=r).fold(S::zero(), |acc, k| acc + binomial_scalar::<S>(r, k) * pow(&u, r - k) * pow(t, k) * &w[i + k])
@@ -380,7 +380,7 @@ impl RationalBezier<BigRational> {
     ///
     /// # Errors
     /// The returned function gives [`Error::WeightsVanish`] where `W(t) = 0`.
-    pub fn exact_evaluator(&self) -> impl Fn(&BigRational) -> Result<Point<BigRational>> + '_ {
+    pub(crate) fn exact_evaluator(&self) -> impl Fn(&BigRational) -> Result<Point<BigRational>> + '_ {
         let ic = crate::curve::fraction_free::IntegerCurve::new(&self.homogeneous);
         move |t| crate::curve::fraction_free::eval_integer(&ic, t).from_homogeneous().ok_or_else(|| vanish_at(t))
     }

@@ -267,7 +267,7 @@ impl Arrangement {
     /// starts.
     ///
     /// # Errors
-    /// [`Error::TooLarge`] beyond [`MAX_ARRANGEMENT_SEGMENTS`]; [`Error::WorkLimit`] over the
+    /// [`Error::TooLarge`] beyond 50,000 (`MAX_ARRANGEMENT_SEGMENTS`); [`Error::WorkLimit`] over the
     /// budget ([`Budget::unlimited`] for no limit); the errors of [`crate::intersect::intersect`]
     /// and [`crate::intersect::self_intersect`] for a pair or a segment (a curve that traces
     /// a curve more than once off a line); [`Error::InvalidArgument`] when two overlapping

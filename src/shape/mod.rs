@@ -34,7 +34,7 @@ mod ray;
 mod render;
 pub(crate) mod segment;
 
-pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, MAX_ARRANGEMENT_SEGMENTS, Vertex};
+pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, Vertex};
 pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean};
 
 use crate::error::Result;

@@ -37,15 +37,6 @@ use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// Largest number of control points of a spline read from a knot vector.
-///
-/// # Example
-/// ```
-/// use casteljau::{Point, rat, spline::{RationalSpline, MAX_SPLINE_POINTS}};
-/// let n = MAX_SPLINE_POINTS + 1;
-/// let p = vec![Point::new(vec![rat(0), rat(0), rat(1)]); n];
-/// let knots: Vec<_> = (0..n + 2).map(|k| rat(k as i64)).collect();
-/// assert!(RationalSpline::from_knots(1, p, &knots).is_err());
-/// ```
 pub const MAX_SPLINE_POINTS: usize = 10_000;
 
 /// A join between two adjacent Bézier segments: the knot, its multiplicity `μ`, the continuity
@@ -133,7 +124,7 @@ impl RationalSpline {
     /// [`Error::InvalidArgument`] naming the offending knot for a decreasing knot vector, a
     /// multiplicity above `n + 1`, a wrong count (`points + degree + 1` knots), an empty domain,
     /// a zero homogeneous point or mixed dimensions; [`Error::TooLarge`] beyond
-    /// [`MAX_SPLINE_DEGREE`] or [`MAX_SPLINE_POINTS`].
+    /// 12 (`MAX_SPLINE_DEGREE`) or 10,000 (`MAX_SPLINE_POINTS`).
     ///
     /// # Example
     /// ```
@@ -324,18 +315,7 @@ impl RationalSpline {
     /// # Errors
     /// [`Error::InvalidArgument`] for `u` outside the domain or when `u` already has
     /// multiplicity `n` (an interior knot) and would gain nothing.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, ratio, spline::RationalSpline};
-    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
-    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
-    /// let more = sp.insert_knot(&ratio(1, 2)).unwrap();
-    /// assert_eq!(more.homogeneous.len(), 5);
-    /// assert_eq!(more.eval_at(&ratio(3, 2)).unwrap(), sp.eval_at(&ratio(3, 2)).unwrap());
-    /// assert_eq!(more.remove_knot(&ratio(1, 2)).unwrap(), Some(sp));
-    /// ```
-    pub fn insert_knot(&self, u: &BigRational) -> Result<Self> {
+    pub(crate) fn insert_knot_once(&self, u: &BigRational) -> Result<Self> {
         let (a, b) = self.domain();
         if *u < a || *u > b {
             return Err(bad(format!("knot {u} is outside the domain [{a}, {b}]")));
@@ -356,20 +336,7 @@ impl RationalSpline {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] when `u` is not a knot strictly inside the domain.
-    ///
-    /// # Example
-    /// ```
-    /// # use casteljau::{Point, rat, ratio, spline::RationalSpline};
-    /// // a clamped quadratic with an interior knot 1: two Bézier pieces
-    /// let p: Vec<Point<_>> = [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
-    /// let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
-    /// // this spline is one parabola: its knot 1 comes out, and the curve is unchanged
-    /// let one = sp.remove_knot(&rat(1)).unwrap().unwrap();
-    /// assert_eq!(one.homogeneous.len(), 3);
-    /// assert_eq!(one.eval_at(&ratio(1, 2)).unwrap(), sp.eval_at(&ratio(1, 2)).unwrap());
-    /// assert!(sp.remove_knot(&ratio(1, 2)).is_err()); // not a knot
-    /// ```
-    pub fn remove_knot(&self, u: &BigRational) -> Result<Option<Self>> {
+    pub(crate) fn remove_knot_once(&self, u: &BigRational) -> Result<Option<Self>> {
         let (a, b) = self.domain();
         let n = self.degree;
         if *u <= a || *u >= b || !self.knots.contains(u) {
@@ -517,7 +484,7 @@ impl RationalSpline {
     /// exactly back to multiplicity `μ + 1`.
     ///
     /// # Errors
-    /// [`Error::TooLarge`] beyond [`MAX_SPLINE_DEGREE`].
+    /// [`Error::TooLarge`] beyond 12 (`MAX_SPLINE_DEGREE`).
     ///
     /// # Example
     /// ```
@@ -557,7 +524,7 @@ impl RationalSpline {
         let mut out = RationalSpline::from_knots(p, points, &knots)?;
         for (w, copies, target) in targets {
             for _ in target..copies {
-                out = out.remove_knot(&w)?.ok_or_else(|| {
+                out = out.remove_knot_once(&w)?.ok_or_else(|| {
                     bad(format!("degree elevation: knot {w} could not be removed exactly (internal error)"))
                 })?;
             }
@@ -641,4 +608,46 @@ fn insert(
     let mut t = knots.to_vec();
     t.insert(k + 1, u.clone());
     (t, q)
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn max_spline_points_example() {
+        use crate::{
+            Point, rat,
+            spline::{RationalSpline, knots::MAX_SPLINE_POINTS},
+        };
+        let n = MAX_SPLINE_POINTS + 1;
+        let p = vec![Point::new(vec![rat(0), rat(0), rat(1)]); n];
+        let knots: Vec<_> = (0..n + 2).map(|k| rat(k as i64)).collect();
+        assert!(RationalSpline::from_knots(1, p, &knots).is_err());
+    }
+
+    #[test]
+    fn insert_knot_once_example() {
+        use crate::{Point, rat, ratio, spline::RationalSpline};
+        let p: Vec<Point<_>> =
+            [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+        let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+        let more = sp.insert_knot_once(&ratio(1, 2)).unwrap();
+        assert_eq!(more.homogeneous.len(), 5);
+        assert_eq!(more.eval_at(&ratio(3, 2)).unwrap(), sp.eval_at(&ratio(3, 2)).unwrap());
+        assert_eq!(more.remove_knot_once(&ratio(1, 2)).unwrap(), Some(sp));
+    }
+
+    #[test]
+    fn remove_knot_once_example() {
+        use crate::{Point, rat, ratio, spline::RationalSpline};
+        // a clamped quadratic with an interior knot 1: two Bézier pieces
+        let p: Vec<Point<_>> =
+            [(0, 0), (1, 2), (3, 2), (4, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
+        let sp = RationalSpline::from_knots(2, p, &[0, 0, 0, 1, 2, 2, 2].map(rat)).unwrap();
+        // this spline is one parabola: its knot 1 comes out, and the curve is unchanged
+        let one = sp.remove_knot_once(&rat(1)).unwrap().unwrap();
+        assert_eq!(one.homogeneous.len(), 3);
+        assert_eq!(one.eval_at(&ratio(1, 2)).unwrap(), sp.eval_at(&ratio(1, 2)).unwrap());
+        assert!(sp.remove_knot_once(&ratio(1, 2)).is_err()); // not a knot
+    }
 }

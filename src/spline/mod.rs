@@ -18,8 +18,8 @@ pub(crate) mod net;
 mod report;
 pub(crate) mod surface;
 
-pub use knots::{BezierPiece, Join, MAX_SPLINE_POINTS};
-pub use net::{NetReport, SplineNet, check_net};
+pub use knots::{BezierPiece, Join};
+pub use net::{NetReport, SplineNet};
 pub use surface::{NurbsSurface, NurbsSurfaceReport, PatchPiece};
 
 pub use report::{
@@ -37,15 +37,7 @@ use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// Largest spline degree accepted.
-///
-/// # Example
-/// ```
-/// use casteljau::{Point, rat, spline::{RationalSpline, MAX_SPLINE_DEGREE}};
-/// let n = MAX_SPLINE_DEGREE + 1;
-/// let q = vec![Point::new(vec![rat(0), rat(0)]); n + 1];
-/// assert!(RationalSpline::new(n, &q, &vec![rat(1); n + 1], &vec![rat(1); 2 * n]).is_err());
-/// ```
-pub const MAX_SPLINE_DEGREE: usize = 12;
+pub(crate) const MAX_SPLINE_DEGREE: usize = 12;
 
 /// A rational spline curve.
 ///
@@ -78,7 +70,7 @@ impl RationalSpline {
     /// # Errors
     /// As [`homogeneous_control_points`] (wrong count, a weight of 0) and
     /// [`Self::from_ratios`] (wrong count, a ratio that is not positive, a degree outside
-    /// `1..=`[`MAX_SPLINE_DEGREE`]).
+    /// `1..=`12 (`MAX_SPLINE_DEGREE`)).
     ///
     /// # Example
     /// ```
@@ -419,6 +411,7 @@ impl RationalSpline {
 /// let sp = RationalSpline::new(3, &q, &[1, 2, 1, 3, 1].map(rat), &ratios).unwrap();
 /// assert_eq!(seed_cubic_segment(&sp, 1).unwrap(), sp.to_bezier_boehm().unwrap()[1]);
 /// ```
+#[doc(hidden)]
 pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 3 {
         return Err(Error::InvalidArgument { message: "(25)-(29) are for cubic splines".into() });
@@ -465,6 +458,7 @@ pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezie
 /// let boehm = sp.to_bezier_boehm().unwrap();
 /// assert_eq!(seed_quadratic_segment(&sp, 0, Reading::Corrected).unwrap(), boehm[0]);
 /// ```
+#[doc(hidden)]
 pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 2 {
         return Err(Error::InvalidArgument { message: "(53) is for quadratic splines".into() });
@@ -534,6 +528,7 @@ pub enum SegmentMismatch {
 /// use casteljau::spline::check_segments;
 /// assert!(check_segments(&sp, &sp.to_bezier_boehm().unwrap()).is_ok());
 /// ```
+#[doc(hidden)]
 pub fn check_segments(
     sp: &RationalSpline,
     segments: &[RationalBezier<BigRational>],
@@ -627,4 +622,19 @@ fn nurbs_agreement<S: Exact>(
         }
     }
     Ok(count)
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn max_spline_degree_example() {
+        use crate::{
+            Point, rat,
+            spline::{MAX_SPLINE_DEGREE, RationalSpline},
+        };
+        let n = MAX_SPLINE_DEGREE + 1;
+        let q = vec![Point::new(vec![rat(0), rat(0)]); n + 1];
+        assert!(RationalSpline::new(n, &q, &vec![rat(1); n + 1], &vec![rat(1); 2 * n]).is_err());
+    }
 }

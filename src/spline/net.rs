@@ -238,7 +238,7 @@ fn knots(ratios: &[BigRational]) -> Vec<BigRational> {
     k
 }
 
-/// What [`check_net`] found.
+/// What [`SplineNet::check`] found.
 ///
 /// # Example
 /// ```
@@ -248,8 +248,7 @@ fn knots(ratios: &[BigRational]) -> Vec<BigRational> {
 ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
 ///     .collect();
 /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
-/// use casteljau::spline::check_net;
-/// let r = check_net(&net, Conversion::Boehm).unwrap();
+/// let r = net.check(Conversion::Boehm).unwrap();
 /// assert!(r.equals_nurbs && r.smooth_joins && r.order_independent);
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -264,83 +263,6 @@ pub struct NetReport {
     pub smooth_joins: bool,
     /// The first problem found, in words.
     pub problem: Option<String>,
-}
-
-/// Converts the net both ways and proves the patches: equal to the tensor NURBS (rational of type
-/// `(n_u, n_u) × (n_v, n_v)`: a `(2n_u + 1) × (2n_v + 1)` grid decides), and `C^{k}` joins
-/// (`k = min(n_u, n_v) − 1`) checked on the boundary curves (type-bounded grids in the other
-/// parameter).
-///
-/// # Errors
-/// As the conversions.
-///
-/// # Example
-/// ```
-/// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
-/// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
-/// let pts: Vec<Vec<Point<_>>> = (0..4)
-///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
-///     .collect();
-/// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
-/// use casteljau::spline::check_net;
-/// assert_eq!(check_net(&net, Conversion::Boehm).unwrap().patches, 4);
-/// ```
-pub fn check_net(net: &SplineNet, how: Conversion) -> Result<NetReport> {
-    let a = net.to_patches(how, true)?;
-    let b = net.to_patches(how, false)?;
-    let order_independent = a == b;
-    let (nu, nv) = net.degree;
-    let mut problem = None;
-    let mut equals_nurbs = true;
-    'outer: for (s, row) in a.iter().enumerate() {
-        for (t, p) in row.iter().enumerate() {
-            let ((u0, u1), (v0, v1)) = net.span(s, t);
-            for i in 0..=2 * nu {
-                for j in 0..=2 * nv {
-                    let (a_, b_) = (
-                        BigRational::new((i as i64).into(), ((2 * nu) as i64).into()),
-                        BigRational::new((j as i64).into(), ((2 * nv) as i64).into()),
-                    );
-                    let (u, v) = (u0.clone() + (u1.clone() - &u0) * &a_, v0.clone() + (v1.clone() - &v0) * &b_);
-                    if p.eval(&a_, &b_).ok() != net.eval(s, t, &u, &v).ok() {
-                        equals_nurbs = false;
-                        problem =
-                            Some(format!("patch ({s}, {t}) differs from the NURBS at local (u, v) = ({a_}, {b_})"));
-                        break 'outer;
-                    }
-                }
-            }
-        }
-    }
-    let order = nu.min(nv).saturating_sub(1);
-    let mut smooth = true;
-    // joins across u (patch (s,t) at u = 1 and (s+1,t) at u = 0), checked along v
-    for s in 0..a.len().saturating_sub(1) {
-        for t in 0..a[s].len() {
-            let (ls, ls1) = (net.lambda[nu + s].clone(), net.lambda[nu + s + 1].clone());
-            if !joins(&a[s][t], &a[s + 1][t], &ls, &ls1, order, nv) {
-                smooth = false;
-                problem.get_or_insert(format!("join between patches ({s}, {t}) and ({}, {t}) is not C^{order}", s + 1));
-            }
-        }
-    }
-    // joins across v: transpose
-    for s in 0..a.len() {
-        for t in 0..a[s].len().saturating_sub(1) {
-            let (mt, mt1) = (net.mu[nv + t].clone(), net.mu[nv + t + 1].clone());
-            if !joins(&a[s][t].transpose(), &a[s][t + 1].transpose(), &mt, &mt1, order, nu) {
-                smooth = false;
-                problem.get_or_insert(format!("join between patches ({s}, {t}) and ({s}, {}) is not C^{order}", t + 1));
-            }
-        }
-    }
-    Ok(NetReport {
-        patches: a.iter().map(Vec::len).sum(),
-        order_independent,
-        equals_nurbs,
-        smooth_joins: smooth,
-        problem,
-    })
 }
 
 /// `∂^r S/∂u^r (1, v) / λ^r = ∂^r S'/∂u^r (0, v) / λ'^r` for `r ≤ order`, on enough `v`: each side
@@ -358,4 +280,89 @@ fn joins(p: &RationalPatch, q: &RationalPatch, l: &BigRational, l1: &BigRational
             _ => true,
         }
     })
+}
+
+impl SplineNet {
+    /// Converts the net both ways and proves the patches: equal to the tensor NURBS (rational of type
+    /// `(n_u, n_u) × (n_v, n_v)`: a `(2n_u + 1) × (2n_v + 1)` grid decides), and `C^{k}` joins
+    /// (`k = min(n_u, n_v) − 1`) checked on the boundary curves (type-bounded grids in the other
+    /// parameter).
+    ///
+    /// # Errors
+    /// As the conversions.
+    ///
+    /// # Example
+    /// ```
+    /// # use casteljau::{Point, rat, spline::{Conversion, SplineNet}};
+    /// // a 4×4 net of a biquadratic spline surface: 3×3... here 2×2 = 4 patches
+    /// let pts: Vec<Vec<Point<_>>> = (0..4)
+    ///     .map(|i| (0..4).map(|j| Point::new(vec![rat(j), rat(i), rat((i * j) % 3)])).collect())
+    ///     .collect();
+    /// let net = SplineNet::new((2, 2), pts, vec![vec![rat(1); 4]; 4], [1, 2, 1, 1, 1].map(rat).to_vec(), [2, 1, 1, 1, 2].map(rat).to_vec()).unwrap();
+    /// assert_eq!(net.check(Conversion::Boehm).unwrap().patches, 4);
+    /// ```
+    pub fn check(&self, how: Conversion) -> Result<NetReport> {
+        let net = self;
+        let a = net.to_patches(how, true)?;
+        let b = net.to_patches(how, false)?;
+        let order_independent = a == b;
+        let (nu, nv) = net.degree;
+        let mut problem = None;
+        let mut equals_nurbs = true;
+        'outer: for (s, row) in a.iter().enumerate() {
+            for (t, p) in row.iter().enumerate() {
+                let ((u0, u1), (v0, v1)) = net.span(s, t);
+                for i in 0..=2 * nu {
+                    for j in 0..=2 * nv {
+                        let (a_, b_) = (
+                            BigRational::new((i as i64).into(), ((2 * nu) as i64).into()),
+                            BigRational::new((j as i64).into(), ((2 * nv) as i64).into()),
+                        );
+                        let (u, v) = (u0.clone() + (u1.clone() - &u0) * &a_, v0.clone() + (v1.clone() - &v0) * &b_);
+                        if p.eval(&a_, &b_).ok() != net.eval(s, t, &u, &v).ok() {
+                            equals_nurbs = false;
+                            problem =
+                                Some(format!("patch ({s}, {t}) differs from the NURBS at local (u, v) = ({a_}, {b_})"));
+                            break 'outer;
+                        }
+                    }
+                }
+            }
+        }
+        let order = nu.min(nv).saturating_sub(1);
+        let mut smooth = true;
+        // joins across u (patch (s,t) at u = 1 and (s+1,t) at u = 0), checked along v
+        for s in 0..a.len().saturating_sub(1) {
+            for t in 0..a[s].len() {
+                let (ls, ls1) = (net.lambda[nu + s].clone(), net.lambda[nu + s + 1].clone());
+                if !joins(&a[s][t], &a[s + 1][t], &ls, &ls1, order, nv) {
+                    smooth = false;
+                    problem.get_or_insert(format!(
+                        "join between patches ({s}, {t}) and ({}, {t}) is not C^{order}",
+                        s + 1
+                    ));
+                }
+            }
+        }
+        // joins across v: transpose
+        for s in 0..a.len() {
+            for t in 0..a[s].len().saturating_sub(1) {
+                let (mt, mt1) = (net.mu[nv + t].clone(), net.mu[nv + t + 1].clone());
+                if !joins(&a[s][t].transpose(), &a[s][t + 1].transpose(), &mt, &mt1, order, nu) {
+                    smooth = false;
+                    problem.get_or_insert(format!(
+                        "join between patches ({s}, {t}) and ({s}, {}) is not C^{order}",
+                        t + 1
+                    ));
+                }
+            }
+        }
+        Ok(NetReport {
+            patches: a.iter().map(Vec::len).sum(),
+            order_independent,
+            equals_nurbs,
+            smooth_joins: smooth,
+            problem,
+        })
+    }
 }

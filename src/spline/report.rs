@@ -186,7 +186,7 @@ pub struct SplineValue {
     pub u: BigRational,
 }
 
-/// The result of removing a knot several times ([`RationalSpline::remove_knot_times`]): the
+/// The result of removing a knot several times ([`RationalSpline::remove_knot`]): the
 /// spline after the removals that kept the curve, how many there were, and whether all the
 /// requested ones did. Serialized as the spline's fields plus `removable` and `removed`.
 ///
@@ -195,7 +195,7 @@ pub struct SplineValue {
 /// use casteljau::{Point, rat, spline::RationalSpline};
 /// let h: Vec<Point<_>> = (0..5).map(|i| Point::new(vec![rat(i), rat(i), rat(1)])).collect();
 /// let sp = RationalSpline::from_knots(2, h, &[0, 0, 0, 1, 1, 2, 2, 2].map(rat)).unwrap();
-/// let r = sp.remove_knot_times(&rat(1), 2).unwrap(); // a straight line: both copies come out
+/// let r = sp.remove_knot(&rat(1), 2).unwrap(); // a straight line: both copies come out
 /// assert_eq!((r.removed, r.removable, r.spline.homogeneous.len()), (2, true, 3));
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -253,18 +253,18 @@ impl RationalSpline {
     ///
     /// # Errors
     /// As [`Self::insert_knot`]; [`Error::TooLarge`] when the result would exceed
-    /// [`crate::spline::MAX_SPLINE_POINTS`].
+    /// 10,000 (`MAX_SPLINE_POINTS`).
     ///
     /// # Example
     /// ```
     /// use casteljau::{Point, rat, ratio, spline::RationalSpline};
     /// let h: Vec<Point<_>> = (0..4).map(|i| Point::new(vec![rat(i), rat(i * i), rat(1)])).collect();
     /// let sp = RationalSpline::from_knots(3, h, &[0, 0, 0, 0, 1, 1, 1, 1].map(rat)).unwrap();
-    /// let more = sp.insert_knot_times(&ratio(1, 2), 2).unwrap();
+    /// let more = sp.insert_knot(&ratio(1, 2), 2).unwrap();
     /// assert_eq!(more.homogeneous.len(), 6);
     /// assert_eq!(more.eval_at(&ratio(1, 3)).unwrap(), sp.eval_at(&ratio(1, 3)).unwrap());
     /// ```
-    pub fn insert_knot_times(&self, u: &BigRational, times: usize) -> Result<Self> {
+    pub fn insert_knot(&self, u: &BigRational, times: usize) -> Result<Self> {
         let limit = crate::spline::knots::MAX_SPLINE_POINTS;
         if self.homogeneous.len().saturating_add(times) > limit {
             return Err(Error::TooLarge {
@@ -275,7 +275,7 @@ impl RationalSpline {
         }
         let mut out = self.clone();
         for _ in 0..times {
-            out = out.insert_knot(u)?;
+            out = out.insert_knot_once(u)?;
         }
         Ok(out)
     }
@@ -291,14 +291,14 @@ impl RationalSpline {
     /// use casteljau::{Point, rat, spline::RationalSpline};
     /// let h: Vec<Point<_>> = [(0, 0), (1, 3), (2, -1), (4, 2), (5, 0)].iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y), rat(1)])).collect();
     /// let sp = RationalSpline::from_knots(3, h, &[0, 0, 0, 0, 1, 2, 2, 2, 2].map(rat)).unwrap();
-    /// let r = sp.remove_knot_times(&rat(1), 1).unwrap();
+    /// let r = sp.remove_knot(&rat(1), 1).unwrap();
     /// assert_eq!((r.removed, r.removable), (0, false)); // knot 1 carries a real join
     /// assert_eq!(r.spline, sp);
     /// ```
-    pub fn remove_knot_times(&self, u: &BigRational, times: usize) -> Result<KnotRemoval> {
+    pub fn remove_knot(&self, u: &BigRational, times: usize) -> Result<KnotRemoval> {
         let mut spline = self.clone();
         for removed in 0..times {
-            match spline.remove_knot(u)? {
+            match spline.remove_knot_once(u)? {
                 Some(less) => spline = less,
                 None => return Ok(KnotRemoval { spline, removable: false, removed }),
             }

@@ -94,7 +94,7 @@ impl RationalPatch {
     /// 1 when `None`).
     ///
     /// # Errors
-    /// [`Error::TooLarge`] above [`MAX_PATCH_DEGREE`]; [`Error::InvalidArgument`] when the
+    /// [`Error::TooLarge`] above 64 (`MAX_PATCH_DEGREE`); [`Error::InvalidArgument`] when the
     /// numbers of points or weights do not match; as [`RationalPatch::new`].
     ///
     /// ```
@@ -144,7 +144,7 @@ impl RationalPatch {
     /// The two parts of the patch split at `at` in `direction`.
     ///
     /// # Errors
-    /// As [`RationalPatch::subdivide_u`] and [`RationalPatch::subdivide_v`].
+    /// As [`RationalPatch::split`] and [`RationalPatch::split`].
     ///
     /// ```
     /// use casteljau::{num::parse_points, ratio, surface::{ParameterAxis, RationalPatch}};
@@ -162,7 +162,7 @@ impl RationalPatch {
     }
 
     /// The contour `z = level` of a 3D patch: the Bernstein coefficients of `z(u, v) − level`
-    /// times the denominator ([`RationalPatch::contour_polynomial`]) and, for `samples > 0`, a
+    /// times the denominator ([`RationalPatch::contour`]) and, for `samples > 0`, a
     /// polyline sampled on a grid of `min(samples, MAX_CONTOUR_SAMPLES)` cells per direction.
     ///
     /// # Errors

@@ -7,7 +7,7 @@
 
 pub(crate) mod exact;
 
-pub use exact::{MAX_CONTOUR_SAMPLES, ParameterAxis, PatchContour, PatchSplit};
+pub use exact::{ParameterAxis, PatchContour, PatchSplit};
 
 use crate::error::{Error, Result};
 use crate::num::point::Point;
@@ -40,14 +40,7 @@ pub struct RationalPatch {
 }
 
 /// Largest patch degree in either direction.
-///
-/// # Example
-/// ```
-/// use casteljau::{Point, rat, surface::{RationalPatch, MAX_PATCH_DEGREE}};
-/// let row = vec![Point::new(vec![rat(0), rat(0), rat(0), rat(1)]); MAX_PATCH_DEGREE + 2];
-/// assert!(RationalPatch::from_homogeneous(vec![row.clone(), row]).is_err());
-/// ```
-pub const MAX_PATCH_DEGREE: usize = 64;
+pub(crate) const MAX_PATCH_DEGREE: usize = 64;
 
 impl RationalPatch {
     /// A patch from `(m+1)×(n+1)` points (row-major) and weights.
@@ -56,7 +49,7 @@ impl RationalPatch {
     /// [`Error::WeightCount`] for a row whose weights and points differ in number (naming the
     /// row), [`Error::ZeroWeight`] for a zero weight (naming its row and place),
     /// [`Error::InvalidArgument`] for ragged rows or unequal numbers of rows, [`Error::TooLarge`]
-    /// for degrees above [`MAX_PATCH_DEGREE`].
+    /// for degrees above 64 (`MAX_PATCH_DEGREE`).
     ///
     /// # Example
     /// ```
@@ -232,38 +225,6 @@ impl RationalPatch {
         acc
     }
 
-    /// The homogeneous point of `S(u, v)` by de Casteljau's scheme on the homogeneous net, in
-    /// `u` on every column, then in `v` (`u_first`), or in `v` on every row, then in `u`.
-    ///
-    /// Linear in the net, so it equals [`Self::eval_homogeneous`] exactly, also where an
-    /// intermediate weight of the affine recursion ([`Self::eval_u_then_v`]) is 0.
-    ///
-    /// # Example
-    /// ```
-    /// use casteljau::{Point, rat, ratio, surface::RationalPatch};
-    /// let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// // weights 1, −1, 1, 1: the affine recursion meets the weight 0 at u = 1/2
-    /// let s = RationalPatch::new(
-    ///     vec![vec![p(0, 0, 0), p(1, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1)]],
-    ///     vec![vec![rat(1), rat(-1)], vec![rat(1), rat(1)]],
-    /// ).unwrap();
-    /// let (u, v) = (ratio(1, 2), ratio(1, 2));
-    /// assert!(s.eval_u_then_v(&u, &v).is_err());
-    /// assert_eq!(s.eval_homogeneous_de_casteljau(&u, &v, true), s.eval_homogeneous(&u, &v));
-    /// assert_eq!(s.eval_homogeneous_de_casteljau(&u, &v, false), s.eval_homogeneous(&u, &v));
-    /// ```
-    pub fn eval_homogeneous_de_casteljau(&self, u: &BigRational, v: &BigRational, u_first: bool) -> Point<BigRational> {
-        let line = |pts: Vec<Point<BigRational>>, t: &BigRational| {
-            crate::curve::bezier::BezierCurve::new(pts).expect("patch rows and columns are valid curves").eval(t)
-        };
-        let (m, n) = self.degree();
-        if u_first {
-            line((0..=n).map(|j| line(self.column(j), u)).collect(), v)
-        } else {
-            line((0..=m).map(|i| line(self.rows[i].clone(), v)).collect(), u)
-        }
-    }
-
     /// `S(u, v)` by the closed form (41).
     ///
     /// # Errors
@@ -388,43 +349,13 @@ impl RationalPatch {
     }
 
     /// Splits at `u0`: the patches for `u ∈ [0, u0]` and `[u0, 1]` (every column subdivided).
-    ///
-    /// # Example
-    /// ```
-    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
-    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
-    /// let s = RationalPatch::new(
-    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
-    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
-    /// ).unwrap();
-    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// let (a, b) = s.subdivide_u(&ratio(1, 4)).unwrap();
-    /// assert_eq!(a.eval(&rat(1), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
-    /// assert_eq!(b.eval(&rat(0), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
-    /// ```
-    pub fn subdivide_u(&self, u0: &BigRational) -> Result<(Self, Self)> {
+    pub(crate) fn subdivide_u(&self, u0: &BigRational) -> Result<(Self, Self)> {
         let (a, b) = self.transpose().subdivide_v(u0)?;
         Ok((a.transpose(), b.transpose()))
     }
 
     /// Splits at `v0` (every row subdivided).
-    ///
-    /// # Example
-    /// ```
-    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
-    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
-    /// let s = RationalPatch::new(
-    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
-    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
-    /// ).unwrap();
-    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// let (a, b) = s.subdivide_v(&ratio(1, 4)).unwrap();
-    /// assert_eq!(a.eval(&u, &rat(1)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
-    /// assert_eq!(b.eval(&u, &rat(0)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
-    /// ```
-    pub fn subdivide_v(&self, v0: &BigRational) -> Result<(Self, Self)> {
+    pub(crate) fn subdivide_v(&self, v0: &BigRational) -> Result<(Self, Self)> {
         let halves: Vec<_> = self
             .rows
             .iter()
@@ -458,7 +389,7 @@ impl RationalPatch {
     /// Degree elevation by `ru` in `u` and `rv` in `v`.
     ///
     /// # Errors
-    /// [`Error::TooLarge`] beyond [`MAX_PATCH_DEGREE`].
+    /// [`Error::TooLarge`] beyond 64 (`MAX_PATCH_DEGREE`).
     ///
     /// # Example
     /// ```
@@ -584,22 +515,7 @@ impl RationalPatch {
     /// coefficients `w_ij (z_ij − c)` of the polynomial `F(u, v) = Σ Σ B_i(u) B_j(v) w_ij (z_ij − c)`
     /// of degree `(m, n)`, whose zero set in `[0,1]²` (where `W ≠ 0`) is the contour. `axis` picks
     /// the coordinate (`2` = z).
-    ///
-    /// # Example
-    /// ```
-    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
-    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
-    /// let s = RationalPatch::new(
-    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
-    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
-    /// ).unwrap();
-    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// // z = 3/8 where 2v(1 − v) = 3/8: v = 1/4 and v = 3/4
-    /// let f = s.contour_polynomial(2, &ratio(3, 8));
-    /// assert_eq!(f, vec![vec![ratio(-3, 8), ratio(5, 8), ratio(-3, 8)]; 2]);
-    /// ```
-    pub fn contour_polynomial(&self, axis: usize, c: &BigRational) -> Vec<Vec<BigRational>> {
+    pub(crate) fn contour_polynomial(&self, axis: usize, c: &BigRational) -> Vec<Vec<BigRational>> {
         let d = self.dim();
         self.rows
             .iter()
@@ -609,22 +525,7 @@ impl RationalPatch {
 
     /// Sampled contour of [`Self::contour_polynomial`] for plots: segments in `(u, v)` from a
     /// marching-squares pass over a `res × res` grid, in `f64` (for drawing only).
-    ///
-    /// # Example
-    /// ```
-    /// # use casteljau::{Point, rat, ratio, surface::RationalPatch};
-    /// # let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    /// // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
-    /// let s = RationalPatch::new(
-    ///     vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
-    ///     vec![vec![rat(1); 3], vec![rat(1); 3]],
-    /// ).unwrap();
-    /// let (u, v) = (ratio(1, 3), ratio(1, 2));
-    /// let segs = s.contour_polyline(2, &ratio(3, 8), 16);
-    /// assert!(!segs.is_empty());
-    /// assert!(segs.iter().flatten().all(|&(a, b)| (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)));
-    /// ```
-    pub fn contour_polyline(&self, axis: usize, c: &BigRational, res: usize) -> Vec<[(f64, f64); 2]> {
+    pub(crate) fn contour_polyline(&self, axis: usize, c: &BigRational, res: usize) -> Vec<[(f64, f64); 2]> {
         let coeffs: Vec<Vec<f64>> =
             self.contour_polynomial(axis, c).iter().map(|r| r.iter().map(|a| a.to_f64()).collect()).collect();
         let (m, n) = self.degree();
@@ -700,7 +601,7 @@ pub struct PatchValue {
 impl RationalPatch {
     /// The point at `(u, v)` by the closed form, checked against the four recursions (de
     /// Casteljau homogeneous and affine, `u` then `v` and `v` then `u`): the same answers as
-    /// [`Self::eval`], [`Self::eval_homogeneous_de_casteljau`], [`Self::eval_u_then_v`] and
+    /// [`Self::eval`], the u-then-v and v-then-u routes, [`Self::eval_u_then_v`] and
     /// [`Self::eval_v_then_u`], computed in fixed-width rationals first (exact: an overflow
     /// anywhere redoes them in `BigRational`), about ten times faster on small numbers.
     ///
@@ -796,5 +697,81 @@ impl crate::curve::Parametric for RationalPatch {
     }
     fn point_at(&self, uv: &[BigRational; 2]) -> Result<Point<BigRational>> {
         self.eval(&uv[0], &uv[1])
+    }
+}
+
+/// The examples of the crate-internal items above, run as unit tests.
+#[cfg(test)]
+mod doc_examples {
+    #[test]
+    fn max_patch_degree_example() {
+        use crate::{
+            Point, rat,
+            surface::{MAX_PATCH_DEGREE, RationalPatch},
+        };
+        let row = vec![Point::new(vec![rat(0), rat(0), rat(0), rat(1)]); MAX_PATCH_DEGREE + 2];
+        assert!(RationalPatch::from_homogeneous(vec![row.clone(), row]).is_err());
+    }
+
+    #[test]
+    fn subdivide_u_example() {
+        use crate::{Point, rat, ratio, surface::RationalPatch};
+        let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+        // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+        let s = RationalPatch::new(
+            vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+            vec![vec![rat(1); 3], vec![rat(1); 3]],
+        )
+        .unwrap();
+        let v = ratio(1, 2);
+        let (a, b) = s.subdivide_u(&ratio(1, 4)).unwrap();
+        assert_eq!(a.eval(&rat(1), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
+        assert_eq!(b.eval(&rat(0), &v).unwrap(), s.eval(&ratio(1, 4), &v).unwrap());
+    }
+
+    #[test]
+    fn subdivide_v_example() {
+        use crate::{Point, rat, ratio, surface::RationalPatch};
+        let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+        // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+        let s = RationalPatch::new(
+            vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+            vec![vec![rat(1); 3], vec![rat(1); 3]],
+        )
+        .unwrap();
+        let u = ratio(1, 3);
+        let (a, b) = s.subdivide_v(&ratio(1, 4)).unwrap();
+        assert_eq!(a.eval(&u, &rat(1)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
+        assert_eq!(b.eval(&u, &rat(0)).unwrap(), s.eval(&u, &ratio(1, 4)).unwrap());
+    }
+
+    #[test]
+    fn contour_polynomial_example() {
+        use crate::{Point, rat, ratio, surface::RationalPatch};
+        let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+        // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+        let s = RationalPatch::new(
+            vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+            vec![vec![rat(1); 3], vec![rat(1); 3]],
+        )
+        .unwrap();
+        // z = 3/8 where 2v(1 − v) = 3/8: v = 1/4 and v = 3/4
+        let f = s.contour_polynomial(2, &ratio(3, 8));
+        assert_eq!(f, vec![vec![ratio(-3, 8), ratio(5, 8), ratio(-3, 8)]; 2]);
+    }
+
+    #[test]
+    fn contour_polyline_example() {
+        use crate::{Point, rat, ratio, surface::RationalPatch};
+        let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
+        // z = 2v(1 − v) over the unit square, degree (1, 2), all weights 1
+        let s = RationalPatch::new(
+            vec![vec![p(0, 0, 0), p(1, 0, 1), p(2, 0, 0)], vec![p(0, 1, 0), p(1, 1, 1), p(2, 1, 0)]],
+            vec![vec![rat(1); 3], vec![rat(1); 3]],
+        )
+        .unwrap();
+        let segs = s.contour_polyline(2, &ratio(3, 8), 16);
+        assert!(!segs.is_empty());
+        assert!(segs.iter().flatten().all(|&(a, b)| (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)));
     }
 }

@@ -3,7 +3,8 @@
 //! P'×P'' = 0 at inflections) and against the seed's moving lines and Loop–Blinn.
 
 use casteljau::classify::MovingLines;
-use casteljau::classify::{CurveClass, NodeType, Parameter, SegmentCategory, classify, loop_blinn};
+use casteljau::classify::{CurveClass, NodeType, Parameter, SegmentCategory, classify};
+use casteljau::internal::loop_blinn;
 use casteljau::num::parse_points;
 use casteljau::{BezierCurve, Point, QuadraticExt, Scalar, rat, ratio};
 use num_rational::BigRational;

@@ -3,10 +3,11 @@
 //! fonts (TrueType `glyf` cross-checked glyph by glyph against `skrifa`; CFF2 against the
 //! outlines FreeType extracted for the fontations test suite; CFF).
 
+use casteljau::format::Font;
 use casteljau::format::parse_path;
+use casteljau::format::read_svg;
 use casteljau::format::{Contour, Segment};
-use casteljau::format::{Font, font_count};
-use casteljau::format::{parse_transform, read_svg};
+use casteljau::internal::parse_transform;
 use casteljau::num::NumberMode;
 use casteljau::{Point, ratio};
 use num_rational::BigRational;
@@ -393,7 +394,7 @@ fn font_cff2_instances_match_freetype() {
 #[test]
 fn font_cff_outlines_are_closed_cubics_and_lines_with_exact_fixed_coordinates() {
     let d = data("NotoSansJP-Regular.subset.otf");
-    assert_eq!(font_count(&d).unwrap(), 1);
+    assert_eq!(Font::count(&d).unwrap(), 1);
     let f = Font::open(&d, 0).unwrap();
     assert!(f.is_cff());
     let mut cubics = 0;
@@ -421,6 +422,6 @@ fn font_cff_outlines_are_closed_cubics_and_lines_with_exact_fixed_coordinates() 
     }
     assert!(cubics > 0);
     assert!(Font::open(&d, 1).is_err());
-    assert!(font_count(b"not a font").is_err());
+    assert!(Font::count(b"not a font").is_err());
     assert!(f.outline(f.num_glyphs()).is_err());
 }

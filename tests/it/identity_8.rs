@@ -1,9 +1,9 @@
 //! Identity (8) of seed 001, B_j^n(st) = Σ_{r=j}^n B_j^r(s) B_r^n(t), proved for every n ≤ 40
 //! and every j by the grid prover; a wrong variant is refuted with an exact counterexample.
 
+use casteljau::internal::identity_8;
 use casteljau::num::{Rational, Scalar};
 use casteljau::poly::bernstein;
-use casteljau::proof::identity_8;
 use casteljau::proof::{self, GridProver};
 
 #[test]

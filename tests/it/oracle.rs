@@ -73,7 +73,7 @@ proptest! {
         let _ = binary64::points(&curve);
         let k = classify(&curve).unwrap();
         prop_assert_eq!(k.inflection_parameters[0].to_base(), Some(at));
-        prop_assert!(casteljau::classify::segment_flags(curve.points(), &k).contains(&casteljau::classify::SegmentFlag::InflectionAtEndpoint));
+        prop_assert!(k.segment_flags(curve.points()).contains(&casteljau::classify::SegmentFlag::InflectionAtEndpoint));
     }
 
     #[test]

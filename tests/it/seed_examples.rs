@@ -1,8 +1,8 @@
 //! Every example of seeds 001 and 003 reproduced exactly, from `tests/data/seeds_core.json`
 //! (each case carries its `source`); seed errata are asserted as the computed truth.
 
-use casteljau::curve::subdivision_intervals;
 use casteljau::internal::subdivide_de_casteljau;
+use casteljau::internal::subdivision_intervals;
 use casteljau::num::{parse_number, parse_points};
 use casteljau::poly::{bernstein, bernstein_to_power_matrix, power_to_bernstein_matrix};
 use casteljau::{BezierCurve, Point, rat, ratio};

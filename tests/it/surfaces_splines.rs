@@ -1,11 +1,12 @@
 //! Rational splines → rational Bézier segments (three routes), rational patches (three
 //! evaluations and operations), and spline nets → patches in both orders.
 
+use casteljau::internal::{check_segments, seed_cubic_segment, seed_quadratic_segment};
 use casteljau::proof::Reading;
 use casteljau::rational::RationalBezier;
 use casteljau::spline::Conversion;
-use casteljau::spline::{RationalSpline, SegmentMismatch, check_segments, seed_cubic_segment, seed_quadratic_segment};
-use casteljau::spline::{SplineNet, check_net};
+use casteljau::spline::SplineNet;
+use casteljau::spline::{RationalSpline, SegmentMismatch};
 use casteljau::surface::RationalPatch;
 use casteljau::{Point, rat, ratio};
 use num_rational::BigRational;
@@ -90,8 +91,10 @@ fn surface_three_evaluations_subdivision_elevation_iso_curves() {
     let p = patch();
     assert_eq!(p.degree(), (2, 3));
     let grid: Vec<BigRational> = (0..=6).map(|k| ratio(k, 6)).collect();
-    let (lu, ru) = p.subdivide_u(&ratio(1, 3)).unwrap();
-    let (lv, rv) = p.subdivide_v(&ratio(2, 5)).unwrap();
+    let su = p.split(casteljau::surface::ParameterAxis::U, &ratio(1, 3)).unwrap();
+    let sv = p.split(casteljau::surface::ParameterAxis::V, &ratio(2, 5)).unwrap();
+    let (lu, ru) = (su.first, su.second);
+    let (lv, rv) = (sv.first, sv.second);
     let e = p.elevate(1, 2).unwrap();
     assert_eq!(e.degree(), (3, 5));
     for u in &grid {
@@ -124,7 +127,8 @@ fn surface_weight_change_48_49_printed_gamma_fails_bernstein_holds() {
 fn surface_contour_polynomial_vanishes_exactly_on_the_contour() {
     let p = patch();
     let c = ratio(3, 2);
-    let f = p.contour_polynomial(2, &c);
+    let contour = p.contour(&c, 16).unwrap();
+    let f = &contour.bernstein_coefficients;
     // along the iso-curve v = 1/2, F(u, 1/2) = W(u, 1/2)·(z(u, 1/2) − c)
     for k in 0..=8 {
         let (u, v) = (ratio(k, 8), ratio(1, 2));
@@ -136,7 +140,7 @@ fn surface_contour_polynomial_vanishes_exactly_on_the_contour() {
             .fold(rat(0), |acc, (i, r)| r.iter().enumerate().fold(acc, |a, (j, x)| a + x.clone() * &bu[i] * &bv[j]));
         assert_eq!(fv, h.coords[2].clone() - c.clone() * &h.coords[3]);
     }
-    assert!(!p.contour_polyline(2, &c, 16).is_empty());
+    assert!(!contour.polyline.unwrap().is_empty());
 }
 
 fn net(weights_vary: bool) -> SplineNet {
@@ -160,7 +164,7 @@ fn net(weights_vary: bool) -> SplineNet {
 fn net_5x5_gives_9_biquadratic_patches_c1_order_independent() {
     let n = net(true);
     for how in [Conversion::Boehm, Conversion::Seed(Reading::Corrected)] {
-        let r = check_net(&n, how).unwrap();
+        let r = n.check(how).unwrap();
         assert_eq!(r.patches, 9);
         assert!(r.order_independent && r.equals_nurbs && r.smooth_joins, "{how:?}: {:?}", r.problem);
     }
@@ -168,10 +172,10 @@ fn net_5x5_gives_9_biquadratic_patches_c1_order_independent() {
         n.to_patches(Conversion::Boehm, true).unwrap(),
         n.to_patches(Conversion::Seed(Reading::Corrected), false).unwrap()
     );
-    let printed = check_net(&n, Conversion::Seed(Reading::AsPrinted)).unwrap();
+    let printed = n.check(Conversion::Seed(Reading::AsPrinted)).unwrap();
     assert!(!printed.equals_nurbs);
     // with unit weights the misprint is harmless
-    let r = check_net(&net(false), Conversion::Seed(Reading::AsPrinted)).unwrap();
+    let r = net(false).check(Conversion::Seed(Reading::AsPrinted)).unwrap();
     assert!(r.equals_nurbs && r.smooth_joins);
 }
 
@@ -222,7 +226,7 @@ proptest! {
         let pts: Vec<Vec<Point<BigRational>>> = (0..size).map(|i| (0..size).map(|j| Point::new(vec![rat(j as i64), rat(i as i64), rat(z[i * 5 + j])])).collect()).collect();
         let ws: Vec<Vec<BigRational>> = (0..size).map(|i| (0..size).map(|j| w[i * 5 + j].clone()).collect()).collect();
         let n = SplineNet::new((d, d), pts, ws, lam[..size - 1 + d].to_vec(), mu[..size - 1 + d].to_vec()).unwrap();
-        let r = check_net(&n, Conversion::Boehm).unwrap();
+        let r = n.check(Conversion::Boehm).unwrap();
         prop_assert!(r.order_independent && r.equals_nurbs && r.smooth_joins, "{:?}", r.problem);
         if !cubic {
             prop_assert_eq!(n.to_patches(Conversion::Boehm, true).unwrap(), n.to_patches(Conversion::Seed(Reading::Corrected), true).unwrap());

@@ -132,7 +132,7 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
     let svg = fig.to_svg(width);
     match output {
         Some(path) => {
-            if let Err(e) = casteljau::plot::write_atomically(&path, svg.as_bytes()) {
+            if let Err(e) = crate::files::write_atomically(&path, svg.as_bytes()) {
                 eprintln!("casteljau: cannot write {}: {e}", path.display());
                 return 2;
             }
@@ -145,13 +145,13 @@ pub(crate) fn plot(args: PlotArgs, out: &mut dyn Write) -> i32 {
 }
 
 pub(crate) fn gallery(dir: &std::path::Path, out: &mut dyn Write) -> i32 {
-    match casteljau::plot::gallery::write(dir) {
+    match crate::files::write_gallery(dir) {
         Ok(files) => {
             let _ = writeln!(out, "wrote {} files to {}", files.len(), dir.display());
             0
         }
         Err(e) => {
-            eprintln!("casteljau: {e}");
+            eprintln!("casteljau: cannot write {}: {e}", dir.display());
             2
         }
     }
@@ -238,7 +238,7 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
     if malformed > 0 && junit.is_some() {
         eprintln!("casteljau: --junit not written: {malformed} claim(s) could not be checked (all or nothing)");
     } else if let Some(path) = junit
-        && let Err(e) = casteljau::plot::write_atomically(path, catalogue::junit(&results).as_bytes())
+        && let Err(e) = crate::files::write_atomically(path, catalogue::junit(&results).as_bytes())
     {
         eprintln!("casteljau: cannot write {}: {e}", path.display());
         return 2;
@@ -248,7 +248,7 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
             eprintln!("casteljau: --write-readme needs the whole catalogue, checked without errors");
             return 2;
         }
-        if let Err(e) = casteljau::plot::write_atomically(path, catalogue::readme(&claims, &results).as_bytes()) {
+        if let Err(e) = crate::files::write_atomically(path, catalogue::readme(&claims, &results).as_bytes()) {
             eprintln!("casteljau: cannot write {}: {e}", path.display());
             return 2;
         }

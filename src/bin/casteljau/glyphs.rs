@@ -22,7 +22,7 @@
 use crate::args::BooleanArgs;
 use crate::verdicts::{ResultJson, tolerance, verdict_text};
 use casteljau::error::{Error, Result};
-use casteljau::format::{Font, fill_path, font_count};
+use casteljau::format::{Font, fill_path};
 use casteljau::num::NumberMode;
 use casteljau::oracle::Agreement;
 use casteljau::oracle::check_against;
@@ -259,7 +259,7 @@ pub fn run(args: &BooleanArgs, out: &mut dyn Write) -> i32 {
     for file in &args.operands {
         let read = std::fs::read(file)
             .map_err(|e| format!("cannot read: {e}"))
-            .and_then(|d| font_count(&d).map(|n| (d, n)).map_err(|e| e.to_string()));
+            .and_then(|d| Font::count(&d).map(|n| (d, n)).map_err(|e| e.to_string()));
         match read {
             Ok((data, faces)) => fonts.push((file.clone(), data, faces)),
             Err(e) => {

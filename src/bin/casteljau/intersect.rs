@@ -171,7 +171,8 @@ fn plot(
     domain: Domain,
     path: &std::path::Path,
 ) -> Result<()> {
-    use casteljau::plot::{Figure, draw_rational, write_atomically};
+    use crate::files::write_atomically;
+    use casteljau::plot::{Figure, draw_rational};
     let (a, b) = if self_mode {
         let a = curve(pair, None, mode, wa)?;
         (a, None)

@@ -13,7 +13,7 @@
 
 use crate::args::LintArgs;
 use crate::lint_units::{FileReport, Tally, Unit};
-use casteljau::format::{Element, Font, Source, font_count, parse_path, read_svg};
+use casteljau::format::{Element, Font, Source, parse_path, read_svg};
 use casteljau::lint::{Finding, Glyph, Kind, LintOptions, Severity, lint};
 use casteljau::num::NumberMode;
 use casteljau::shape::Orientation;
@@ -265,7 +265,7 @@ fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
     }
     if let Some(path) = &args.html {
         let html = crate::lint_html::render(&reports, &linter.deny);
-        casteljau::plot::write_atomically(path, html.as_bytes())
+        crate::files::write_atomically(path, html.as_bytes())
             .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
     }
     Ok(code)
@@ -302,7 +302,7 @@ fn lint_font(
     variation: Option<&[(String, f64)]>,
     each: &mut Each<'_>,
 ) -> Result<bool, String> {
-    let faces = font_count(data).map_err(|e| format!("{file}: {e}"))?;
+    let faces = Font::count(data).map_err(|e| format!("{file}: {e}"))?;
     for face in 0..faces {
         let mut f = Font::open(data, face).map_err(|e| format!("{file}: {e}"))?;
         if let Some(v) = variation {

@@ -20,6 +20,7 @@ mod batch;
 mod check;
 mod commands;
 mod curves;
+mod files;
 mod glyphs;
 mod input;
 mod intersect;

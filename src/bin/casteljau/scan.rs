@@ -14,9 +14,9 @@
 //! read has `error`.
 
 use crate::args::{OnlyKind, ScanArgs};
-use casteljau::classify::{Classification, SegmentFlag, classify, segment_flags};
+use casteljau::classify::{Classification, SegmentFlag, classify};
 use casteljau::curve::BezierCurve;
-use casteljau::format::{Contour, Font, Segment, font_count, parse_path, read_svg};
+use casteljau::format::{Contour, Font, Segment, parse_path, read_svg};
 use casteljau::format::{Element, ScanRecord, Source as Provenance};
 use casteljau::num::{NumberMode, parse_points_in};
 use rayon::prelude::*;
@@ -110,7 +110,7 @@ impl Scanner {
                                 continue;
                             }
                         };
-                        let flags = segment_flags(ps, &k);
+                        let flags = k.segment_flags(ps);
                         *out.tally.by_category.entry(k.segment.category.as_str()).or_default() += 1;
                         for f in &flags {
                             *out.tally.by_flag.entry(f.as_str()).or_default() += 1;
@@ -251,7 +251,7 @@ type Each<'e> = dyn FnMut(Vec<Rendered>, Option<usize>) -> bool + 'e;
 
 fn scan_font(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
     let data = std::fs::read(file).map_err(|e| format!("cannot read: {e}"))?;
-    let faces = font_count(&data).map_err(|e| e.to_string())?;
+    let faces = Font::count(&data).map_err(|e| e.to_string())?;
     for face in 0..faces {
         let mut f = Font::open(&data, face).map_err(|e| e.to_string())?;
         if let Some(v) = &sc.variation {

@@ -246,7 +246,8 @@ fn sample_segment(seg: &casteljau::RationalBezier<BigRational>, from: f64, to: f
 /// `--plot FILE`: the inputs (thin, blue and green), the result filled semi-transparent with its
 /// boundary (orange), the arrangement's vertices as black dots; written atomically.
 fn plot(shapes: &[Shape], result: &BooleanResult, budget: &Budget, path: &std::path::Path) -> Result<()> {
-    use casteljau::plot::{Figure, write_atomically};
+    use crate::files::write_atomically;
+    use casteljau::plot::Figure;
     let mut fig = Figure::new().title(&format!("{} contours, area ≈ {}", result.contours, result.area_float));
     let boundary: Vec<Vec<(f64, f64)>> =
         result.pieces.iter().map(|c| c.iter().flat_map(|p| sample_piece(shapes, p)).collect()).collect();

@@ -155,12 +155,12 @@ fn eval(sp: &RationalSpline, us: &[BigRational], budget: &Budget) -> Result<Answ
 }
 
 fn insert(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> {
-    let out = sp.insert_knot_times(u, times)?;
+    let out = sp.insert_knot(u, times)?;
     Ok(Answer { text: spline_text(&out), json: json_of(&out), failed: false })
 }
 
 fn remove(sp: &RationalSpline, u: &BigRational, times: usize) -> Result<Answer> {
-    let r = sp.remove_knot_times(u, times)?;
+    let r = sp.remove_knot(u, times)?;
     let text = if r.removable {
         format!("removed {times}: the curve is unchanged; {}", spline_text(&r.spline))
     } else {
