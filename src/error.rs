@@ -142,7 +142,43 @@ pub enum Error {
         /// The row of a patch or net, 1-based; `None` for a curve or spline.
         row: Option<usize>,
     },
-    /// An argument outside the operation's domain (e.g. a derivative order above the degree).
+    /// The input is degenerate for the operation: a curve that is a single point, coincident
+    /// points where distinct ones are needed, a cubic of lower class than the operation needs,
+    /// a construction whose ratio vanishes.
+    ///
+    /// ```
+    /// use casteljau::{Budget, BezierCurve, Domain, Error, RationalBezier, parse_points, self_intersect};
+    /// let c = RationalBezier::from(BezierCurve::new(parse_points("1 1, 1 1, 1 1", 2, None).unwrap()).unwrap());
+    /// let e = self_intersect(&c, Domain::Unit, &Budget::unlimited()).unwrap_err();
+    /// assert!(matches!(e, Error::Degenerate { .. }));
+    /// assert_eq!(e.to_string(), "the curve is a single point");
+    /// ```
+    Degenerate {
+        /// What is degenerate, in words.
+        message: String,
+    },
+    /// A point at infinity where a finite one is needed (a zero weight reached through a
+    /// construction, a homogeneous zero vector, a reference point at infinity).
+    PointAtInfinity {
+        /// Which point, in words.
+        message: String,
+    },
+    /// The operation is defined for another kind of input: another dimension, degree or curve
+    /// type (e.g. moving lines need a planar cubic; the seed's formula (53) is for quadratic
+    /// splines).
+    NotApplicable {
+        /// What the operation takes, in words.
+        message: String,
+    },
+    /// A parameter interval `[from, to]` outside `0 ≤ from < to ≤ 1`.
+    ParameterInterval {
+        /// The interval's start, exactly.
+        from: String,
+        /// Its end, exactly.
+        to: String,
+    },
+    /// An argument outside the operation's domain (e.g. a derivative order above the degree),
+    /// or a malformed option, where no variant above applies.
     InvalidArgument {
         /// What is wrong, in words.
         message: String,
@@ -184,7 +220,11 @@ impl fmt::Display for Error {
                 write!(f, "points of dimension {expected} and {found} cannot be combined")
             }
             Error::TooLarge { what, value, limit } => write!(f, "{what} {value} exceeds the limit {limit}"),
-            Error::InvalidArgument { message } => write!(f, "{message}"),
+            Error::InvalidArgument { message }
+            | Error::Degenerate { message }
+            | Error::PointAtInfinity { message }
+            | Error::NotApplicable { message } => write!(f, "{message}"),
+            Error::ParameterInterval { from, to } => write!(f, "need 0 <= from < to <= 1, got [{from}, {to}]"),
             Error::WorkLimit { what, estimate, limit, option } => {
                 write!(f, "{what}: estimated work {estimate:.1e} exceeds the limit {limit:.1e}")?;
                 if !option.is_empty() {

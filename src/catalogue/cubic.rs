@@ -79,7 +79,7 @@ impl CanonicalMapClaim {
         let curve = curve_from(&self.curve)?;
         let map = classify(&curve).and_then(|k| {
             if k.node_type.is_none() || curve.degree() != 3 {
-                return Err(crate::error::Error::InvalidArgument {
+                return Err(crate::error::Error::Degenerate {
                     message: format!("canonical forms need a genuine cubic; this curve is {}", k.class),
                 });
             }

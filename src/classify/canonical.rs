@@ -140,8 +140,8 @@ impl Lines<'_> {
 /// the caller, not again here).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] when the curve is not a genuine planar cubic, or when a
-/// reference point of the chosen formulas is at infinity.
+/// [`Error::Degenerate`] when the curve is not a genuine planar cubic,
+/// [`Error::PointAtInfinity`] when a reference point of the chosen formulas is at infinity.
 ///
 /// # Example
 /// ```
@@ -163,11 +163,11 @@ pub fn canonical_map(
     moving_lines: &MovingLines,
     formulas: Reading,
 ) -> Result<CanonicalMap> {
-    let node = k.node_type.filter(|_| curve.degree() == 3).ok_or_else(|| Error::InvalidArgument {
+    let node = k.node_type.filter(|_| curve.degree() == 3).ok_or_else(|| Error::Degenerate {
         message: format!("canonical forms need a genuine cubic; this curve is {}", k.class),
     })?;
     let lines = Lines { ml: moving_lines };
-    let fail = |what: &str| Error::InvalidArgument { message: format!("reference point {what} is at infinity") };
+    let fail = |what: &str| Error::PointAtInfinity { message: format!("reference point {what} is at infinity") };
     let p_at = |t: &Tower| lift_curve(curve).eval(t);
     let col = |v: Point<Tower>, f: &Tower| v.scale(f);
     let (t_e, t_f, cols, points) = match node {

@@ -60,7 +60,7 @@ impl MovingLines {
     /// The moving lines of a cubic, as printed in seed 004.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] unless the curve is a planar cubic.
+    /// [`Error::NotApplicable`] unless the curve is a planar cubic.
     ///
     /// # Example
     /// ```
@@ -72,7 +72,7 @@ impl MovingLines {
     /// ```
     pub fn new(curve: &BezierCurve<BigRational>) -> Result<Self> {
         if curve.degree() != 3 || curve.dim() != 2 {
-            return Err(Error::InvalidArgument { message: "moving lines need a planar cubic".into() });
+            return Err(Error::NotApplicable { message: "moving lines need a planar cubic".into() });
         }
         let p = curve.points();
         Ok(Self::from_homogeneous([hom(&p[0], 1), hom(&p[1], 3), hom(&p[2], 3), hom(&p[3], 1)]))

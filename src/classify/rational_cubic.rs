@@ -100,7 +100,8 @@ impl serde::Serialize for RationalClassification {
 /// Classifies the rational cubic with homogeneous control points `h` (`(X, Y, W)` each).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] unless there are four 3-vectors, none of them zero.
+/// [`Error::NotApplicable`] unless there are four 3-vectors, [`Error::PointAtInfinity`] for a
+/// zero one, [`Error::Degenerate`] when `R(t) × D` vanishes identically.
 ///
 /// # Example
 /// ```
@@ -115,7 +116,7 @@ impl serde::Serialize for RationalClassification {
 /// ```
 pub fn classify_rational(c: &RationalBezier<BigRational>) -> Result<RationalClassification> {
     if c.degree() != 3 || c.dim() != 2 {
-        return Err(Error::InvalidArgument { message: "rational classification takes planar cubics".into() });
+        return Err(Error::NotApplicable { message: "rational classification takes planar cubics".into() });
     }
     classify_homogeneous(c.homogeneous().points())
 }
@@ -128,7 +129,7 @@ pub(crate) fn classify_homogeneous(h: &[Point<BigRational>]) -> Result<RationalC
         });
     }
     if let Some(i) = h.iter().position(|p| p.coords.iter().all(Scalar::is_zero)) {
-        return Err(Error::InvalidArgument {
+        return Err(Error::PointAtInfinity {
             message: format!("control point {} is (0, 0, 0): weight and point both vanish", i + 1),
         });
     }
@@ -221,7 +222,7 @@ pub(crate) fn classify_homogeneous(h: &[Point<BigRational>]) -> Result<RationalC
             out.node_type = Some(NodeType::Cusp); // both branches at t = ∞
         }
         _ => {
-            return Err(Error::InvalidArgument { message: "R(t) × D vanishes identically: degenerate cubic".into() });
+            return Err(Error::Degenerate { message: "R(t) × D vanishes identically: degenerate cubic".into() });
         }
     }
     out.reason = format!(

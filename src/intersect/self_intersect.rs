@@ -21,7 +21,7 @@ pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain)
         // a coordinate is constant: the curve lies on a line; pairs come from the other one
         let d = if dx.is_empty() { &dy } else { &dx };
         if d.is_empty() {
-            return Err(Error::InvalidArgument { message: "the curve is a single point".into() });
+            return Err(Error::Degenerate { message: "the curve is a single point".into() });
         }
     }
     let r = resultant_zv(&dx, &dy);

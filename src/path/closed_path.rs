@@ -130,9 +130,7 @@ impl ClosedPath {
                 return Err(Error::TooLarge { what: "segments in a path", value: c.len(), limit: MAX_PATH_SEGMENTS });
             }
             if c.iter().any(|s| s.dim() != 2) {
-                return Err(Error::InvalidArgument {
-                    message: "winding numbers are for planar paths and points".into(),
-                });
+                return Err(Error::NotApplicable { message: "winding numbers are for planar paths and points".into() });
             }
             check_closed(c)?;
         }

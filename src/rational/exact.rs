@@ -58,7 +58,7 @@ impl ParameterInterval {
     /// `[from, to]`, checked.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] unless `0 ≤ from < to ≤ 1`.
+    /// [`Error::ParameterInterval`] unless `0 ≤ from < to ≤ 1`.
     ///
     /// ```
     /// use casteljau::{rat, ratio, rational::ParameterInterval};
@@ -68,7 +68,7 @@ impl ParameterInterval {
     /// ```
     pub fn new(from: BigRational, to: BigRational) -> Result<Self> {
         if from >= to || from < rat(0) || to > rat(1) {
-            return Err(Error::InvalidArgument { message: format!("need 0 <= from < to <= 1, got [{from}, {to}]") });
+            return Err(Error::ParameterInterval { from: from.to_string(), to: to.to_string() });
         }
         Ok(ParameterInterval { from, to })
     }
@@ -160,7 +160,7 @@ impl RationalBezier<BigRational> {
     /// The conic of a rational quadratic ([`RationalBezier::conic_type`]) with its shape factor.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] unless the degree is 2.
+    /// [`Error::NotApplicable`] unless the degree is 2.
     ///
     /// ```
     /// use casteljau::{RationalBezier, num::parse_points, rat, rational::ConicType};

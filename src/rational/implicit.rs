@@ -116,7 +116,7 @@ pub const MAX_IMPLICIT_DEGREE: usize = 20_000;
 pub(crate) fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Result<ImplicitOutcome> {
     let dim = curve.dim();
     if dim > 3 {
-        return Err(Error::InvalidArgument { message: "implicit equations take curves of dimension ≤ 3".into() });
+        return Err(Error::NotApplicable { message: "implicit equations take curves of dimension ≤ 3".into() });
     }
     let f = parse_expr(f)?;
     let vars = &NAMES[..dim];
@@ -141,9 +141,7 @@ pub(crate) fn prove_implicit(curve: &RationalBezier<BigRational>, f: &str) -> Re
             }
             tried += 1;
             if tried > 10 * (bound + 1) + 100 {
-                return Err(Error::InvalidArgument {
-                    message: "the denominator vanishes at every parameter tried".into(),
-                });
+                return Err(Error::Degenerate { message: "the denominator vanishes at every parameter tried".into() });
             }
             let t = BigRational::new(p.into(), q.into());
             let Ok(point) = eval(&t) else { continue };

@@ -44,8 +44,9 @@ impl<S: Exact> Configuration<S> {
     /// Builds the configuration.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for mixed dimensions, `O` on the line `P0P1`, `P0 = P1`, or
-    /// when the line `O P_e` is parallel to `P0P1` (then `P_a` is at infinity: `w_a = 0`).
+    /// [`Error::InvalidArgument`] for mixed dimensions, [`Error::Degenerate`] for `O` on the line
+    /// `P0P1` or `P0 = P1`, [`Error::PointAtInfinity`] when the line `O P_e` is parallel to `P0P1`
+    /// (then `P_a` is at infinity: `w_a = 0`).
     pub fn new(o: Point<S>, p0: Point<S>, p1: Point<S>, w0: S, w1: S, t: S) -> Result<Self> {
         let dim = o.dim();
         if p0.dim() != dim || p1.dim() != dim || !(2..=3).contains(&dim) {
@@ -58,7 +59,7 @@ impl<S: Exact> Configuration<S> {
         // (pair of axes) where d × e does not vanish.
         let (d, e, f) = (p_e.sub(&o), p1.sub(&p0), p0.sub(&o));
         if e.coords.iter().all(Scalar::is_zero) {
-            return Err(Error::InvalidArgument { message: "P0 = P1".into() });
+            return Err(Error::Degenerate { message: "P0 = P1".into() });
         }
         let cross = |a: &Point<S>, b: &Point<S>, i: usize, j: usize| {
             a.coords[i].clone() * &b.coords[j] - a.coords[j].clone() * &b.coords[i]
@@ -66,10 +67,10 @@ impl<S: Exact> Configuration<S> {
         let planes: &[(usize, usize)] = if dim == 2 { &[(0, 1)] } else { &[(0, 1), (0, 2), (1, 2)] };
         // O on the line P0P1 ⟺ f × e = 0 in every plane
         if planes.iter().all(|&(i, j)| cross(&f, &e, i, j).is_zero()) {
-            return Err(Error::InvalidArgument { message: "O lies on the line P0P1".into() });
+            return Err(Error::Degenerate { message: "O lies on the line P0P1".into() });
         }
         let &(i, j) = planes.iter().find(|&&(i, j)| !cross(&d, &e, i, j).is_zero()).ok_or_else(|| {
-            Error::InvalidArgument { message: "the line O P_e is parallel to P0P1 (w_a = 0: P_a at infinity)".into() }
+            Error::PointAtInfinity { message: "the line O P_e is parallel to P0P1 (w_a = 0: P_a at infinity)".into() }
         })?;
         let det = cross(&d, &e, i, j);
         // λ d − μ e = f: Cramer with columns (d, −e)

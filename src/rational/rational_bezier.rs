@@ -103,16 +103,17 @@ impl<S: Scalar> RationalBezier<S> {
     /// From homogeneous control points `(w·x, w·y[, w·z], w)`; `w = 0` is a point at infinity.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a zero vector or points of dimension < 2.
+    /// [`Error::PointAtInfinity`] for a zero vector, [`Error::NotApplicable`] for points of
+    /// dimension < 2.
     pub fn from_homogeneous(h: Vec<Point<S>>) -> Result<Self> {
         if let Some(i) = h.iter().position(|p| p.coords.iter().all(Scalar::is_zero)) {
-            return Err(Error::InvalidArgument {
+            return Err(Error::PointAtInfinity {
                 message: format!("homogeneous control point {} is the zero vector", i + 1),
             });
         }
         let c = BezierCurve::new(h)?;
         if c.dim() < 2 {
-            return Err(Error::InvalidArgument { message: "homogeneous points need a weight coordinate".into() });
+            return Err(Error::NotApplicable { message: "homogeneous points need a weight coordinate".into() });
         }
         Ok(RationalBezier { homogeneous: c })
     }
@@ -140,11 +141,12 @@ impl<S: Scalar> RationalBezier<S> {
     /// The same curve with weight `w_i` replaced by `w` (the point `b_i` kept).
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a point at infinity, an index out of range or `w = 0`.
+    /// [`Error::PointAtInfinity`] for a point at infinity, [`Error::InvalidArgument`] for an index
+    /// out of range or `w = 0`.
     pub fn with_weight(&self, i: usize, w: S) -> Result<Self> {
         let pts: Option<Vec<Point<S>>> = self.points().into_iter().collect();
         let pts = pts
-            .ok_or_else(|| Error::InvalidArgument { message: "a point at infinity has no weight to change".into() })?;
+            .ok_or_else(|| Error::PointAtInfinity { message: "a point at infinity has no weight to change".into() })?;
         let mut ws = self.weights();
         *ws.get_mut(i).ok_or_else(|| Error::InvalidArgument { message: format!("no control point {}", i + 1) })? = w;
         Self::new(pts, ws)
@@ -255,14 +257,14 @@ impl<S: Scalar> RationalBezier<S> {
     /// `w'_i = (i w_{i−1} + (n+1−i) w_i)/(n+1)` (finite control points only).
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a point at infinity or a vanishing new weight.
+    /// [`Error::PointAtInfinity`] for a point at infinity or a vanishing new weight.
     pub fn elevate_saito_hosaka(&self) -> Result<Self> {
         let n = self.degree();
         let p: Vec<Point<S>> = self
             .points()
             .into_iter()
             .collect::<Option<_>>()
-            .ok_or_else(|| Error::InvalidArgument { message: "(22) needs finite control points".into() })?;
+            .ok_or_else(|| Error::NotApplicable { message: "(22) needs finite control points".into() })?;
         let w = self.weights();
         let m = S::from_i64(n as i64 + 1);
         let mut pts = Vec::with_capacity(n + 2);
@@ -336,7 +338,7 @@ impl<S: Scalar> RationalBezier<S> {
             Reading::Corrected => crate::poly::bernstein::bernstein(i, n, t),
         };
         let p =
-            self.points()[i].clone().ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
+            self.points()[i].clone().ok_or_else(|| Error::PointAtInfinity { message: "point at infinity".into() })?;
         let x = self.eval(t)?;
         let w0 = self.shifted_weight(0, self.degree(), t);
         divide(&(gamma * dw), &w0, &x, &p).ok_or_else(|| vanish_at(t))
@@ -417,10 +419,10 @@ impl RationalBezier<BigRational> {
     /// The conic of a rational quadratic.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] unless the degree is 2.
+    /// [`Error::NotApplicable`] unless the degree is 2.
     pub fn conic_type(&self) -> Result<(ConicType, Option<BigRational>)> {
         if self.degree() != 2 {
-            return Err(Error::InvalidArgument { message: format!("a conic needs degree 2, not {}", self.degree()) });
+            return Err(Error::NotApplicable { message: format!("a conic needs degree 2, not {}", self.degree()) });
         }
         // collinear control points ⟺ the three homogeneous points have rank ≤ 2 ⟺ every 3×3
         // minor of the 3×(dim+1) matrix vanishes

@@ -159,7 +159,7 @@ impl RationalSpline {
             .iter()
             .map(|h| {
                 h.from_homogeneous()
-                    .ok_or_else(|| Error::InvalidArgument { message: "a spline point at infinity".into() })
+                    .ok_or_else(|| Error::PointAtInfinity { message: "a spline point at infinity".into() })
             })
             .collect::<Result<_>>()?;
         let ws: Vec<BigRational> = homogeneous.iter().map(|h| h.coords[d].clone()).collect();
@@ -236,7 +236,7 @@ impl RationalSpline {
     /// [`Self::bezier_segments`], for any knot vector.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] when an inserted homogeneous point is zero (weights of
+    /// [`Error::PointAtInfinity`] when an inserted homogeneous point is zero (weights of
     /// opposite signs cancelling), so a segment has no rational form.
     ///
     /// # Example
@@ -367,8 +367,8 @@ impl RationalSpline {
     /// The rational Bézier segments, one per span, by the chosen route.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for the seed's formulas on a degree other than 2 or 3, or
-    /// when a ratio of their construction vanishes.
+    /// [`Error::NotApplicable`] for the seed's formulas on a degree other than 2 or 3,
+    /// [`Error::Degenerate`] when a ratio of their construction vanishes.
     ///
     /// # Example
     /// ```
@@ -384,13 +384,13 @@ impl RationalSpline {
         let segments = 0..self.segments();
         match (how, self.degree) {
             (Conversion::Boehm, _) => self.to_bezier_boehm(),
-            (Conversion::Seed(_), _) if self.has_repeated_knots() => Err(Error::InvalidArgument {
+            (Conversion::Seed(_), _) if self.has_repeated_knots() => Err(Error::NotApplicable {
                 message: "the seed's formulas need positive scale ratios (no repeated knots): use the boehm method"
                     .into(),
             }),
             (Conversion::Seed(_), 3) => segments.map(|s| seed_cubic_segment(self, s)).collect(),
             (Conversion::Seed(reading), 2) => segments.map(|s| seed_quadratic_segment(self, s, reading)).collect(),
-            (Conversion::Seed(_), n) => Err(Error::InvalidArgument {
+            (Conversion::Seed(_), n) => Err(Error::NotApplicable {
                 message: format!("the seed gives formulas for degrees 2 and 3, not {n}: use the boehm method"),
             }),
         }
@@ -401,7 +401,7 @@ impl RationalSpline {
 /// `P_4` are the neighbouring junction helpers; `P0 = 𝒲[λ_{−1}w_1 : λ_0 w_{−1}](P_{−1}, P_1)`, etc.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] unless the spline is cubic.
+/// [`Error::NotApplicable`] unless the spline is cubic.
 ///
 /// # Example
 /// ```
@@ -414,14 +414,14 @@ impl RationalSpline {
 #[doc(hidden)]
 pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 3 {
-        return Err(Error::InvalidArgument { message: "(25)-(29) are for cubic splines".into() });
+        return Err(Error::NotApplicable { message: "(25)-(29) are for cubic splines".into() });
     }
     let l = |i: i64| sp.local_ratio(s, i);
     let q: Vec<Point<BigRational>> =
         sp.homogeneous[s..s + 4].iter().map(|h| h.from_homogeneous().expect("finite")).collect();
     let k: Vec<BigRational> = sp.homogeneous[s..s + 4].iter().map(|h| h.coords[h.dim() - 1].clone()).collect();
     // local names: q_{-1} = q[0], q0 = q[1], q1 = q[2], q2 = q[3]
-    let fail = || Error::InvalidArgument { message: "a ratio of the construction vanishes".into() };
+    let fail = || Error::Degenerate { message: "a ratio of the construction vanishes".into() };
     let (lm2, lm1, l0, l1, l2) = (l(-2), l(-1), l(0), l(1), l(2));
     // (29) weights
     let wm1 = w_lin(&(lm2.clone() + &lm1), &l0, &k[0], &k[1]);
@@ -446,7 +446,7 @@ pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezie
 /// `k_1` (the weight of the far point, as in (28)).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] unless the spline is quadratic.
+/// [`Error::NotApplicable`] unless the spline is quadratic.
 ///
 /// # Example
 /// ```
@@ -461,13 +461,13 @@ pub fn seed_cubic_segment(sp: &RationalSpline, s: usize) -> Result<RationalBezie
 #[doc(hidden)]
 pub fn seed_quadratic_segment(sp: &RationalSpline, s: usize, version: Reading) -> Result<RationalBezier<BigRational>> {
     if sp.degree != 2 {
-        return Err(Error::InvalidArgument { message: "(53) is for quadratic splines".into() });
+        return Err(Error::NotApplicable { message: "(53) is for quadratic splines".into() });
     }
     let (lm1, l0, l1) = (sp.local_ratio(s, -1), sp.local_ratio(s, 0), sp.local_ratio(s, 1));
     let q: Vec<Point<BigRational>> =
         sp.homogeneous[s..s + 3].iter().map(|h| h.from_homogeneous().expect("finite")).collect();
     let k: Vec<BigRational> = sp.homogeneous[s..s + 3].iter().map(|h| h.coords[h.dim() - 1].clone()).collect();
-    let fail = || Error::InvalidArgument { message: "a ratio of the construction vanishes".into() };
+    let fail = || Error::Degenerate { message: "a ratio of the construction vanishes".into() };
     let (left_far, right_near) = match version {
         Reading::AsPrinted => (k[0].clone(), k[2].clone()),
         Reading::Corrected => (k[1].clone(), k[1].clone()),

@@ -166,7 +166,7 @@ impl RationalPatch {
     /// polyline sampled on a grid of `min(samples, MAX_CONTOUR_SAMPLES)` cells per direction.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a patch of fewer than 3 dimensions.
+    /// [`Error::NotApplicable`] for a patch of fewer than 3 dimensions.
     ///
     /// ```
     /// use casteljau::{num::parse_points, rat, ratio, surface::RationalPatch};
@@ -178,7 +178,7 @@ impl RationalPatch {
     /// ```
     pub fn contour(&self, level: &BigRational, samples: usize) -> Result<PatchContour> {
         if self.dim() < 3 {
-            return Err(Error::InvalidArgument { message: "a contour z = c needs a 3D patch".into() });
+            return Err(Error::NotApplicable { message: "a contour z = c needs a 3D patch".into() });
         }
         let bernstein_coefficients = self.contour_polynomial(2, level);
         let polyline = (samples > 0).then(|| self.contour_polyline(2, level, samples.min(MAX_CONTOUR_SAMPLES)));

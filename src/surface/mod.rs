@@ -468,7 +468,7 @@ impl RationalPatch {
         let w00 = self.eval_homogeneous(u, v).coords[self.dim()].clone();
         let p = self.rows[i][j]
             .from_homogeneous()
-            .ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
+            .ok_or_else(|| Error::PointAtInfinity { message: "point at infinity".into() })?;
         divide(&(gamma(i, m, u) * gamma(j, n, v) * dw), &w00, &s, &p)
             .ok_or_else(|| Error::WeightsVanish { interval: (u.to_string(), v.to_string()) })
     }
@@ -495,7 +495,7 @@ impl RationalPatch {
         let d = self.dim();
         let p = rows[i][j]
             .from_homogeneous()
-            .ok_or_else(|| Error::InvalidArgument { message: "point at infinity".into() })?;
+            .ok_or_else(|| Error::PointAtInfinity { message: "point at infinity".into() })?;
         let w = rows[i][j].coords[d].clone() + dw;
         if w.is_zero() {
             return Err(Error::InvalidArgument {

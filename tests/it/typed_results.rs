@@ -98,7 +98,7 @@ fn typed_results_budget_refuses_before_any_work() {
 fn parameter_interval_needs_0_le_from_lt_to_le_1() {
     assert!(ParameterInterval::new(rat(0), rat(1)).is_ok());
     for (a, b) in [(rat(1), rat(1)), (ratio(1, 2), ratio(1, 3)), (rat(-1), rat(1)), (rat(0), ratio(3, 2))] {
-        assert!(matches!(ParameterInterval::new(a, b), Err(Error::InvalidArgument { .. })));
+        assert!(matches!(ParameterInterval::new(a, b), Err(Error::ParameterInterval { .. })));
     }
 }
 
