@@ -66,7 +66,7 @@ pub mod surface;
 pub mod work;
 
 pub use classify::{Classification, NodeType, SegmentFlag, classify};
-pub use curve::{BezierCurve, DeCasteljauTriangle, Parametric};
+pub use curve::{BezierCurve, DeCasteljauTriangle};
 pub use error::{Error, Position, Result};
 pub use intersect::{Domain, Intersection, Intersections, Overlap, intersect, self_intersect};
 pub use num::{Exact, Point, QuadraticExt, Rational, Scalar, parse_points, rat, ratio};

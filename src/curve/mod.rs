@@ -8,7 +8,6 @@ pub(crate) mod casteljau;
 pub(crate) mod exact;
 pub(crate) mod fraction_free;
 mod operations;
-pub(crate) mod parametric;
 
 pub use bezier::{BezierCurve, parse_curve_in};
 pub use casteljau::DeCasteljauTriangle;
@@ -16,4 +15,3 @@ pub use exact::{
     DegreeReduction, Derivative, Elevation, Evaluation, Piece, PointAt, PowerForm, RepeatedSubdivision, Scheme,
     Subdivision,
 };
-pub use parametric::Parametric;

@@ -490,13 +490,3 @@ fn nth_root(x: &BigRational, n: u32) -> Option<BigRational> {
     Some(BigRational::new(root(x.numer())?, root(x.denom())?))
 }
 
-impl<S: Scalar> crate::curve::Parametric for RationalBezier<S> {
-    type Parameter = S;
-    type Scalar = S;
-    fn dim(&self) -> usize {
-        RationalBezier::dim(self)
-    }
-    fn point_at(&self, t: &S) -> Result<Point<S>> {
-        self.eval(t)
-    }
-}

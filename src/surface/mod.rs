@@ -689,17 +689,6 @@ fn evaluation_routes<S: crate::num::scalar::Exact>(rows: &[Vec<Point<S>>], u: &S
     (h, agree)
 }
 
-impl crate::curve::Parametric for RationalPatch {
-    type Parameter = [BigRational; 2];
-    type Scalar = BigRational;
-    fn dim(&self) -> usize {
-        RationalPatch::dim(self)
-    }
-    fn point_at(&self, uv: &[BigRational; 2]) -> Result<Point<BigRational>> {
-        self.eval(&uv[0], &uv[1])
-    }
-}
-
 /// The examples of the crate-internal items above, run as unit tests.
 #[cfg(test)]
 mod doc_examples {

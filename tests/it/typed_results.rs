@@ -143,21 +143,3 @@ fn patch_split_in_u_and_in_v_of_the_transpose_agree() {
     assert_eq!(u.second, v.second.transpose());
 }
 
-#[test]
-fn parametric_point_at_agrees_with_each_types_eval() {
-    use casteljau::{Parametric, Point, RationalPatch, rat, ratio};
-    let p = |x: i64, y: i64, z: i64| Point::new(vec![rat(x), rat(y), rat(z)]);
-    let patch = RationalPatch::new(
-        vec![vec![p(0, 0, 0), p(0, 1, 1)], vec![p(1, 0, 1), p(1, 1, 2)]],
-        vec![vec![rat(1), rat(2)], vec![rat(3), rat(1)]],
-    )
-    .unwrap();
-    let (u, v) = (ratio(1, 3), ratio(2, 5));
-    assert_eq!(patch.point_at(&[u.clone(), v.clone()]).unwrap(), patch.eval(&u, &v).unwrap());
-    assert_eq!(Parametric::dim(&patch), 3);
-    // a weight vanishing at t = 1/2 (w = 1, −1, 1): the rational curve has no point there
-    let r = casteljau::RationalBezier::new(vec![p(0, 0, 0), p(1, 1, 1), p(2, 0, 0)], vec![rat(1), rat(-1), rat(1)]);
-    let r = r.unwrap();
-    assert!(r.point_at(&ratio(1, 2)).is_err());
-    assert_eq!(r.point_at(&rat(0)).unwrap(), p(0, 0, 0));
-}
