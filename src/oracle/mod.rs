@@ -25,7 +25,9 @@
 //! found). Floats in ascending order against exact values in ascending order, with windows of one
 //! width, this matches as many as possible.
 
+mod ball;
 mod classify;
+mod distance;
 mod intersect;
 mod matching;
 mod shape;

@@ -157,13 +157,6 @@ impl<S: Scalar> Poly<S> {
         Poly::new(c)
     }
 
-    /// `p(−u)`: the odd coefficients negated.
-    pub(crate) fn reflect(&self) -> Self {
-        Poly::new(
-            self.coeffs.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect(),
-        )
-    }
-
     /// The power series `p·q` truncated after `t^order` (`order + 1` coefficients, trailing
     /// zeros dropped).
     pub(crate) fn mul_truncated(&self, q: &Self, order: usize) -> Self {
@@ -177,64 +170,6 @@ impl<S: Scalar> Poly<S> {
             }
         }
         Poly::new(out)
-    }
-
-    /// The power series `p/q` truncated after `t^order`.
-    ///
-    /// # Panics
-    /// **Panics if `q(0) = 0`** (the quotient is no power series).
-    pub(crate) fn div_truncated(&self, q: &Self, order: usize) -> Self {
-        let q0 = q.coeff(0);
-        assert!(!q0.is_zero(), "a power series quotient needs q(0) ≠ 0");
-        let mut out: Vec<S> = Vec::with_capacity(order + 1);
-        for k in 0..=order {
-            let mut acc = self.coeff(k);
-            for j in 1..=k {
-                let qj = q.coeff(j);
-                if !qj.is_zero() {
-                    acc = acc - &(qj * &out[k - j]);
-                }
-            }
-            out.push(acc / &q0);
-        }
-        Poly::new(out)
-    }
-
-    /// The power series `p(q(t))` truncated after `t^order` (`q(0) = 0`), by Horner's rule.
-    pub(crate) fn compose_truncated(&self, q: &Self, order: usize) -> Self {
-        let mut out = Poly::zero();
-        for c in self.coeffs.iter().take(order + 1).rev() {
-            out = &out.mul_truncated(q, order) + &Poly::constant(c.clone());
-        }
-        out
-    }
-
-    /// The compositional inverse: the series `τ(u)` with `p(τ(u)) = u` to `u^order`, for
-    /// `p(0) = 0` and `p'(0) ≠ 0` (one more correct coefficient per fixed-point step
-    /// `τ ← (u − (p(τ) − p₁τ))/p₁`).
-    ///
-    /// # Panics
-    /// **Panics if `p'(0) = 0`.**
-    ///
-    pub(crate) fn reversion(&self, order: usize) -> Self {
-        let p1 = self.coeff(1);
-        assert!(!p1.is_zero(), "a series reversion needs p'(0) ≠ 0");
-        let mut rest = self.coeffs.clone();
-        rest.resize(order.max(1) + 1, S::zero());
-        rest[0] = S::zero();
-        rest[1] = S::zero();
-        let rest = Poly::new(rest);
-        let mut tau = Poly::new(vec![S::zero(), S::one() / &p1]);
-        for _ in 1..order {
-            let r = rest.compose_truncated(&tau, order);
-            let mut next = vec![S::zero(); order + 1];
-            next[1] = S::one();
-            for (k, c) in r.coeffs.iter().enumerate() {
-                next[k] = next[k].clone() - c;
-            }
-            tau = Poly::new(next).scale(&(S::one() / &p1));
-        }
-        tau
     }
 }
 

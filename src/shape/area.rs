@@ -2,41 +2,106 @@
 //! piece — whole small-integer polynomial segments in `i128` from a precomputed Bernstein area
 //! matrix, other polynomial pieces by their exact antiderivative at the pieces' ends (rational
 //! or real algebraic), rational segments by Gauss–Legendre quadrature (no exact value then).
+//!
+//! The rounded total is the exact area correctly rounded whenever every piece is polynomial:
+//! the rational part and an enclosure of each algebraic value are summed and the algebraic
+//! values bisected until both ends of the enclosure round to the same `f64` (they do unless the
+//! exact area is itself a rounding boundary, which an enclosure of width `2^-4096` times the
+//! area's size still straddling is refused as, never guessed).
 
 use super::arrangement::Arrangement;
 use super::boolean::Run;
 use super::segment::Seg;
+use crate::error::{Error, Result};
 use crate::num::scalar::{rat, ratio_to_f64};
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use num_rational::BigRational;
+use num_traits::Signed;
 
-/// The sum of the contours' areas: exact when every one is, with its correctly rounded value.
-pub(super) fn total_area(areas: &[(Option<BigRational>, f64)]) -> (Option<BigRational>, f64) {
-    let mut exact = Some(rat(0));
-    let mut float = 0.0;
-    for (a, f) in areas {
-        match (a, &mut exact) {
-            (Some(a), Some(e)) => *e += a,
-            _ => exact = None,
-        }
-        float += f;
+/// One contour's area: exact when every piece's is, else a rational part plus algebraic values
+/// (`F(t)` at the pieces' algebraic ends, each with its sign), plus a quadrature estimate for
+/// rational segments.
+#[derive(Clone, Debug)]
+pub(super) struct ContourArea {
+    /// The rational part (the whole area when `terms` is empty and `approx` is 0).
+    rational: BigRational,
+    /// Algebraic values added (`true`) or subtracted (`false`).
+    terms: Vec<(bool, RealAlgebraic)>,
+    /// Quadrature estimates of rational segments' pieces (no exact value).
+    approx: Option<f64>,
+}
+
+impl ContourArea {
+    /// The exact area when it is rational and known.
+    pub(super) fn exact(&self) -> Option<BigRational> {
+        (self.terms.is_empty() && self.approx.is_none()).then(|| self.rational.clone())
     }
-    match exact {
-        Some(a) => {
-            let f = ratio_to_f64(&a);
-            (Some(a), f)
+}
+
+/// The sum of the contours' areas: exact when every one is, with its correctly rounded value
+/// (see the module documentation); a sum of rounded values when a rational segment's quadrature
+/// takes part.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] when the rounding is not decided at `2^-4096` relative width.
+pub(super) fn total_area(areas: &[ContourArea]) -> Result<(Option<BigRational>, f64)> {
+    let rational = areas.iter().fold(rat(0), |acc, a| acc + &a.rational);
+    let mut terms: Vec<(bool, RealAlgebraic)> = areas.iter().flat_map(|a| a.terms.iter().cloned()).collect();
+    if let Some(approx) = areas.iter().filter_map(|a| a.approx).reduce(|x, y| x + y) {
+        let algebraic: f64 = terms.iter().map(|(plus, t)| if *plus { t.to_f64() } else { -t.to_f64() }).sum();
+        return Ok((None, ratio_to_f64(&rational) + algebraic + approx));
+    }
+    if terms.is_empty() {
+        let f = ratio_to_f64(&rational);
+        return Ok((Some(rational), f));
+    }
+    Ok((None, rounded_sum(&rational, &mut terms)?))
+}
+
+/// `r + Σ ±t`, correctly rounded: the enclosure's ends rounded until they agree, bisecting every
+/// algebraic value's interval between tries.
+fn rounded_sum(r: &BigRational, terms: &mut [(bool, RealAlgebraic)]) -> Result<f64> {
+    let scale = terms.iter().fold(r.abs() + rat(1), |acc, (_, t)| {
+        let (lo, hi) = t.interval();
+        acc + lo.abs() + hi.abs()
+    });
+    let limit = scale / BigRational::from_integer(num_bigint::BigInt::from(1) << 4096u32);
+    loop {
+        let (mut lo, mut hi) = (r.clone(), r.clone());
+        for (plus, t) in terms.iter() {
+            let (a, b) = t.interval();
+            if *plus {
+                lo += a;
+                hi += b;
+            } else {
+                lo -= b;
+                hi -= a;
+            }
         }
-        None => (None, float),
+        let (fl, fh) = (ratio_to_f64(&lo), ratio_to_f64(&hi));
+        if fl == fh {
+            return Ok(fl);
+        }
+        if hi - lo < limit {
+            return Err(Error::InvalidArgument {
+                message: format!(
+                    "the area lies within 2^-4096 of the rounding boundary between {fl} and {fh}; its rounding is \
+                     not decided"
+                ),
+            });
+        }
+        for (_, t) in terms.iter_mut() {
+            t.bisect();
+        }
     }
 }
 
 /// `∮ (x dy − y dx)/2` over one contour: exact when every piece is polynomial with rational
-/// ends (or ends where the antiderivative is rational), else the sum of the pieces' values
-/// (each exact real algebraic, rounded; or by Gauss–Legendre quadrature for rational segments).
-pub(super) fn contour_area(arr: &Arrangement, runs: &[Run]) -> (Option<BigRational>, f64) {
-    let mut exact = Some(rat(0));
-    let mut float = 0.0;
+/// ends (or ends where the antiderivative is rational), else a rational part and the
+/// antiderivative's algebraic values (or Gauss–Legendre quadrature for rational segments).
+pub(super) fn contour_area(arr: &Arrangement, runs: &[Run]) -> ContourArea {
+    let mut area = ContourArea { rational: rat(0), terms: vec![], approx: None };
     // whole small-integer pieces: numerators over 240 in i128 (60·K, and 4 for the doubled points)
     let mut sixtieths: i128 = 0;
     let (zero, one) = (RealAlgebraic::from(rat(0)), RealAlgebraic::from(rat(1)));
@@ -55,22 +120,17 @@ pub(super) fn contour_area(arr: &Arrangement, runs: &[Run]) -> (Option<BigRation
             sixtieths = next;
             continue;
         }
-        let (a, f) = piece_area(s, &r.from, &r.to);
-        match (a, &mut exact) {
-            (Some(a), Some(e)) => *e += a,
-            _ => exact = None,
+        match piece_area(s, &r.from, &r.to) {
+            PieceArea::Exact(a) => area.rational += a,
+            PieceArea::Algebraic { from, to } => {
+                area.terms.push((true, to));
+                area.terms.push((false, from));
+            }
+            PieceArea::Approx(f) => *area.approx.get_or_insert(0.0) += f,
         }
-        float += f;
     }
-    let small = BigRational::new(sixtieths.into(), 240.into());
-    match exact {
-        Some(a) => {
-            let a = a + small;
-            let f = ratio_to_f64(&a);
-            (Some(a), f)
-        }
-        None => (None, float + ratio_to_f64(&small)),
-    }
+    area.rational += BigRational::new(sixtieths.into(), 240.into());
+    area
 }
 
 /// [`whole_area`] times 240 for a polynomial segment of degree ≤ 3 with small control points:
@@ -187,7 +247,14 @@ fn area_antiderivative(s: &Seg) -> Option<Poly<BigRational>> {
     Some(integrand.scale(&(rat(1) / (&w * &w * rat(2)))).integral())
 }
 
-fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigRational>, f64) {
+/// A piece's area: exact, `F(to) − F(from)` with an algebraic end, or a quadrature estimate.
+enum PieceArea {
+    Exact(BigRational),
+    Algebraic { from: RealAlgebraic, to: RealAlgebraic },
+    Approx(f64),
+}
+
+fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> PieceArea {
     let (zero, one) = (RealAlgebraic::from(rat(0)), RealAlgebraic::from(rat(1)));
     let whole = if *from == zero && *to == one {
         Some(false)
@@ -199,15 +266,11 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigR
     if let Some(reversed) = whole
         && let Some(a) = whole_area(s)
     {
-        let a = if reversed { -a } else { a };
-        let f = ratio_to_f64(&a);
-        return (Some(a), f);
+        return PieceArea::Exact(if reversed { -a } else { a });
     }
     if let Some(f) = area_antiderivative(s) {
         if let (Some(a), Some(b)) = (from.to_rational(), to.to_rational()) {
-            let v = f.eval(b) - f.eval(a);
-            let x = ratio_to_f64(&v);
-            return (Some(v), x);
+            return PieceArea::Exact(f.eval(b) - f.eval(a));
         }
         // F at an algebraic end: a real algebraic number, rational more often than not (a
         // piece on a line through the origin, a symmetric end)
@@ -217,11 +280,9 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigR
         };
         let (fa, fb) = (at(from), at(to));
         if let (Some(a), Some(b)) = (fa.to_rational(), fb.to_rational()) {
-            let v = b - a;
-            let x = ratio_to_f64(&v);
-            return (Some(v), x);
+            return PieceArea::Exact(b - a);
         }
-        return (None, fb.to_f64() - fa.to_f64());
+        return PieceArea::Algebraic { from: fa, to: fb };
     }
     // rational segment: Gauss–Legendre on the homogeneous form
     let (a, b) = (from.to_f64(), to.to_f64());
@@ -232,7 +293,7 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> (Option<BigR
         // d(x/w) = (x'w − xw')/w², so x dy − y dx = (x(y'w − yw') − y(x'w − xw'))/w³
         (x * (yp * w - y * wp) - y * (xp * w - x * wp)) / (w * w * w) / 2.0
     };
-    (None, gauss_legendre(integrand, a, b))
+    PieceArea::Approx(gauss_legendre(integrand, a, b))
 }
 
 fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {

@@ -460,31 +460,16 @@ impl Arrangement {
             return Ok(out.into_iter().map(|(h, _)| h).collect());
         }
         let angles: Vec<Angle> = out.iter().map(|(_, g)| g.angle()).collect::<Result<_>>()?;
-        let (k, t) = &self.vertex_at[v];
-        let point = t.to_rational().map(|r| self.segs[*k].point_at(r));
         let mut order: Vec<usize> = (0..out.len()).collect();
         let mut failure = None;
         order.sort_by(|&i, &j| match angles[i].cmp_direction(&angles[j]) {
-            Ordering::Equal => {
-                let Some(p) = &point else {
-                    failure.get_or_insert_with(|| Error::InvalidArgument {
-                        message: format!(
-                            "two curves leave the irrational vertex near ({}, {}) tangentially; their order around it is not decided",
-                            self.segs[*k].point_float(t)[0],
-                            self.segs[*k].point_float(t)[1]
-                        ),
-                    });
-                    return Ordering::Equal;
-                };
-                let v2 = p.clone();
-                match compare_tangent(&out[i].1, &out[j].1, &angles[i], &angles[j], &v2) {
-                    Ok(o) => o,
-                    Err(e) => {
-                        failure.get_or_insert(e);
-                        Ordering::Equal
-                    }
+            Ordering::Equal => match compare_tangent(&out[i].1, &out[j].1) {
+                Ok(o) => o,
+                Err(e) => {
+                    failure.get_or_insert(e);
+                    Ordering::Equal
                 }
-            }
+            },
             o => o,
         });
         if let Some(e) = failure {
@@ -613,8 +598,9 @@ impl Arrangement {
     /// components inside it), then the unbounded face.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] when two curves leave a vertex tangentially where their order
-    /// cannot be decided exactly (an irrational vertex, or a cusp at the vertex).
+    /// [`Error::InvalidArgument`] when two edges leaving a vertex agree to every order of their
+    /// expansions there (an overlap that was not merged; see the private `germ` module — the
+    /// order of tangent edges is otherwise always decided, at cusps and irrational vertices too).
     pub fn faces(&self) -> Result<Vec<Face>> {
         Ok(self.faces_with_depths()?.0.clone())
     }

@@ -208,12 +208,7 @@ impl BooleanResult {
             .iter()
             .map(|c| {
                 c.iter()
-                    .map(|(k, lo, hi, forward)| Piece {
-                        seg: &segs[*k],
-                        lo: lo.clone(),
-                        hi: hi.clone(),
-                        forward: *forward,
-                    })
+                    .map(|r| Piece { seg: &segs[r.seg], lo: r.lo.clone(), hi: r.hi.clone(), forward: r.forward })
                     .collect()
             })
             .collect();
@@ -223,10 +218,9 @@ impl BooleanResult {
         })
     }
 
-    /// The exact boundary pieces: each segment with its parameter interval.
-    pub(crate) fn exact_boundary(&self) -> Vec<(std::sync::Arc<Seg>, RealAlgebraic, RealAlgebraic)> {
-        let (segs, cycles) = &self.exact;
-        cycles.iter().flatten().map(|(k, lo, hi, _)| (segs[*k].clone(), lo.clone(), hi.clone())).collect()
+    /// The exact boundary: the segments used and, per contour, its runs.
+    pub(crate) fn exact_cycles(&self) -> (&[std::sync::Arc<Seg>], &[Vec<ExactRun>]) {
+        (&self.exact.0, &self.exact.1)
     }
 
     /// Whether a rational point is inside the result (`None` on its boundary).
@@ -253,8 +247,7 @@ impl BooleanResult {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] for the wrong number of inputs; the errors of
-/// [`Arrangement::new`] and [`Arrangement::faces`] (pinch points at irrational tangent
-/// vertices).
+/// [`Arrangement::new`] and [`Arrangement::faces`].
 ///
 /// # Example
 /// ```
@@ -309,10 +302,10 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     let cycles: Vec<Vec<HalfEdge>> = order.iter().map(|&i| cycles[i].clone()).collect();
     // orientation: the sign of the contour's exact area, or else its winding number just left
     // of itself: 1 (ccw) or 0 (cw)
-    let areas: Vec<(Option<BigRational>, f64)> = contours.iter().map(|c| contour_area(arr, c)).collect();
+    let areas: Vec<_> = contours.iter().map(|c| contour_area(arr, c)).collect();
     let mut orientation = vec![];
-    for (c, (a, _)) in cycles.iter().zip(&areas) {
-        let ccw = match a.as_ref().map(|a| a.cmp(&rat(0))) {
+    for (c, a) in cycles.iter().zip(&areas) {
+        let ccw = match a.exact().map(|a| a.cmp(&rat(0))) {
             Some(std::cmp::Ordering::Greater) => true,
             Some(std::cmp::Ordering::Less) => false,
             _ => arr.beside(std::slice::from_ref(c), c[0])? == 1,
@@ -340,7 +333,7 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     let depth: Vec<usize> = (0..n).map(|j| (0..n).filter(|&i| encloses[i][j]).count()).collect();
     let parents: Vec<Option<usize>> =
         (0..n).map(|j| (0..n).filter(|&i| encloses[i][j]).max_by_key(|&i| depth[i])).collect();
-    let (area, area_float) = total_area(&areas);
+    let (area, area_float) = total_area(&areas)?;
     let flip = options.orientation == Orientation::Cw;
     let orientation = orientation.into_iter().map(|o| if flip { o.reversed() } else { o }).collect();
     let (area, area_float) = if flip { (area.map(|a| -a), -area_float) } else { (area, area_float) };
@@ -363,8 +356,21 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     Ok(BooleanResult { contours: pieces.len(), path, area, area_float, parents, orientation, pieces, exact })
 }
 
-/// The segments a result uses, and per contour its runs as `(segment, lo, hi, forward)`.
-type ExactBoundary = (Vec<std::sync::Arc<Seg>>, Vec<Vec<(usize, RealAlgebraic, RealAlgebraic, bool)>>);
+/// One run of a result's exact boundary: the segment (an index into the result's segments), its
+/// parameter interval `lo < hi`, whether the contour runs along it from `lo` to `hi`, and the
+/// arrangement's vertices it starts and ends at (in the contour's direction).
+#[derive(Clone, Debug)]
+pub(crate) struct ExactRun {
+    pub(crate) seg: usize,
+    pub(crate) lo: RealAlgebraic,
+    pub(crate) hi: RealAlgebraic,
+    pub(crate) forward: bool,
+    pub(crate) start: usize,
+    pub(crate) end: usize,
+}
+
+/// The segments a result uses, and per contour its runs.
+type ExactBoundary = (Vec<std::sync::Arc<Seg>>, Vec<Vec<ExactRun>>);
 
 fn exact_boundary(arr: &Arrangement, contours: &[Vec<Run>], flip: bool) -> ExactBoundary {
     let mut segs: Vec<std::sync::Arc<Seg>> = vec![];
@@ -372,14 +378,16 @@ fn exact_boundary(arr: &Arrangement, contours: &[Vec<Run>], flip: bool) -> Exact
     let mut cycles = vec![];
     for c in contours {
         let mut cycle = vec![];
-        for r in c {
+        for (i, r) in c.iter().enumerate() {
             let k = *index.entry(r.seg).or_insert_with(|| {
                 segs.push(arr.segs[r.seg].clone());
                 segs.len() - 1
             });
             let forward = r.from <= r.to;
             let (lo, hi) = if forward { (r.from.clone(), r.to.clone()) } else { (r.to.clone(), r.from.clone()) };
-            cycle.push((k, lo, hi, forward != flip));
+            let (start, end) = (r.start, c[(i + 1) % c.len()].start);
+            let (start, end) = if flip { (end, start) } else { (start, end) };
+            cycle.push(ExactRun { seg: k, lo, hi, forward: forward != flip, start, end });
         }
         if flip {
             cycle.reverse();
@@ -397,6 +405,8 @@ pub(super) struct Run {
     pub(super) to: RealAlgebraic,
     /// The index of its first half-edge in the cycle.
     first: usize,
+    /// The arrangement's vertex it starts at.
+    start: usize,
 }
 
 impl Run {
@@ -426,7 +436,8 @@ fn runs(arr: &Arrangement, cycle: &[HalfEdge]) -> Vec<Run> {
             last.to = to;
             continue;
         }
-        out.push(Run { seg: *k, from, to, first: i });
+        let start = if h.forward { e.from } else { e.to };
+        out.push(Run { seg: *k, from, to, first: i, start });
     }
     if out.len() > 1 {
         let (first, last) = (&out[0], &out[out.len() - 1]);
@@ -434,6 +445,7 @@ fn runs(arr: &Arrangement, cycle: &[HalfEdge]) -> Vec<Run> {
             let last = out.pop().expect("two runs");
             out[0].from = last.from;
             out[0].first = last.first;
+            out[0].start = last.start;
         }
     }
     out

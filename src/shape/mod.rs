@@ -35,6 +35,7 @@ mod render;
 pub(crate) mod segment;
 
 pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, Vertex};
+pub(crate) use boolean::ExactRun;
 pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean};
 
 use crate::error::Result;

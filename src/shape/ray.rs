@@ -43,16 +43,6 @@ impl Axis {
         }
     }
 
-    /// The unit vector of the direction.
-    pub(crate) fn unit(self) -> [BigRational; 2] {
-        match self {
-            Axis::PosX => [rat(1), rat(0)],
-            Axis::NegX => [rat(-1), rat(0)],
-            Axis::PosY => [rat(0), rat(1)],
-            Axis::NegY => [rat(0), rat(-1)],
-        }
-    }
-
     /// The rotated coordinates `(u, v)` in which the ray points along `+u`: a rotation, so
     /// winding numbers are kept.
     fn rotate<T: Clone + std::ops::Neg<Output = T>>(self, x: &T, y: &T) -> (T, T) {

@@ -43,7 +43,8 @@
 //! This file holds the type, its construction from polynomials and its exact comparison. The
 //! number's other operations live beside it, one concept to a file: `rounding` (correctly
 //! rounded `f64`s and Newton narrowing), `image` (signs and images under rational maps) and
-//! `display` (`Display`, the root index, the canonical interval); with the helpers they share,
+//! `display` (`Display`, the root index, the canonical interval), `field` (exact arithmetic in
+//! `Q(α)`, crate-internal); with the helpers they share,
 //! `rational_roots` (rational-root search, the simplest rational in an interval), `evaluate`
 //! (integer polynomials at rationals and on rational intervals) and `dyadic` (exact dyadic
 //! rationals). Resultants over `Z[v]` are `poly::resultant`'s.
@@ -51,12 +52,14 @@
 mod display;
 mod dyadic;
 mod evaluate;
+mod field;
 mod image;
 mod rational_roots;
 mod rounding;
 
 pub use evaluate::sign_at;
 pub(crate) use evaluate::value_at;
+pub(crate) use field::NumberField;
 pub(crate) use rational_roots::no_rational_roots;
 pub use rational_roots::simplest_rational;
 pub(crate) use rounding::{f64_cell, newton_step_f64};
