@@ -367,7 +367,8 @@ fn lint_svg(
     each: &mut Each<'_>,
 ) -> Result<bool, String> {
     let text = std::str::from_utf8(data).map_err(|e| format!("{file}: not UTF-8: {e}"))?;
-    let shapes = read_svg(text, linter.mode).map_err(|e| format!("{file}: {e}"))?;
+    let budget = Budget::new(linter.max_work, "--max-work");
+    let shapes = read_svg(text, linter.mode, &budget).map_err(|e| format!("{file}: {e}"))?;
     for chunk in shapes.chunks(UNITS_PER_CHUNK) {
         let units: Vec<Unit> = pool.install(|| {
             chunk
