@@ -184,19 +184,17 @@ fn dot(p: &BigRational, q: &BigRational, r: &BigRational, s: &BigRational) -> Bi
 use crate::num::word::{add_ratio, mul_ratio};
 
 /// Work units of one product or sum of exact rationals of `b1` and `b2` bits ([`mul_ratio`],
-/// [`add_ratio`]): the big-integer products, `L(b1)·L(b2)` limb products, the remainder that
-/// brings a gcd down to the smaller size, Stein's gcd on the smaller one (`64·L(min)²`), and
-/// some allocation (constants fitted on this machine: composing 1,000 to 3,000 nested SVG
-/// `scale(1.0001)`, applying their product to points).
+/// [`add_ratio`]), with `L(b)` limbs: `300 + 60·(L(b1) + L(b2))` for the allocations and the
+/// remainders that bring a gcd down to the smaller size (a remainder by a word costs a 128-bit
+/// division per limb), `2·L(b1)·L(b2)` for the products and `26·L(min)²` for Stein's gcd on the
+/// smaller size (fitted on this machine: 0.45 to 2.4 times the measured time on 1,000 to 6,000 nested
+/// SVG `scale(1.0001)` (a big entry times a small one), 300 and 1,000 nested
+/// `matrix(1.0001 0.0003 -0.0007 0.9999 1.5 2.25)` (balanced gcds), their products applied
+/// to 2,000 paths).
 pub(crate) fn rational_op_work(b1: u64, b2: u64) -> f64 {
     let (l1, l2, small) = (crate::work::limbs(b1), crate::work::limbs(b2), crate::work::limbs(b1.min(b2)));
-    RATIONAL_OP_BASE + RATIONAL_OP_LIMB * (2.0 * l1 * l2 + 64.0 * small * small)
+    300.0 + 60.0 * (l1 + l2) + 2.0 * l1 * l2 + 26.0 * small * small
 }
-
-/// Work units of a rational operation besides its limb products (allocation, the gcd calls).
-const RATIONAL_OP_BASE: f64 = 300.0;
-/// Work units per limb product of a rational operation.
-const RATIONAL_OP_LIMB: f64 = 4.0;
 
 /// The sizes of an affine map's entries, `[a b c d e f]`: 0 for a zero entry, else its bit
 /// length (numerator plus denominator). Known exactly for a computed map, or estimated for one

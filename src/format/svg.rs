@@ -131,7 +131,7 @@ type ShapeResult<T> = std::result::Result<T, ShapeProblem>;
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] when the text is not well-formed XML (with the parser's line and
-/// column), or naming the element where more than 1,000,000 segments (`MAX_USE_SEGMENTS`) are
+/// column), or naming the element where more than 200,000 segments (`MAX_USE_SEGMENTS`) are
 /// drawn through `<use>`; [`Error::WorkLimit`] naming the element where the exact products of
 /// the transforms and the copies drawn by `<use>` pass `budget` (charged before they are
 /// computed). Problems of single elements are reported in [`SvgShape::contours`], not here.

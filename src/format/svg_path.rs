@@ -11,7 +11,7 @@
 //! of the text; a subpath of more than 100,000 segments is refused as it passes the limit.
 //!
 //! Elliptical arcs are not polynomial Bézier curves: an arc becomes a
-//! [`Segment::Skipped`] with its exact ends (its reason names the column of its first number), except where the SVG rules make it exact — an arc
+//! [`Segment::Skipped`] with its exact ends (its reason names the column where its command starts), except where the SVG rules make it exact — an arc
 //! whose ends coincide is omitted and one with `rx = 0` or `ry = 0` is a straight line
 //! (SVG 1.1 §F.6.2).
 //!
@@ -199,6 +199,8 @@ pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
         if sc.i >= sc.s.len() {
             break;
         }
+        // where the command starts: its letter, or its first number when it is repeated
+        let command_at = sc.i;
         let c = sc.s[sc.i];
         let cmd = if c.is_ascii_alphabetic() {
             let at = sc.i;
@@ -293,8 +295,6 @@ pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
                 cur = p2;
             }
             b'A' => {
-                sc.skip_separators();
-                let at = sc.i;
                 let (rx, ry) = (sc.number()?, sc.number()?);
                 let _rotation = sc.number()?;
                 let (large, sweep) = (sc.flag()?, sc.flag()?);
@@ -310,7 +310,7 @@ pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
                             reason: format!(
                                 "elliptical arc at column {} (rx {rx}, ry {ry}, large-arc {}, sweep {}): not a \
                                  polynomial Bézier curve, not approximated",
-                                sc.column(at),
+                                sc.column(command_at),
                                 u8::from(large),
                                 u8::from(sweep)
                             ),

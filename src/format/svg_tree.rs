@@ -22,7 +22,7 @@
 //! products that cancel common factors by one big remainder; every composition and every
 //! transformed point is charged before it is computed, and so is every element of a copy, against
 //! the budget of the whole document (the numbers of a deep chain of `scale(1.0001)` grow with its
-//! depth). At most 1,000,000 segments are drawn through `<use>` in one document
+//! depth). At most 200,000 segments are drawn through `<use>` in one document
 //! (`MAX_USE_SEGMENTS`): copies of copies would otherwise grow exponentially.
 
 use super::svg::{ShapeProblem, SvgShape, length, parse_transform, shape};
@@ -41,7 +41,7 @@ pub(crate) const NOT_DRAWN: [&str; 6] = ["defs", "symbol", "clipPath", "mask", "
 pub(crate) const MAX_USE_DEPTH: usize = 16;
 
 /// Most segments drawn through `<use>` in one document.
-pub(crate) const MAX_USE_SEGMENTS: usize = 1_000_000;
+pub(crate) const MAX_USE_SEGMENTS: usize = 200_000;
 
 /// Elements visited to estimate the rest of the work once the budget is passed (the estimate of
 /// a larger document is what these cost, a lower bound).

@@ -111,7 +111,8 @@ pub enum Command {
     /// overlap, touching, overlapping_segments, missing_extremum, kink, collinear_points,
     /// zero_length_segment, zero_length_handle, degenerate_curve, cusp, loop, bbox) with exact
     /// evidence; text (one line per finding, a summary per file) or --json (one line per
-    /// finding); exit 1 when a denied kind is found, 2 for unreadable input.
+    /// finding); exit 1 when a denied kind is found, 2 for unreadable input and for a file in
+    /// which nothing could be checked (every element skipped: nothing checked is not a pass).
     Lint(LintArgs),
     /// Check a float library's answers (JSON Lines: node type, category, loop, cusp,
     /// inflections, parameters, double point) against the exact ones: every disagreement with

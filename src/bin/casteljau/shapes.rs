@@ -203,7 +203,11 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
                 "a pair of shapes is written \"A ; B\"".into()
             }));
         }
-        let shapes = parts.iter().map(|p| operand(p, mode, &budget)).collect::<Result<Vec<_>>>()?;
+        let shapes = parts
+            .iter()
+            .zip(["A", "B"])
+            .map(|(p, name)| operand(p, mode, &budget).map_err(|e| invalid(format!("{name}: {e}"))))
+            .collect::<Result<Vec<_>>>()?;
         let result = casteljau::shape::boolean(op, &shapes, options, &budget)?;
         let verdict = match against.shape(line, mode)? {
             Some(found) => Some(check_against(op, &shapes, options, &result, &found, &tol, &budget)?),
@@ -317,7 +321,12 @@ fn run_arrange(args: &ArrangeArgs, out: &mut dyn Write) -> Result<()> {
         })
         .collect::<Result<Vec<_>>>()?;
     let budget = Budget::new(args.max_work, "--max-work");
-    let shapes = args.shapes.iter().map(|s| operand(s, mode, &budget)).collect::<Result<Vec<_>>>()?;
+    let shapes = args
+        .shapes
+        .iter()
+        .enumerate()
+        .map(|(k, s)| operand(s, mode, &budget).map_err(|e| invalid(format!("shape {}: {e}", k + 1))))
+        .collect::<Result<Vec<_>>>()?;
     let arr = Arrangement::new(&shapes, &budget)?;
     let faces = arr.faces()?;
     let locations = points.iter().map(|q| arr.locate(q)).collect::<Result<Vec<_>>>()?;
