@@ -50,8 +50,14 @@ use read_fonts::{FileRef, FontRef, TableProvider};
 /// usually ≤ 3).
 pub const MAX_COMPONENT_DEPTH: usize = 16;
 
-/// Most points of one glyph after composition.
-pub const MAX_GLYPH_POINTS: usize = 1 << 20;
+/// Most points and component references of one glyph after composition (a composite that
+/// uses a glyph twice counts that glyph's points twice): counted from the glyph headers, with
+/// memoisation per glyph id, before any point is composed.
+pub const MAX_GLYPH_POINTS: usize = 100_000;
+
+/// Most `(code point, glyph)` pairs read from one `cmap` subtable for glyph names (a valid
+/// subtable has at most one per code point, 0x110000).
+const MAX_CMAP_PAIRS: usize = 0x11_0000;
 
 type P = Point<BigRational>;
 
@@ -72,6 +78,8 @@ pub struct Font<'a> {
     post: Option<Post<'a>>,
     /// Normalized variation coordinates (empty: the default instance).
     coords: Vec<F2Dot14>,
+    /// The names derived from `cmap` for a font that stores none, made on first use.
+    derived_names: std::sync::OnceLock<Vec<String>>,
 }
 
 impl<'a> Font<'a> {
@@ -108,7 +116,7 @@ impl<'a> Font<'a> {
             Outlines::Cff(cff)
         };
         let post = font.post().ok();
-        Ok(Font { font, outlines, num_glyphs, post, coords: vec![] })
+        Ok(Font { font, outlines, num_glyphs, post, coords: vec![], derived_names: std::sync::OnceLock::new() })
     }
 
     /// The variation axes: `(tag, min, default, max)` in user units (`fvar`); empty for a font
@@ -185,25 +193,104 @@ impl<'a> Font<'a> {
         matches!(self.outlines, Outlines::Cff(_))
     }
 
-    /// The glyph's PostScript name (`post` table, or the CFF charset), when the font has one.
+    /// The glyph's name: its PostScript name from the `post` table (versions 1 and 2) or the CFF
+    /// charset, and for a font that stores none (`post` version 3, as CFF2 and many web fonts
+    /// have) the name fontTools derives: `cid01234` for the glyphs of a CID-keyed CFF font (the
+    /// CID, at least five digits); else from the Unicode subtables of `cmap` (platform 0, or
+    /// platform 3 with encoding 0, 1 or 10), the smallest code point mapped to the glyph as
+    /// `uniXXXX` (`uXXXXX` beyond the BMP), `.alt1`, `.alt2`, … added for the second, third, …
+    /// glyph of that name in glyph order; else `glyph01234` (the glyph id, at least five
+    /// digits); `.notdef` for glyph 0. (fontTools first looks the code point up in the Adobe
+    /// Glyph List For New Fonts, naming U+0041 `A` where casteljau writes `uni0041`; casteljau
+    /// does not carry that list.) `None` only for an id beyond the font's glyphs.
+    ///
+    /// # Example
+    /// ```
+    /// use casteljau::format::Font;
+    /// let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/NotoSansJP-Regular.subset.otf"));
+    /// let font = Font::open(data, 0).unwrap(); // CID-keyed CFF: no names stored
+    /// assert_eq!(font.glyph_name(0).as_deref(), Some(".notdef"));
+    /// assert!(font.glyph_name(1).unwrap().starts_with("cid"));
+    /// assert_eq!(font.glyph_name(font.num_glyphs()), None);
+    /// ```
     pub fn glyph_name(&self, gid: u32) -> Option<String> {
+        if gid >= self.num_glyphs {
+            return None;
+        }
         if let Some(name) = u16::try_from(gid).ok().and_then(|g| self.post.as_ref()?.glyph_name(GlyphId16::new(g))) {
             return Some(name.to_string());
         }
         if let Outlines::Cff(cff) = &self.outlines
-            && !cff.is_cid()
+            && let Some(charset) = cff.charset()
         {
-            let sid = cff.charset()?.string_id(GlyphId::new(gid)).ok()?;
-            return cff.string(sid).map(|s| String::from_utf8_lossy(s).into_owned());
+            if gid == 0 {
+                return Some(".notdef".into());
+            }
+            if let Ok(sid) = charset.string_id(GlyphId::new(gid)) {
+                if cff.is_cid() {
+                    return Some(format!("cid{:05}", sid.to_u16()));
+                }
+                if let Some(s) = cff.string(sid) {
+                    return Some(String::from_utf8_lossy(s).into_owned());
+                }
+            }
         }
-        None
+        self.derived_names.get_or_init(|| self.names_from_cmap()).get(gid as usize).cloned()
+    }
+
+    /// Every glyph's name as fontTools derives it from `cmap` (see [`Self::glyph_name`]).
+    fn names_from_cmap(&self) -> Vec<String> {
+        let n = self.num_glyphs as usize;
+        let mut smallest: Vec<Option<u32>> = vec![None; n];
+        if let Ok(cmap) = self.font.cmap() {
+            let limits =
+                read_fonts::tables::cmap::CmapIterLimits { max_char: char::MAX as u32, glyph_count: self.num_glyphs };
+            for record in cmap.encoding_records() {
+                let (platform, encoding) = (record.platform_id(), record.encoding_id());
+                let unicode = platform == read_fonts::tables::cmap::PlatformId::Unicode
+                    || (platform == read_fonts::tables::cmap::PlatformId::Windows && matches!(encoding, 0 | 1 | 10));
+                let Ok(subtable) = record.subtable(cmap.offset_data()) else { continue };
+                if !unicode {
+                    continue;
+                }
+                for (code, gid) in subtable.iter_with_limits(limits).take(MAX_CMAP_PAIRS) {
+                    if let Some(s) = smallest.get_mut(gid.to_u32() as usize) {
+                        *s = Some(s.map_or(code, |c| c.min(code)));
+                    }
+                }
+            }
+        }
+        let mut uses: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+        (0..n)
+            .map(|gid| match smallest[gid] {
+                _ if gid == 0 => ".notdef".to_string(),
+                None => format!("glyph{gid:05}"),
+                Some(code) => {
+                    let base = if code <= 0xFFFF { format!("uni{code:04X}") } else { format!("u{code:X}") };
+                    let count = uses.entry(base.clone()).or_insert(0);
+                    *count += 1;
+                    if *count > 1 { format!("{base}.alt{}", *count - 1) } else { base }
+                }
+            })
+            .collect()
+    }
+
+    /// `glyph 12 (name)`, how messages name a glyph.
+    fn label(&self, gid: u32) -> String {
+        match self.glyph_name(gid) {
+            Some(name) => format!("glyph {gid} ({name})"),
+            None => format!("glyph {gid}"),
+        }
     }
 
     /// The glyph's contours in font units, exactly (see the module documentation).
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming the glyph for malformed glyph data, a composite nested
-    /// deeper than 16 (`MAX_COMPONENT_DEPTH`) (or cyclic), or more than 2²⁰ (`MAX_GLYPH_POINTS`) points.
+    /// deeper than 16 (`MAX_COMPONENT_DEPTH`) or cyclic, or one that decomposes into more than
+    /// 100,000 (`MAX_GLYPH_POINTS`) points and component references (counted from the glyph
+    /// headers before anything is composed: a glyph that uses the previous one twice, 16 levels
+    /// deep, is refused at once).
     pub fn outline(&self, gid: u32) -> Result<Vec<Contour>> {
         if gid >= self.num_glyphs {
             return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
@@ -238,8 +325,17 @@ impl<'a> Font<'a> {
         }
         match &self.outlines {
             Outlines::Glyf { glyf, loca } => {
-                let mut raw = vec![];
-                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut raw)?;
+                let label = |g: u32| self.label(g);
+                let mut sizes = std::collections::HashMap::new();
+                let size = decomposed_size(glyf, loca, gid, 0, &mut sizes, &mut vec![], &label)?;
+                if size > MAX_GLYPH_POINTS {
+                    return Err(fail(format!(
+                        "{}: its composite decomposes into more than {MAX_GLYPH_POINTS} points and component \
+                         references, the limit (refused before composing)",
+                        self.label(gid)
+                    )));
+                }
+                let raw = glyf_points(glyf, loca, gid, &mut std::collections::HashMap::new(), &label)?;
                 let lone_points = raw.iter().filter(|c| c.len() == 1).map(|c| c[0].0.clone()).collect();
                 let (contours, numbers) = raw.iter().map(quadratic_contour).unzip();
                 Ok(super::NumberedOutline { contours, numbers, lone_points })
@@ -371,55 +467,98 @@ fn int(v: i16) -> BigRational {
     rat(v as i64)
 }
 
-/// Appends the glyph's contours, mapped by `m`, to `out`.
+/// The points and component references of a glyph after composition, counted from the glyph
+/// headers (memoised per glyph id in `sizes`; `path`: the composites being counted, for
+/// cycles), saturating just past [`MAX_GLYPH_POINTS`].
+fn decomposed_size(
+    glyf: &Glyf<'_>,
+    loca: &Loca<'_>,
+    gid: u32,
+    depth: usize,
+    sizes: &mut std::collections::HashMap<u32, usize>,
+    path: &mut Vec<u32>,
+    label: &dyn Fn(u32) -> String,
+) -> Result<usize> {
+    if let Some(&n) = sizes.get(&gid) {
+        return Ok(n);
+    }
+    if path.contains(&gid) {
+        return Err(fail(format!("{}: its composite uses itself (a cycle of components)", label(path[0]))));
+    }
+    if depth > MAX_COMPONENT_DEPTH {
+        return Err(fail(format!(
+            "{}: composite nesting deeper than {MAX_COMPONENT_DEPTH} (at {})",
+            label(path[0]),
+            label(gid)
+        )));
+    }
+    let glyph = loca.get_glyf(GlyphId::new(gid), glyf).map_err(|e| fail(format!("{}: {e}", label(gid))))?;
+    let n = match glyph {
+        None => 0,
+        Some(Glyph::Simple(g)) => g.num_points(),
+        Some(Glyph::Composite(g)) => {
+            path.push(gid);
+            let mut n = 0usize;
+            for comp in g.components() {
+                let own = decomposed_size(glyf, loca, comp.glyph.to_u32(), depth + 1, sizes, path, label)?;
+                n = n.saturating_add(own).saturating_add(1).min(MAX_GLYPH_POINTS + 1);
+            }
+            path.pop();
+            n
+        }
+    };
+    sizes.insert(gid, n);
+    Ok(n)
+}
+
+/// The glyph's contours in its own units, composites composed exactly, each glyph composed once
+/// (memoised per glyph id in `done`: a glyph used twice is copied, not composed again). The
+/// size is checked by [`decomposed_size`] first.
 fn glyf_points(
     glyf: &Glyf<'_>,
     loca: &Loca<'_>,
     gid: u32,
-    m: &Affine,
-    depth: usize,
-    out: &mut Vec<RawContour>,
-) -> Result<()> {
-    if depth > MAX_COMPONENT_DEPTH {
-        return Err(fail(format!("glyph {gid}: composite nesting deeper than {MAX_COMPONENT_DEPTH} (or cyclic)")));
+    done: &mut std::collections::HashMap<u32, std::rc::Rc<Vec<RawContour>>>,
+    label: &dyn Fn(u32) -> String,
+) -> Result<std::rc::Rc<Vec<RawContour>>> {
+    if let Some(points) = done.get(&gid) {
+        return Ok(points.clone());
     }
-    let glyph = loca.get_glyf(GlyphId::new(gid), glyf).map_err(|e| fail(format!("glyph {gid}: {e}")))?;
+    let glyph = loca.get_glyf(GlyphId::new(gid), glyf).map_err(|e| fail(format!("{}: {e}", label(gid))))?;
+    let mut out: Vec<RawContour> = vec![];
     match glyph {
-        None => Ok(()),
+        None => {}
         Some(Glyph::Simple(g)) => {
-            // a glyph's own points, not a component's: no map to apply (exact arithmetic on
-            // every coordinate is most of the time of reading a font)
-            let identity = *m == Affine::identity();
             let mut points = g.points();
             let mut start = 0usize;
             for end in g.end_pts_of_contours() {
                 let end = end.get() as usize;
                 if end < start || end >= g.num_points() {
-                    return Err(fail(format!("glyph {gid}: contour end {end} out of order")));
+                    return Err(fail(format!("{}: contour end {end} out of order", label(gid))));
                 }
                 let mut c = Vec::with_capacity(end + 1 - start);
                 for _ in start..=end {
-                    let p = points.next().ok_or_else(|| fail(format!("glyph {gid}: too few points")))?;
-                    let q = Point::new(vec![int(p.x), int(p.y)]);
-                    c.push((if identity { q } else { m.apply(&q) }, p.on_curve));
+                    let p = points.next().ok_or_else(|| fail(format!("{}: too few points", label(gid))))?;
+                    c.push((Point::new(vec![int(p.x), int(p.y)]), p.on_curve));
                 }
                 out.push(c);
                 start = end + 1;
             }
-            let total: usize = out.iter().map(Vec::len).sum();
-            if total > MAX_GLYPH_POINTS {
-                return Err(Error::TooLarge { what: "points in one glyph", value: total, limit: MAX_GLYPH_POINTS });
-            }
-            Ok(())
         }
         Some(Glyph::Composite(g)) => {
+            // the points composed so far, by number: where each contour starts
+            let mut starts: Vec<usize> = vec![];
+            let mut count = 0usize;
             for comp in g.components() {
                 let t = &comp.transform;
                 let linear = Affine([f2dot14(t.xx), f2dot14(t.yx), f2dot14(t.xy), f2dot14(t.yy), rat(0), rat(0)]);
-                let before = out.len();
-                // the component in its own units, mapped by the 2×2 part only; placed below
-                let mut own = vec![];
-                glyf_points(glyf, loca, comp.glyph.to_u32(), &linear, depth + 1, &mut own)?;
+                let own = glyf_points(glyf, loca, comp.glyph.to_u32(), done, label)?;
+                // the component in the composite's units: its 2×2 part, then the offset
+                let scaled: Vec<RawContour> = if linear == Affine::identity() {
+                    own.as_ref().clone()
+                } else {
+                    own.iter().map(|c| c.iter().map(|(p, on)| (linear.apply(p), *on)).collect()).collect()
+                };
                 let offset = match comp.anchor {
                     Anchor::Offset { x, y } => {
                         let o = Point::new(vec![int(x), int(y)]);
@@ -433,48 +572,37 @@ fn glyf_points(
                     }
                     Anchor::Point { base, component } => {
                         // point matching: the component's point lands on the base's point
-                        // (both in the composite's units, before the outer map)
-                        let inv = m_inverse_points(out, before, m)?;
-                        let b = inv.get(base as usize).ok_or_else(|| {
-                            fail(format!("glyph {gid}: anchor point {base} beyond the composed points"))
+                        let b = nth_point(&out, &starts, base as usize).ok_or_else(|| {
+                            fail(format!("{}: anchor point {base} beyond the composed points", label(gid)))
                         })?;
-                        let own_points: Vec<&P> = own.iter().flatten().map(|(p, _)| p).collect();
-                        let c = own_points.get(component as usize).ok_or_else(|| {
-                            fail(format!("glyph {gid}: component point {component} beyond its points"))
+                        let c = scaled.iter().flatten().nth(component as usize).map(|(p, _)| p).ok_or_else(|| {
+                            fail(format!("{}: component point {component} beyond its points", label(gid)))
                         })?;
                         b.sub(c)
                     }
                 };
-                let place = m.compose(&Affine([
-                    rat(1),
-                    rat(0),
-                    rat(0),
-                    rat(1),
-                    offset.coords[0].clone(),
-                    offset.coords[1].clone(),
-                ]));
-                out.extend(own.into_iter().map(|c| c.into_iter().map(|(p, on)| (place.apply(&p), on)).collect()));
+                let moved = offset.coords.iter().any(|x| *x != rat(0));
+                for c in scaled {
+                    starts.push(count);
+                    count += c.len();
+                    out.push(if moved { c.into_iter().map(|(p, on)| (p.add(&offset), on)).collect() } else { c });
+                }
             }
-            Ok(())
         }
     }
+    let total: usize = out.iter().map(Vec::len).sum();
+    if total > MAX_GLYPH_POINTS {
+        return Err(Error::TooLarge { what: "points in one glyph", value: total, limit: MAX_GLYPH_POINTS });
+    }
+    let out = std::rc::Rc::new(out);
+    done.insert(gid, out.clone());
+    Ok(out)
 }
 
-/// The points composed so far in the composite's own units: the outer map `m` of a composite
-/// is only a translation-free product of 2×2 parts and offsets; point matching needs the
-/// untransformed points, so they are recomputed by inverting `m` exactly.
-fn m_inverse_points(out: &[RawContour], upto: usize, m: &Affine) -> Result<Vec<P>> {
-    let [a, b, c, d, e, f] = &m.0;
-    let det = a * d - b * c;
-    if det == rat(0) {
-        return Err(fail("point-matched component under a singular transform".into()));
-    }
-    let inv = Affine([d / &det, -b / &det, -c / &det, a / &det, rat(0), rat(0)]);
-    Ok(out[..upto]
-        .iter()
-        .flatten()
-        .map(|(p, _)| inv.apply(&Point::new(vec![&p.coords[0] - e, &p.coords[1] - f])))
-        .collect())
+/// Point `k` of `contours`, numbered in order (`starts`: where each contour's points start).
+fn nth_point<'c>(contours: &'c [RawContour], starts: &[usize], k: usize) -> Option<&'c P> {
+    let c = starts.partition_point(|&s| s <= k).checked_sub(1)?;
+    contours.get(c)?.get(k - starts[c]).map(|(p, _)| p)
 }
 
 fn midpoint(a: &P, b: &P) -> P {

@@ -1,7 +1,13 @@
 //! SVG documents read exactly: every `<path>` and the Bézier-exact basic shapes (`<line>`,
-//! `<polyline>`, `<polygon>`, `<rect>`), with the `transform`s of the element and its ancestors
-//! applied as exact rational matrices. XML is parsed by `roxmltree`; path data by
-//! [`crate::format::svg_path`].
+//! `<polyline>`, `<polygon>`, `<rect>`) that the document draws, with the `transform`s of the
+//! element and its ancestors applied as exact rational matrices. XML is parsed by `roxmltree`;
+//! path data by [`crate::format::svg_path`].
+//!
+//! What is drawn follows SVG's rendering tree: the content of `<defs>`, `<symbol>`,
+//! `<clipPath>`, `<mask>`, `<marker>` and `<pattern>` is not drawn where it stands, nor an
+//! element with `display="none"`; `<use>` draws a copy of the element it refers to under its own
+//! transform and `translate(x, y)`; see `format::svg_tree` for every rule (nested `<svg>`,
+//! `<switch>`, references that cannot be followed).
 //!
 //! What is not a polynomial Bézier curve is never approximated: `<circle>` and `<ellipse>` are
 //! listed with a note, the rounded corners of a `<rect>` and arcs inside paths are
@@ -10,14 +16,17 @@
 //! 90° (with or without a centre) and `skewX`/`skewY` by 0° or ±45°. Lengths are plain numbers
 //! or `px`; other units make a per-element error.
 //!
+//! Reading takes time linear in the text, plus the exact products of the transforms, which are
+//! charged against a [`Budget`] for the whole document before they are computed.
+//!
 //! # Example
 //! ```
 //! use casteljau::format::read_svg;
-//! use casteljau::num::NumberMode;
+//! use casteljau::{num::NumberMode, work::Budget};
 //! let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
 //!   <g transform="translate(10 0) scale(2)"><path id="p" d="M0 0 Q1 1 2 0"/></g>
 //! </svg>"#;
-//! let shapes = read_svg(svg, NumberMode::Exact).unwrap();
+//! let shapes = read_svg(svg, NumberMode::Exact, &Budget::unlimited()).unwrap();
 //! assert_eq!(shapes[0].id.as_deref(), Some("p"));
 //! let casteljau::format::Segment::Bezier(q) = &shapes[0].contours.as_ref().unwrap()[0].segments[0] else { panic!() };
 //! assert_eq!(q[1].to_string(), "(12, 2)");
@@ -28,24 +37,31 @@ use crate::format::{Affine, Contour, Segment, svg_path};
 use crate::num::parse::{NumberMode, parse_number_in};
 use crate::num::point::Point;
 use crate::num::scalar::{Exact, Scalar, rat};
+use crate::work::Budget;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// Most XML nodes accepted in one document.
 pub const MAX_SVG_NODES: u32 = 10_000_000;
 
-/// One shape element of an SVG document, in document order.
+/// One shape element of an SVG document as drawn, in drawing order (document order, with the
+/// copies a `<use>` draws where the `<use>` stands), or a `<use>` that draws nothing because
+/// of a problem (tag `use`).
 #[derive(Clone, Debug)]
 pub struct SvgShape {
-    /// 0-based index among the document's shape elements (`path`, `rect`, `line`, `polyline`,
-    /// `polygon`, `circle`, `ellipse`).
+    /// 0-based index among the document's shapes in drawing order (`path`, `rect`, `line`,
+    /// `polyline`, `polygon`, `circle`, `ellipse`, and `use` with a problem).
     pub index: usize,
-    /// The element's `id`, when it has one.
+    /// The element's `id`, when it has one (`None` for a copy drawn by `<use>`: the id names
+    /// the original).
     pub id: Option<String>,
     /// The tag name.
     pub tag: String,
-    /// 1-based line of the element in the file.
+    /// 1-based line of the element in the file (of the original, for a copy).
     pub line: usize,
+    /// For a copy drawn by `<use>`, the line of that `<use>` (the outermost one, when copies
+    /// nest).
+    pub use_line: Option<usize>,
     /// The subpaths in user space (all transforms applied), or why the element is not read:
     /// skipped (a circle or ellipse, a non-rational transform) or invalid (bad path data, a unit).
     pub contours: std::result::Result<Vec<Contour>, ShapeProblem>,
@@ -58,7 +74,7 @@ impl SvgShape {
     /// ```
     /// use casteljau::format::{Element, read_svg};
     /// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 H1 V1 Z"/><rect id="r" width="1" height="1"/></svg>"#;
-    /// let shapes = read_svg(svg, casteljau::num::NumberMode::Exact).unwrap();
+    /// let shapes = read_svg(svg, casteljau::num::NumberMode::Exact, &casteljau::work::Budget::unlimited()).unwrap();
     /// assert_eq!(shapes[0].element(), Element::Index(0));
     /// assert_eq!(shapes[1].element(), Element::Id("r".into()));
     /// ```
@@ -87,7 +103,7 @@ impl ShapeProblem {
     }
 
     /// The same kind of problem with `prefix` before its text.
-    fn within(self, prefix: &str) -> Self {
+    pub(crate) fn within(self, prefix: &str) -> Self {
         match self {
             ShapeProblem::Skipped(m) => ShapeProblem::Skipped(format!("{prefix}{m}")),
             ShapeProblem::Invalid(m) => ShapeProblem::Invalid(format!("{prefix}{m}")),
@@ -111,83 +127,87 @@ impl std::fmt::Display for ShapeProblem {
 
 type ShapeResult<T> = std::result::Result<T, ShapeProblem>;
 
-/// The shape elements of an SVG document (see the module documentation).
+/// The shapes an SVG document draws (see the module documentation), in drawing order.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] when the text is not well-formed XML (with the parser's line and
-/// column). Problems of single elements are reported in [`SvgShape::contours`], not here.
-pub fn read_svg(text: &str, mode: NumberMode) -> Result<Vec<SvgShape>> {
+/// column), or naming the element where more than 200,000 segments (`MAX_USE_SEGMENTS`) are
+/// drawn through `<use>`; [`Error::WorkLimit`] naming the element where the exact products of
+/// the transforms and the copies drawn by `<use>` pass `budget` (charged before they are
+/// computed). Problems of single elements are reported in [`SvgShape::contours`], not here.
+///
+/// # Example
+/// ```
+/// use casteljau::format::read_svg;
+/// use casteljau::{num::NumberMode, work::Budget};
+/// let svg = r##"<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink">
+///   <defs><path id="tri" d="M0 0 H2 V2 Z"/></defs>
+///   <use xlink:href="#tri" x="10"/>
+///   <use href="#tri" transform="scale(2)"/>
+/// </svg>"##;
+/// let shapes = read_svg(svg, NumberMode::Exact, &Budget::unlimited()).unwrap();
+/// assert_eq!(shapes.len(), 2); // the two copies; the definition is not drawn
+/// assert_eq!((shapes[0].line, shapes[0].use_line), (2, Some(3)));
+/// let c = shapes[1].contours.as_ref().unwrap();
+/// assert_eq!(format!("{:?}", c[0].segments[0]), format!("{:?}", casteljau::format::parse_path("M0 0 H4", NumberMode::Exact).unwrap()[0].segments[0]));
+/// // deeply nested transforms are charged before their numbers are multiplied out
+/// let deep = format!("<svg>{}<path d=\"M0 0 H1 V1 Z\"/>{}</svg>", "<g transform=\"scale(1.0001)\">".repeat(300), "</g>".repeat(300));
+/// let e = read_svg(&deep, NumberMode::Exact, &Budget::new(1e3, "--max-work")).unwrap_err();
+/// assert!(e.to_string().contains("--max-work"), "{e}");
+/// ```
+pub fn read_svg(text: &str, mode: NumberMode, budget: &Budget) -> Result<Vec<SvgShape>> {
     let options = roxmltree::ParsingOptions { allow_dtd: true, nodes_limit: MAX_SVG_NODES, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, options)
         .map_err(|e| Error::InvalidArgument { message: format!("not an SVG (XML) document: {e}") })?;
-    let mut out = vec![];
-    for node in doc.descendants().filter(|n| n.is_element()) {
-        let tag = node.tag_name().name();
-        if !matches!(tag, "path" | "rect" | "line" | "polyline" | "polygon" | "circle" | "ellipse") {
-            continue;
-        }
-        let line = doc.text_pos_at(node.range().start).row as usize;
-        let contours = transform_of(node, mode).and_then(|m| {
-            let shape = shape(node, tag, mode)?;
-            Ok(shape
-                .into_iter()
-                .map(|c| Contour {
-                    segments: c.segments.iter().map(|s| m.apply_segment(s)).collect(),
-                    closed: c.closed,
-                })
-                .collect())
-        });
-        out.push(SvgShape {
-            index: out.len(),
-            id: node.attribute("id").map(str::to_string),
-            tag: tag.to_string(),
-            line,
-            contours,
-        });
-    }
-    Ok(out)
+    let mut walker = super::svg_tree::Walker::new(&doc, text, mode, budget);
+    walker.walk()?;
+    Ok(walker.shapes)
 }
 
-/// An SVG document as the one shape its elements fill: every shape element of [`read_svg`]
-/// (transforms applied), in document order, each subpath closed for fill as SVG fills it
+/// An SVG document as the one shape its elements fill: every shape of [`read_svg`]
+/// (transforms applied), in drawing order, each subpath closed for fill as SVG fills it
 /// (a closing line as SVG fills it) and empty ones left out, all in one
 /// [`Shape`](crate::shape::Shape), so where elements overlap their windings add up (the fill
 /// rule is the operation's, e.g. [`crate::shape::BooleanOptions::fill`]). Nothing is
 /// approximated: an element that is not made of polynomial Bézier pieces is refused.
 ///
 /// # Errors
-/// As [`read_svg`] for text that is not XML; [`Error::InvalidArgument`] naming the element
+/// As [`read_svg`] for the document; [`Error::InvalidArgument`] naming the element
 /// (`line 3: <circle id="c">: …`, or `line 3: <circle> (shape 2): …` by its index among the
-/// shape elements when it has no `id`) for an element that is skipped (a circle, an ellipse, a
-/// transform that is not rational), malformed (bad path data, a unit), or holds a piece that is
-/// no polynomial Bézier curve (an arc, a rounded corner); [`Error::TooLarge`] for a contour of
+/// shapes when it has no `id`, `line 3: <path> (shape 2, drawn by the <use> on line 9): …` for
+/// a copy) for an element that is skipped (a circle, an ellipse, a transform that is not
+/// rational), malformed (bad path data, a unit, a `<use>` that cannot be followed), or holds a
+/// piece that is no polynomial Bézier curve (an arc, a rounded corner), or for a subpath of
 /// more than 100,000 (`MAX_PATH_SEGMENTS`) segments.
 ///
 /// # Example
 /// ```
 /// use casteljau::format::fill_svg;
-/// use casteljau::num::NumberMode;
+/// use casteljau::{num::NumberMode, work::Budget};
 /// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
 ///   <rect width="4" height="4"/>
 ///   <g transform="translate(10 0)"><path d="M0 0 L2 0 L1 2"/></g>
 /// </svg>"#;
-/// let shape = fill_svg(svg, NumberMode::Exact).unwrap();
+/// let shape = fill_svg(svg, NumberMode::Exact, &Budget::unlimited()).unwrap();
 /// assert_eq!(shape.path().contours().len(), 2); // the rectangle and the closed triangle
 /// let arc = r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 H2 V2 H0 Z"/><circle id="c" r="1"/></svg>"#;
-/// let e = fill_svg(arc, NumberMode::Exact).unwrap_err();
+/// let e = fill_svg(arc, NumberMode::Exact, &Budget::unlimited()).unwrap_err();
 /// assert!(e.to_string().starts_with(r#"line 1: <circle id="c">: "#), "{e}");
 /// ```
-pub fn fill_svg(text: &str, mode: NumberMode) -> Result<crate::shape::Shape> {
+pub fn fill_svg(text: &str, mode: NumberMode, budget: &Budget) -> Result<crate::shape::Shape> {
     let mut contours = vec![];
-    for s in read_svg(text, mode)? {
-        let at = || match &s.id {
-            Some(id) => format!("line {}: <{} id=\"{id}\">", s.line, s.tag),
-            None => format!("line {}: <{}> (shape {})", s.line, s.tag, s.index),
+    for s in read_svg(text, mode, budget)? {
+        let at = || match (&s.id, s.use_line) {
+            (Some(id), _) => format!("line {}: <{} id=\"{id}\">", s.line, s.tag),
+            (None, None) => format!("line {}: <{}> (shape {})", s.line, s.tag, s.index),
+            (None, Some(u)) => {
+                format!("line {}: <{}> (shape {}, drawn by the <use> on line {u})", s.line, s.tag, s.index)
+            }
         };
         let within =
             |problem: &dyn std::fmt::Display| Error::InvalidArgument { message: format!("{}: {problem}", at()) };
-        for c in s.contours.as_ref().map_err(|problem| within(problem))? {
-            let segs = svg_path::close_for_fill(c).map_err(|e| within(&e))?;
+        for (k, c) in s.contours.as_ref().map_err(|problem| within(problem))?.iter().enumerate() {
+            let segs = svg_path::close_for_fill(c).map_err(|e| within(&format!("subpath {k}: {e}")))?;
             if !segs.is_empty() {
                 contours.push(segs);
             }
@@ -203,7 +223,7 @@ fn pt(x: BigRational, y: BigRational) -> P {
 }
 
 /// The element's own contours in its user space.
-fn shape(node: roxmltree::Node<'_, '_>, tag: &str, mode: NumberMode) -> ShapeResult<Vec<Contour>> {
+pub(crate) fn shape(node: roxmltree::Node<'_, '_>, tag: &str, mode: NumberMode) -> ShapeResult<Vec<Contour>> {
     let len = |name: &str| length(node, name, mode);
     let line = |a: P, b: P| Segment::Bezier(vec![a, b]);
     match tag {
@@ -297,7 +317,11 @@ fn rect(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> ShapeResult<Vec<Cont
 }
 
 /// A length attribute: a number, optionally with `px`; absent means 0.
-fn length(node: roxmltree::Node<'_, '_>, name: &str, mode: NumberMode) -> std::result::Result<BigRational, String> {
+pub(crate) fn length(
+    node: roxmltree::Node<'_, '_>,
+    name: &str,
+    mode: NumberMode,
+) -> std::result::Result<BigRational, String> {
     let Some(v) = node.attribute(name) else { return Ok(rat(0)) };
     let v = v.trim();
     let v = v.strip_suffix("px").unwrap_or(v);
@@ -305,20 +329,6 @@ fn length(node: roxmltree::Node<'_, '_>, name: &str, mode: NumberMode) -> std::r
         return Err(format!("{name}=\"{v}\": only plain numbers and px lengths are read exactly"));
     }
     parse_number_in(v, Position { line: None, column: 1, token: 1 }, mode).map_err(|e| format!("{name}: {e}"))
-}
-
-/// The product of the `transform`s of the element and its ancestors (outermost first).
-fn transform_of(node: roxmltree::Node<'_, '_>, mode: NumberMode) -> ShapeResult<Affine> {
-    let mut chain: Vec<roxmltree::Node<'_, '_>> = node.ancestors().filter(|n| n.is_element()).collect();
-    chain.reverse();
-    let mut m = Affine::identity();
-    for n in chain {
-        if let Some(t) = n.attribute("transform") {
-            let own = parse_transform(t, mode).map_err(|e| e.within(&format!("transform=\"{t}\": ")))?;
-            m = m.compose(&own);
-        }
-    }
-    Ok(m)
 }
 
 /// An SVG transform list, exactly.

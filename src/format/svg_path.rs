@@ -7,10 +7,11 @@
 //! smooth reflections (`S` reflects the previous `C`/`S` control point, `T` the previous
 //! `Q`/`T` one, else the current point), compact numbers (`1.5.5` is `1.5 .5`, `1-2` is
 //! `1 -2`) and packed arc flags (`a1 1 0 01 5 5`). `Z` adds the closing line when it has
-//! non-zero length and returns to the subpath's start.
+//! non-zero length and returns to the subpath's start. Reading takes time linear in the length
+//! of the text; a subpath of more than 100,000 segments is refused as it passes the limit.
 //!
 //! Elliptical arcs are not polynomial Bézier curves: an arc becomes a
-//! [`Segment::Skipped`] with its exact ends, except where the SVG rules make it exact — an arc
+//! [`Segment::Skipped`] with its exact ends (its reason names the column where its command starts), except where the SVG rules make it exact — an arc
 //! whose ends coincide is omitted and one with `rx = 0` or `ry = 0` is a straight line
 //! (SVG 1.1 §F.6.2).
 //!
@@ -37,7 +38,7 @@ use crate::format::{Contour, Segment};
 use crate::num::parse::{NumberMode, parse_number_in};
 use crate::num::point::Point;
 use crate::num::scalar::{Scalar, rat};
-use crate::path::ClosedPath;
+use crate::path::{ClosedPath, MAX_PATH_SEGMENTS};
 use num_rational::BigRational;
 
 /// Longest accepted path data, in bytes.
@@ -56,6 +57,9 @@ struct Scanner<'a> {
     i: usize,
     numbers: usize,
     mode: NumberMode,
+    /// The last column counted: `(byte, column)`, so that columns asked in increasing order
+    /// cost the text between them only.
+    counted: std::cell::Cell<(usize, usize)>,
 }
 
 impl Scanner<'_> {
@@ -71,8 +75,15 @@ impl Scanner<'_> {
         }
     }
 
+    /// The 1-based character column of byte `i`, counted from the last column asked for (only
+    /// for messages and arcs: counting from the start for every number made reading quadratic in
+    /// the length of the path data).
     fn column(&self, i: usize) -> usize {
-        self.text[..i].chars().count() + 1
+        let (byte, column) = self.counted.get();
+        let column =
+            if i >= byte { column + self.text[byte..i].chars().count() } else { self.text[..i].chars().count() + 1 };
+        self.counted.set((i, column));
+        column
     }
 
     fn position(&self, i: usize) -> Position {
@@ -125,9 +136,14 @@ impl Scanner<'_> {
             }
         }
         self.i = j;
-        let position = self.position(start);
         self.numbers += 1;
-        parse_number_in(&self.text[start..j], position, self.mode)
+        // the position goes into the error only: the column is counted when there is one
+        parse_number_in(&self.text[start..j], Position::default(), self.mode).map_err(|mut e| {
+            if let Error::ParseNumber { position, .. } = &mut e {
+                *position = Position { line: None, column: self.column(start), token: self.numbers };
+            }
+            e
+        })
     }
 
     fn pair(&mut self) -> Result<P> {
@@ -160,12 +176,14 @@ impl Scanner<'_> {
 /// # Errors
 /// [`Error::ParseNumber`] naming the token and its column for a malformed number, a missing
 /// coordinate, an unknown command or path data that does not start with a move-to;
-/// [`Error::TooLarge`] beyond 64 MiB (`MAX_PATH_BYTES`).
+/// [`Error::TooLarge`] beyond 64 MiB (`MAX_PATH_BYTES`); [`Error::InvalidArgument`] naming the
+/// subpath and column where a subpath grows past 100,000 segments (`MAX_PATH_SEGMENTS`, the limit
+/// of a path's contour), before the rest is read.
 pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
     if d.len() > MAX_PATH_BYTES {
         return Err(Error::TooLarge { what: "path data bytes", value: d.len(), limit: MAX_PATH_BYTES });
     }
-    let mut sc = Scanner { s: d.as_bytes(), text: d, i: 0, numbers: 0, mode };
+    let mut sc = Scanner { s: d.as_bytes(), text: d, i: 0, numbers: 0, mode, counted: std::cell::Cell::new((0, 1)) };
     let mut out: Vec<Contour> = vec![];
     let mut current: Option<Contour> = None;
     let zero = || rat(0);
@@ -181,6 +199,8 @@ pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
         if sc.i >= sc.s.len() {
             break;
         }
+        // where the command starts: its letter, or its first number when it is repeated
+        let command_at = sc.i;
         let c = sc.s[sc.i];
         let cmd = if c.is_ascii_alphabetic() {
             let at = sc.i;
@@ -288,8 +308,9 @@ pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
                             from: cur.clone(),
                             to: p.clone(),
                             reason: format!(
-                                "elliptical arc (rx {rx}, ry {ry}, large-arc {}, sweep {}): not a polynomial \
-                                 Bézier curve, not approximated",
+                                "elliptical arc at column {} (rx {rx}, ry {ry}, large-arc {}, sweep {}): not a \
+                                 polynomial Bézier curve, not approximated",
+                                sc.column(command_at),
                                 u8::from(large),
                                 u8::from(sweep)
                             ),
@@ -310,6 +331,17 @@ pub fn parse_path(d: &str, mode: NumberMode) -> Result<Vec<Contour>> {
                 }
                 cur = start.clone();
             }
+        }
+        if let Some(c) = current.as_ref().or(out.last()).filter(|c| c.segments.len() > MAX_PATH_SEGMENTS) {
+            // refused as the subpath grows past the limit, before the rest is read
+            let subpath = out.len() - usize::from(current.is_none());
+            return Err(Error::InvalidArgument {
+                message: format!(
+                    "subpath {subpath}: segments in a subpath {} exceeds the limit {MAX_PATH_SEGMENTS} (at column {})",
+                    c.segments.len(),
+                    sc.column(sc.i)
+                ),
+            });
         }
         last_cubic = next_cubic;
         last_quad = next_quad;
@@ -344,8 +376,26 @@ fn reflect(c: Option<&P>, cur: &P) -> P {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] with the reason for a piece that is no polynomial Bézier curve
-/// (an elliptical arc, [`Segment::Skipped`]).
+/// (an elliptical arc, [`Segment::Skipped`]); [`Error::TooLarge`] when the closed contour has
+/// more than 100,000 (`MAX_PATH_SEGMENTS`) segments (the callers name the subpath).
 pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>> {
+    if contour.segments.len() >= MAX_PATH_SEGMENTS {
+        let closing = usize::from(contour.segments.first().zip(contour.segments.last()).is_some_and(|(a, b)| {
+            let start = match a {
+                Segment::Bezier(ps) => ps.first(),
+                Segment::Skipped { from, .. } => Some(from),
+            };
+            let end = match b {
+                Segment::Bezier(ps) => ps.last(),
+                Segment::Skipped { to, .. } => Some(to),
+            };
+            start != end
+        }));
+        let n = contour.segments.len() + closing;
+        if n > MAX_PATH_SEGMENTS {
+            return Err(Error::TooLarge { what: "segments in a closed subpath", value: n, limit: MAX_PATH_SEGMENTS });
+        }
+    }
     let mut segs = Vec::with_capacity(contour.segments.len() + 1);
     for s in &contour.segments {
         match s {
@@ -382,8 +432,8 @@ pub fn close_for_fill(contour: &Contour) -> Result<Vec<BezierCurve<BigRational>>
 /// ```
 pub fn fill_path(d: &str, mode: NumberMode) -> Result<ClosedPath> {
     let mut contours = vec![];
-    for c in parse_path(d, mode)? {
-        let segs = close_for_fill(&c)?;
+    for (k, c) in parse_path(d, mode)?.iter().enumerate() {
+        let segs = close_for_fill(c).map_err(|e| Error::InvalidArgument { message: format!("subpath {k}: {e}") })?;
         if !segs.is_empty() {
             contours.push(segs);
         }

@@ -28,8 +28,64 @@ pub(crate) fn gcd_big(a: &num_bigint::BigInt, b: &num_bigint::BigInt) -> num_big
     match (ma.to_u128(), mb.to_u128()) {
         (Some(w), _) => small(w, mb),
         (None, Some(w)) => small(w, ma),
-        (None, None) => num_integer::Integer::gcd(a, b),
+        (None, None) => {
+            // Euclid's remainder while the sizes differ by more than a word (Stein's algorithm
+            // would take a step per bit of the difference), then Stein on the balanced pair
+            let (mut big, mut small_one) =
+                if ma.bits() >= mb.bits() { (ma.clone(), mb.clone()) } else { (mb.clone(), ma.clone()) };
+            while big.bits() > small_one.bits() + 64 {
+                let r = &big % &small_one;
+                big = std::mem::replace(&mut small_one, r);
+                if let Some(w) = small_one.to_u128() {
+                    return small(w, &big);
+                }
+            }
+            num_integer::Integer::gcd(&BigInt::from(big), &BigInt::from(small_one))
+        }
     }
+}
+
+/// `a · b` of reduced rationals, reduced by cross-cancelling `gcd(num a, den b)` and
+/// `gcd(num b, den a)` ([`gcd_big`]: one big remainder when the sizes differ, where
+/// num-rational's product runs Stein's gcd bit by bit over the larger number). A zero factor
+/// gives zero at once. Example: `mul_ratio(10001/10000, 5000/3) = 10001/6` (the unit tests).
+pub(crate) fn mul_ratio(a: &num_rational::BigRational, b: &num_rational::BigRational) -> num_rational::BigRational {
+    use num_traits::{One, Zero};
+    if a.is_zero() || b.is_zero() {
+        return num_rational::BigRational::zero();
+    }
+    let (g1, g2) = (gcd_big(a.numer(), b.denom()), gcd_big(b.numer(), a.denom()));
+    let cut = |x: &num_bigint::BigInt, g: &num_bigint::BigInt| if g.is_one() { x.clone() } else { x / g };
+    let numer = cut(a.numer(), &g1) * cut(b.numer(), &g2);
+    let denom = cut(a.denom(), &g2) * cut(b.denom(), &g1);
+    // both factors reduced and cross-cancelled: the product is reduced, its denominator positive
+    num_rational::BigRational::new_raw(numer, denom)
+}
+
+/// `a + b` of reduced rationals (Knuth's addition: with `g = gcd(den a, den b)`, the sum
+/// `t = num a · (den b / g) + num b · (den a / g)` needs only `gcd(t, g)` to be reduced), the
+/// gcds by [`gcd_big`]. A zero term gives the other at once. Example: `add_ratio(1/6, 1/3) = 1/2`
+/// (the unit tests).
+pub(crate) fn add_ratio(a: &num_rational::BigRational, b: &num_rational::BigRational) -> num_rational::BigRational {
+    use num_traits::{One, Zero};
+    if a.is_zero() {
+        return b.clone();
+    }
+    if b.is_zero() {
+        return a.clone();
+    }
+    let g = gcd_big(a.denom(), b.denom());
+    if g.is_one() {
+        let numer = a.numer() * b.denom() + b.numer() * a.denom();
+        return num_rational::BigRational::new_raw(numer, a.denom() * b.denom());
+    }
+    let t = a.numer() * (b.denom() / &g) + b.numer() * (a.denom() / &g);
+    if t.is_zero() {
+        return num_rational::BigRational::zero();
+    }
+    let g2 = gcd_big(&t, &g);
+    let denom = (a.denom() / &g) * (b.denom() / &g2);
+    num_rational::BigRational::new_raw(t / g2, denom)
 }
 
 /// `gcd(a, b)` of non-negative numbers (binary; word-sized when both fit 64 bits).
@@ -339,6 +395,27 @@ fn extract_small_squares64(mut n: u64, from: usize) -> (u128, u64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ratio_products_and_sums_match_num_rational() {
+        use crate::num::scalar::ratio;
+        use num_bigint::BigInt;
+        assert_eq!(mul_ratio(&ratio(10001, 10000), &ratio(5000, 3)), ratio(10001, 6));
+        assert_eq!(add_ratio(&ratio(1, 6), &ratio(1, 3)), ratio(1, 2));
+        let big = |k: u32, d: i64| num_rational::BigRational::new(BigInt::from(10001).pow(k), BigInt::from(d).pow(k));
+        let xs = [ratio(0, 1), ratio(-3, 7), ratio(1, 1), big(40, 10000), big(3, -12), -big(50, 6), big(30, 1)];
+        for a in &xs {
+            for b in &xs {
+                assert_eq!(mul_ratio(a, b), a * b, "{a} · {b}");
+                assert_eq!(add_ratio(a, b), a + b, "{a} + {b}");
+                assert_eq!(add_ratio(a, &-b), a - b, "{a} - {b}");
+            }
+        }
+        // unbalanced and balanced big gcds
+        let (p, q) = (BigInt::from(10001).pow(500) * 6, BigInt::from(3).pow(300) * 4);
+        assert_eq!(gcd_big(&p, &q), num_integer::Integer::gcd(&p, &q));
+        assert_eq!(gcd_big(&(&p * 35), &(&p * 21)), &p * 7);
+    }
 
     #[test]
     fn square_roots_of_words_are_exact() {

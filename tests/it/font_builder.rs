@@ -471,3 +471,107 @@ pub fn cff_expected(contours: &[Vec<Cmd>]) -> Vec<Contour> {
         })
         .collect()
 }
+
+// ---------------------------------------------------------------------------------------------
+// TrueType with composites, unnamed glyphs and a cmap
+
+/// A composite TrueType glyph: per component `(glyph id, x offset, y offset)`.
+#[derive(Clone, Debug)]
+pub struct TtComposite {
+    /// The glyph name (when the font stores names).
+    pub name: String,
+    /// The components.
+    pub components: Vec<(u16, i16, i16)>,
+}
+
+/// A TrueType font of `glyphs` (an empty `.notdef` first unless given), then `composites` (their
+/// ids follow the simple glyphs'), a `cmap` of `mappings`, and a `post` table of version 2 with
+/// the names, or of version 3 (no names) when `names` is false.
+pub fn truetype_composites(
+    glyphs: &[TtGlyph],
+    composites: &[TtComposite],
+    names: bool,
+    mappings: &[(char, u32)],
+) -> Vec<u8> {
+    use write_fonts::tables::glyf::{Anchor, Component, CompositeGlyph, Transform};
+    use write_fonts::types::GlyphId16;
+    let glyphs = with_notdef(glyphs, |g| &g.name, TtGlyph::new(".notdef", vec![]));
+    let mut glyf = GlyfLocaBuilder::new();
+    for g in &glyphs {
+        let contours: Vec<GlyfContour> = g
+            .contours
+            .iter()
+            .map(|c| c.iter().map(|&(x, y, on)| CurvePoint::new(x, y, on)).collect::<Vec<_>>().into())
+            .collect();
+        let [x_min, y_min, x_max, y_max] = g.stored_bbox().unwrap_or([0; 4]);
+        let simple = SimpleGlyph { bbox: Bbox { x_min, y_min, x_max, y_max }, contours, instructions: vec![] };
+        glyf.add_glyph(&simple).unwrap();
+    }
+    for c in composites {
+        let component = |&(gid, dx, dy): &(u16, i16, i16)| {
+            Component::new(
+                GlyphId16::new(gid),
+                Anchor::Offset { x: dx, y: dy },
+                Transform::default(),
+                write_fonts::tables::glyf::ComponentFlags::default(),
+            )
+        };
+        let bbox = Bbox { x_min: 0, y_min: 0, x_max: 0, y_max: 0 };
+        let mut composite = CompositeGlyph::new(component(&c.components[0]), bbox);
+        for k in &c.components[1..] {
+            composite.add_component(component(k), bbox);
+        }
+        glyf.add_glyph(&composite).unwrap();
+    }
+    let (glyf, loca, loca_format) = glyf.build();
+    let head_bbox = union(glyphs.iter().filter_map(TtGlyph::points_bbox));
+    let count = glyphs.len() + composites.len();
+    let lsb: Vec<i16> = (0..count).map(|k| glyphs.get(k).and_then(TtGlyph::stored_bbox).map_or(0, |b| b[0])).collect();
+    let maxp = Maxp {
+        num_glyphs: count as u16,
+        max_points: Some(glyphs.iter().map(|g| g.contours.iter().map(Vec::len).sum::<usize>() as u16).max().unwrap()),
+        max_contours: Some(glyphs.iter().map(|g| g.contours.len() as u16).max().unwrap()),
+        max_composite_points: Some(0),
+        max_composite_contours: Some(0),
+        max_zones: Some(1),
+        max_twilight_points: Some(0),
+        max_storage: Some(0),
+        max_function_defs: Some(0),
+        max_instruction_defs: Some(0),
+        max_stack_elements: Some(0),
+        max_size_of_instructions: Some(0),
+        max_component_elements: Some(composites.iter().map(|c| c.components.len() as u16).max().unwrap_or(0)),
+        max_component_depth: Some(16),
+    };
+    let post = if names {
+        Post::new_v2(glyphs.iter().map(|g| g.name.as_str()).chain(composites.iter().map(|c| c.name.as_str())))
+    } else {
+        Post { version: Version16Dot16::VERSION_3_0, ..Default::default() }
+    };
+    let mut builder = FontBuilder::new();
+    common_tables(&mut builder, head_bbox, loca_format as i16, &lsb, maxp, post);
+    builder.add_table(&glyf).unwrap();
+    builder.add_table(&loca).unwrap();
+    if !mappings.is_empty() {
+        let cmap = write_fonts::tables::cmap::Cmap::from_mappings(
+            mappings.iter().map(|&(c, g)| (c, write_fonts::types::GlyphId::new(g))),
+        )
+        .unwrap();
+        builder.add_table(&cmap).unwrap();
+    }
+    builder.build()
+}
+
+/// A font with a 10×10 square (glyph 1, `square`) and composites `bomb1` … `bomb{depth}`, each
+/// using the one before twice (`bomb1` uses the square twice), side by side up to `bomb10`
+/// (1,024 squares in a row), on top of each other beyond: `bomb{k}` is `2^k` squares.
+pub fn composite_bomb(depth: u16) -> Vec<u8> {
+    let square = TtGlyph::new("square", vec![tt_square(0, 0, 10, 10)]);
+    let composites: Vec<TtComposite> = (1..=depth)
+        .map(|k| {
+            let dx = if k <= 10 { 20i16 << (k - 1) } else { 0 };
+            TtComposite { name: format!("bomb{k}"), components: vec![(k, 0, 0), (k, dx, 0)] }
+        })
+        .collect();
+    truetype_composites(&[square], &composites, true, &[])
+}

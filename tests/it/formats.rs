@@ -155,7 +155,7 @@ const DOC: &str = r#"<?xml version="1.0"?>
 
 #[test]
 fn svg_document_shapes_in_order_with_transforms_applied() {
-    let shapes = read_svg(DOC, NumberMode::Exact).unwrap();
+    let shapes = read_svg(DOC, NumberMode::Exact, &casteljau::work::Budget::unlimited()).unwrap();
     let tags: Vec<&str> = shapes.iter().map(|s| s.tag.as_str()).collect();
     assert_eq!(tags, ["path", "rect", "rect", "line", "polyline", "polygon", "circle", "line", "line", "path"]);
     let ok = |i: usize| spelled(shapes[i].contours.as_ref().unwrap());
@@ -184,7 +184,7 @@ fn svg_document_shapes_in_order_with_transforms_applied() {
 
 #[test]
 fn svg_document_that_is_not_xml_is_an_error() {
-    assert!(read_svg("<svg><path d='M0 0'></svg>", NumberMode::Exact).is_err());
+    assert!(read_svg("<svg><path d='M0 0'></svg>", NumberMode::Exact, &casteljau::work::Budget::unlimited()).is_err());
 }
 
 fn data(name: &str) -> Vec<u8> {

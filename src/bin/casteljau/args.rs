@@ -111,7 +111,8 @@ pub enum Command {
     /// overlap, touching, overlapping_segments, missing_extremum, kink, collinear_points,
     /// zero_length_segment, zero_length_handle, degenerate_curve, cusp, loop, bbox) with exact
     /// evidence; text (one line per finding, a summary per file) or --json (one line per
-    /// finding); exit 1 when a denied kind is found, 2 for unreadable input.
+    /// finding); exit 1 when a denied kind is found, 2 for unreadable input and for a file in
+    /// which nothing could be checked (every element skipped: nothing checked is not a pass).
     Lint(LintArgs),
     /// Check a float library's answers (JSON Lines: node type, category, loop, cusp,
     /// inflections, parameters, double point) against the exact ones: every disagreement with
@@ -632,6 +633,11 @@ pub struct ScanArgs {
     /// Threads (0: all cores). Output stays in file order.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
+    /// Work budget of reading an SVG file, in work units (about 1 ns each): the exact products
+    /// of its transforms and the copies of its <use> elements are charged before they are
+    /// computed; over it, the file is refused (exit 2).
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
+    pub max_work: f64,
     /// An instance of a variable CFF2 font, in user coordinates: "wght=700,wdth=80" (other axes
     /// at their defaults; coordinates are the format's exact 16.16 blend). glyf instances are
     /// refused (their deltas are applied in f32 by every font crate).
@@ -694,7 +700,9 @@ pub struct LintArgs {
     #[arg(long, value_enum, default_value_t = Numbers::Exact)]
     pub numbers: Numbers,
     /// Work budget per glyph, in work units (about 1 ns each): a glyph whose arrangement is
-    /// estimated to cost more is refused (an error line, exit 2) before it starts.
+    /// estimated to cost more is refused (an error line, exit 2) before it starts. Reading an SVG
+    /// file (the exact products of its transforms, the copies of its <use> elements) is charged
+    /// against it as a whole.
     #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
     pub max_work: f64,
     /// Threads (0: all cores). Output stays in glyph order.

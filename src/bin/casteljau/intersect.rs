@@ -97,7 +97,12 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
             let (a, b) = text_line
                 .split_once(';')
                 .ok_or_else(|| Error::InvalidArgument { message: "a pair of curves is written \"A ; B\"".into() })?;
-            intersect(&curve(a, line, mode, &wa)?, &curve(b, line, mode, &wb)?, domain, &budget)?
+            // which curve of the pair (its columns count from the start of its own text)
+            let named = |which: &str, text: &str, w: &Option<Vec<BigRational>>| {
+                curve(text, None, mode, w)
+                    .map_err(|e| Error::InvalidArgument { message: format!("curve {which}: {e}") })
+            };
+            intersect(&named("A", a, &wa)?, &named("B", b, &wb)?, domain, &budget)?
         };
         // only the output asked for is rendered (an algebraic number's spelling has a cost)
         Ok(if json_out {

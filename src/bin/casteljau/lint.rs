@@ -8,8 +8,9 @@
 //! with `error`; an SVG element that is no Bézier outline (a circle, an ellipse) a line with
 //! `skipped`, counted apart). `--html` also writes the report of `lint_html`.
 //!
-//! Exit code: 2 when a file, a glyph or an element could not be read or checked; else 1 when a
-//! finding of a denied kind is not explained by rounding; else 0.
+//! Exit code: 2 when a file, a glyph or an element could not be read or checked, or when
+//! nothing in a file was checked (every element skipped, or none drawn: nothing checked is not
+//! a pass); else 1 when a finding of a denied kind is not explained by rounding; else 0.
 
 use crate::args::LintArgs;
 use crate::lint_units::{FileReport, Tally, Unit};
@@ -254,6 +255,16 @@ fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
         reports.push(FileReport { file: file.clone(), tally, units: kept });
     }
     for r in &reports {
+        if r.tally.units == 0 {
+            // nothing checked is not a pass
+            let skipped = match r.tally.skipped {
+                0 => "it has no outline".to_string(),
+                1 => "its one element was skipped: no Bézier outline".to_string(),
+                n => format!("all {n} elements were skipped: no Bézier outline"),
+            };
+            eprintln!("casteljau: {}: nothing was checked ({skipped})", r.file);
+            code = 2;
+        }
         let line = summary(&r.file, &r.tally);
         if args.json {
             if !args.quiet {
@@ -367,7 +378,8 @@ fn lint_svg(
     each: &mut Each<'_>,
 ) -> Result<bool, String> {
     let text = std::str::from_utf8(data).map_err(|e| format!("{file}: not UTF-8: {e}"))?;
-    let shapes = read_svg(text, linter.mode).map_err(|e| format!("{file}: {e}"))?;
+    let budget = Budget::new(linter.max_work, "--max-work");
+    let shapes = read_svg(text, linter.mode, &budget).map_err(|e| format!("{file}: {e}"))?;
     for chunk in shapes.chunks(UNITS_PER_CHUNK) {
         let units: Vec<Unit> = pool.install(|| {
             chunk

@@ -138,6 +138,13 @@ impl Rendered {
             Err(e) => {
                 self.code = 2;
                 let e = match (e, line) {
+                    // a curve given as the argument: say so, as a batch says its line
+                    (Error::EmptyCurve { .. }, None) => Error::InvalidArgument {
+                        message: "the curve argument is empty: a curve needs at least one control point".into(),
+                    },
+                    (e @ Error::TooLarge { what: "degree", .. }, None) => {
+                        Error::InvalidArgument { message: format!("the curve argument: {e}") }
+                    }
                     (Error::EmptyCurve { .. }, l) => Error::EmptyCurve { line: l },
                     (e, _) => e,
                 };

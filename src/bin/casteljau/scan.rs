@@ -68,6 +68,7 @@ struct Scanner {
     only: Vec<OnlyKind>,
     mode: NumberMode,
     variation: Option<Vec<(String, f64)>>,
+    budget: casteljau::work::Budget,
 }
 
 impl Scanner {
@@ -182,7 +183,8 @@ pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
             return 2;
         }
     };
-    let sc = Scanner { only, mode: args.numbers.into(), variation };
+    let budget = casteljau::work::Budget::new(args.max_work, "--max-work");
+    let sc = Scanner { only, mode: args.numbers.into(), variation, budget };
     let progress = !args.quiet && std::io::stderr().is_terminal();
     let mut code = 0;
     let mut write = |r: &Rendered| -> bool { out.write_all(&r.lines).is_ok() };
@@ -288,7 +290,7 @@ fn scan_font(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each
 
 fn scan_svg(sc: &Scanner, pool: &rayon::ThreadPool, file: &str, each: &mut Each<'_>) -> Result<bool, String> {
     let text = std::fs::read_to_string(file).map_err(|e| format!("cannot read: {e}"))?;
-    let shapes = read_svg(&text, sc.mode).map_err(|e| e.to_string())?;
+    let shapes = read_svg(&text, sc.mode, &sc.budget).map_err(|e| e.to_string())?;
     let n = shapes.len();
     for chunk in shapes.chunks(UNITS_PER_CHUNK) {
         let rendered: Vec<Rendered> = pool.install(|| {

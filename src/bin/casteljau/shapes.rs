@@ -39,11 +39,11 @@ fn invalid(message: String) -> Error {
 
 /// An operand as a shape: an `.svg` file (every shape element, [`fill_svg`]), or SVG path data
 /// (each subpath closed by a line as SVG fills it; empty text is the empty shape).
-pub(crate) fn operand(text: &str, mode: NumberMode) -> Result<Shape> {
+pub(crate) fn operand(text: &str, mode: NumberMode, budget: &Budget) -> Result<Shape> {
     let t = text.trim();
     if t.to_ascii_lowercase().ends_with(".svg") {
         let svg = std::fs::read_to_string(t).map_err(|e| invalid(format!("{t}: cannot read: {e}")))?;
-        return fill_svg(&svg, mode).map_err(|e| invalid(format!("{t}: {e}")));
+        return fill_svg(&svg, mode, budget).map_err(|e| invalid(format!("{t}: {e}")));
     }
     if is_font(t) {
         return Err(invalid(format!("{t}: fonts are read by `boolean simplify FONT...` (fonts only)")));
@@ -203,7 +203,11 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
                 "a pair of shapes is written \"A ; B\"".into()
             }));
         }
-        let shapes = parts.iter().map(|p| operand(p, mode)).collect::<Result<Vec<_>>>()?;
+        let shapes = parts
+            .iter()
+            .zip(["A", "B"])
+            .map(|(p, name)| operand(p, mode, &budget).map_err(|e| invalid(format!("{name}: {e}"))))
+            .collect::<Result<Vec<_>>>()?;
         let result = casteljau::shape::boolean(op, &shapes, options, &budget)?;
         let verdict = match against.shape(line, mode)? {
             Some(found) => Some(check_against(op, &shapes, options, &result, &found, &tol, &budget)?),
@@ -316,8 +320,14 @@ fn run_arrange(args: &ArrangeArgs, out: &mut dyn Write) -> Result<()> {
             Err(e) => Err(invalid(format!("--locate: {e}"))),
         })
         .collect::<Result<Vec<_>>>()?;
-    let shapes = args.shapes.iter().map(|s| operand(s, mode)).collect::<Result<Vec<_>>>()?;
-    let arr = Arrangement::new(&shapes, &Budget::new(args.max_work, "--max-work"))?;
+    let budget = Budget::new(args.max_work, "--max-work");
+    let shapes = args
+        .shapes
+        .iter()
+        .enumerate()
+        .map(|(k, s)| operand(s, mode, &budget).map_err(|e| invalid(format!("shape {}: {e}", k + 1))))
+        .collect::<Result<Vec<_>>>()?;
+    let arr = Arrangement::new(&shapes, &budget)?;
     let faces = arr.faces()?;
     let locations = points.iter().map(|q| arr.locate(q)).collect::<Result<Vec<_>>>()?;
     let (vertices, edges) = (arr.vertices(), arr.edges());
