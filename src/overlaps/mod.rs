@@ -12,6 +12,12 @@
 //!
 //! SKELETON: the interface both halves build on. Bodies are filled in on their branches.
 
+mod certify;
+mod distance;
+mod glyph;
+mod region;
+mod round;
+
 use crate::error::{Error, Result};
 use crate::format::Contour;
 use crate::shape::Orientation;
@@ -83,6 +89,13 @@ pub enum Repair {
         /// The point within it.
         point: usize,
     },
+    /// A meeting point (on-curve) written at a neighbouring grid point of its nearest one.
+    MovedVertex {
+        /// The contour (output numbering) where it is first written.
+        contour: usize,
+        /// The point within it.
+        point: usize,
+    },
     /// A contour whose exact area rounding must collapse was dropped.
     DroppedSliver {
         /// Its exact area (string when serialized).
@@ -142,8 +155,7 @@ pub enum GlyphDecision {
 /// [`Error::WorkLimit`] when the glyph's work exceeds `budget` (the caller reports it as an
 /// uncertified glyph left unchanged).
 pub fn decide_glyph(input: &GlyphInput, budget: &Budget) -> Result<GlyphDecision> {
-    let _ = (input, budget);
-    Err(Error::InvalidArgument { message: "overlap removal: not implemented yet".into() })
+    glyph::decide(input, budget)
 }
 
 /// The font writer's options (fontTools' `removeOverlaps` options where they make sense).
