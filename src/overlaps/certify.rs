@@ -6,7 +6,11 @@
 //! 1. the same number of contours as the exact region, none collapsed: every written contour
 //!    has an on-curve point and a non-zero area of the exact region's sign for it (outer
 //!    contours in the font's direction, holes the other way);
-//! 2. no piece that is a curve in the exact region became a straight line or a point;
+//! 2. no piece that is a curve in the exact region collapsed: a curve whose written control
+//!    points lie on one line must run along it once, from its start to its end (then it is a
+//!    curve of the exact region within the bound of that straight piece — reported as
+//!    straightened, tried only when no grid candidate within one unit keeps it curved — and
+//!    never a point or a spike that doubles back);
 //! 3. `lint` finds no `overlap`, `self_intersection`, `overlapping_segments`,
 //!    `zero_length_segment` or `direction` (contours touching at points are allowed, as in
 //!    the input);
@@ -94,7 +98,12 @@ fn area(c: &Contour) -> BigRational {
             2 => cr(0, 1) / rat(2),
             3 => (cr(0, 1) * rat(2) + cr(0, 2) + cr(1, 2) * rat(2)) / rat(6),
             4 => {
-                (cr(0, 1) * rat(6) + cr(0, 2) * rat(3) + cr(0, 3) + cr(1, 2) * rat(3) + cr(1, 3) * rat(3) + cr(2, 3) * rat(6))
+                (cr(0, 1) * rat(6)
+                    + cr(0, 2) * rat(3)
+                    + cr(0, 3)
+                    + cr(1, 2) * rat(3)
+                    + cr(1, 3) * rat(3)
+                    + cr(2, 3) * rat(6))
                     / rat(20)
             }
             _ => rat(0),
@@ -111,7 +120,8 @@ fn first_point(w: &Written) -> Vec<[f64; 2]> {
     w.contour.points.first().map(grid_f64).into_iter().collect()
 }
 
-/// Checks the written outline (see the module documentation): `Ok(None)` when certified.
+/// Checks the written outline (see the module documentation): when certified, the curves
+/// written straight (contour, piece); else why not.
 ///
 /// # Errors
 /// [`crate::Error::WorkLimit`] when the written glyph's arrangement or a winding number is
@@ -123,7 +133,7 @@ pub(super) fn certify(
     flavour: Flavour,
     orientation: Orientation,
     budget: &Budget,
-) -> Result<Option<Failure>> {
+) -> Result<std::result::Result<Vec<(usize, usize)>, Failure>> {
     let contours = contours_of(written, flavour);
     // 1. every contour written, with the right sign of area
     let mut failures: Vec<(String, Vec<[f64; 2]>, usize)> = vec![];
@@ -141,36 +151,46 @@ pub(super) fn certify(
         }
     }
     if let Some(f) = Failure::of(1, failures) {
-        return Ok(Some(f));
+        return Ok(Err(f));
     }
-    // 2. no curve straightened
+    // 2. no curve collapsed: a curve written on a line must run along it once, from its start
+    // to its end (then it is straightened, within the bound; see `straightened`)
     let mut failures = vec![];
+    let mut straight = vec![];
     for (k, c) in plan.contours.iter().enumerate() {
         for (i, p) in c.pieces.iter().enumerate() {
-            if p.curved && !plan.left_out(choice, c, i) && super::distance::collinear(&plan.polygon(choice, c, i)) {
-                let start = plan.start_position(choice, c, i);
-                let near = vec![[crate::num::scalar::ratio_to_f64(&start.x), crate::num::scalar::ratio_to_f64(&start.y)]];
-                failures.push((format!("rounding: a curve of contour {k} collapses onto a line"), near, k));
+            if !p.curved || plan.left_out(choice, c, i) {
+                continue;
             }
+            let poly = plan.polygon(choice, c, i);
+            if !super::distance::collinear(&poly) {
+                continue;
+            }
+            if runs_along(&poly) {
+                straight.push((k, i));
+                continue;
+            }
+            let start = plan.start_position(choice, c, i);
+            let near = vec![[crate::num::scalar::ratio_to_f64(&start.x), crate::num::scalar::ratio_to_f64(&start.y)]];
+            failures.push((format!("rounding: a curve of contour {k} collapses onto a line"), near, k));
         }
     }
     if let Some(f) = Failure::of(2, failures) {
-        return Ok(Some(f));
+        return Ok(Err(f));
     }
     // 3. lint
     let options = LintOptions { kinds: FORBIDDEN.to_vec(), budget: *budget, ..LintOptions::new(orientation) };
     let findings = lint(&Glyph::new(contours.clone()), &options)?;
     if let Some(f) = findings.first() {
-        let near: Vec<[f64; 2]> = findings
-            .iter()
-            .flat_map(|f| f.at.iter().map(|p| [p[0].to_f64(), p[1].to_f64()]))
-            .collect();
+        let near: Vec<[f64; 2]> =
+            findings.iter().flat_map(|f| f.at.iter().map(|p| [p[0].to_f64(), p[1].to_f64()])).collect();
         let mut involved: Vec<usize> =
             findings.iter().flat_map(|f| f.contour.into_iter().chain(f.contours.into_iter().flatten())).collect();
         involved.sort_unstable();
         involved.dedup();
-        let near = if near.is_empty() { involved.iter().flat_map(|&k| first_point(&written[k])).collect() } else { near };
-        return Ok(Some(Failure {
+        let near =
+            if near.is_empty() { involved.iter().flat_map(|&k| first_point(&written[k])).collect() } else { near };
+        return Ok(Err(Failure {
             reason: format!("rounding: {} ({})", f.message, f.kind()),
             near,
             contours: involved,
@@ -186,7 +206,43 @@ pub(super) fn certify(
             failures.push((reason, first_point(&written[k]), k));
         }
     }
-    Ok(Failure::of(4, failures))
+    Ok(match Failure::of(4, failures) {
+        Some(f) => Err(f),
+        None => Ok(straight),
+    })
+}
+
+/// Whether a control polygon on one line runs along it once, from its first point to its last:
+/// every control point's position along the chord in `[0, 1]` and non-decreasing (then the
+/// curve's coordinate along the line has a non-negative derivative: it traces the chord once).
+fn runs_along(poly: &[Point2<BigRational>]) -> bool {
+    let (a, b) = (&poly[0], &poly[poly.len() - 1]);
+    let d = b.sub(a);
+    let len2 = &d.x * &d.x + &d.y * &d.y;
+    if len2.is_zero() {
+        return false;
+    }
+    let mut last = rat(0);
+    for p in &poly[1..poly.len() - 1] {
+        let q = p.sub(a);
+        let t = (&q.x * &d.x + &q.y * &d.y) / &len2;
+        if t < last || t > rat(1) {
+            return false;
+        }
+        last = t;
+    }
+    true
+}
+
+/// The estimated work of one [`certify`] of these written contours: that of `lint`'s
+/// arrangement, which refuses a zero budget naming its estimate before any work starts.
+pub(super) fn estimate(written: &[Written], flavour: Flavour, orientation: Orientation) -> f64 {
+    let options =
+        LintOptions { kinds: FORBIDDEN.to_vec(), budget: Budget::new(0.0, ""), ..LintOptions::new(orientation) };
+    match lint(&Glyph::new(contours_of(written, flavour)), &options) {
+        Err(crate::Error::WorkLimit { estimate, .. }) => estimate,
+        _ => 0.0,
+    }
 }
 
 /// The control points' box of a contour.

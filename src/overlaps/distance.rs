@@ -163,10 +163,7 @@ fn blossom(points: &[Point2<BigRational>], args: &[BigRational]) -> Point2<BigRa
     let mut level: Vec<Point2<BigRational>> = points.to_vec();
     for u in args {
         let v = rat(1) - u;
-        level = level
-            .windows(2)
-            .map(|w| Point2::new(&v * &w[0].x + u * &w[1].x, &v * &w[0].y + u * &w[1].y))
-            .collect();
+        level = level.windows(2).map(|w| Point2::new(&v * &w[0].x + u * &w[1].x, &v * &w[0].y + u * &w[1].y)).collect();
     }
     level.pop().expect("one point left")
 }
@@ -213,15 +210,15 @@ fn max(a: BigRational, b: &BigRational) -> BigRational {
     if *b > a { b.clone() } else { a }
 }
 
-/// A rational `r ≥ √x` (`x ≥ 0`): `√x` itself when `x` is the square of a rational, else the
-/// next multiple of 10⁻⁶ above it.
+/// A rational `r ≥ √x` (`x ≥ 0`): `√x` itself when `x` is the square of a rational with a
+/// denominator up to 10⁶, else the least multiple of 10⁻⁶ at or above it.
 pub(super) fn sqrt_up(x: &BigRational) -> BigRational {
     if !x.is_positive() {
         return rat(0);
     }
     let (n, d) = (x.numer(), x.denom());
     let (sn, sd) = (n.sqrt(), d.sqrt());
-    if &(&sn * &sn) == n && &(&sd * &sd) == d {
+    if &(&sn * &sn) == n && &(&sd * &sd) == d && sd <= BigInt::from(1_000_000) {
         return BigRational::new(sn, sd);
     }
     // s = ⌈√⌈x·10¹²⌉⌉: (s/10⁶)² ≥ ⌈x·10¹²⌉/10¹² ≥ x
@@ -261,11 +258,16 @@ mod tests {
         let p = |x: i64, y: i64| Point2::new(rat(x), rat(y));
         let pts = [p(0, 0), p(1, 2), p(3, 3), p(4, 0)];
         let e = inner_controls(&pts, &Interval::point(ratio(1, 4)), &Interval::point(ratio(3, 4)));
-        let c = crate::curve::BezierCurve::new(pts.iter().map(|q| crate::num::Point::new(vec![q.x.clone(), q.y.clone()])).collect())
-            .unwrap()
-            .subsegment(&ratio(1, 4), &ratio(3, 4));
+        let c = crate::curve::BezierCurve::new(
+            pts.iter().map(|q| crate::num::Point::new(vec![q.x.clone(), q.y.clone()])).collect(),
+        )
+        .unwrap()
+        .subsegment(&ratio(1, 4), &ratio(3, 4));
         for (i, enc) in e.iter().enumerate() {
-            assert_eq!(enc.rational().unwrap(), Point2::new(c.points()[i + 1].coords[0].clone(), c.points()[i + 1].coords[1].clone()));
+            assert_eq!(
+                enc.rational().unwrap(),
+                Point2::new(c.points()[i + 1].coords[0].clone(), c.points()[i + 1].coords[1].clone())
+            );
         }
     }
 

@@ -116,6 +116,23 @@ fn arrangement(inputs: &[Shape], budget: &Budget) -> Result<std::result::Result<
 
 /// [`super::decide_glyph`].
 pub(super) fn decide(input: &GlyphInput, budget: &Budget) -> Result<GlyphDecision> {
+    if super::screen::clean(&input.components, input.orientation) {
+        return Ok(GlyphDecision::Unchanged);
+    }
+    decide_exactly(input, budget)
+}
+
+/// [`decide`] without the screen: the exact route alone.
+fn decide_exactly(input: &GlyphInput, budget: &Budget) -> Result<GlyphDecision> {
+    if input.components.len() == 1 {
+        // a simple glyph: rewritten when lint finds a reason
+        let contours: Vec<Contour> = input.components[0].iter().filter(|c| anchor(c).is_none()).cloned().collect();
+        let kinds = vec![Kind::Direction, Kind::SelfIntersection, Kind::Overlap, Kind::OverlappingSegments];
+        let options = LintOptions { kinds, budget: *budget, ..LintOptions::new(input.orientation) };
+        if lint(&Glyph::new(contours), &options)?.is_empty() {
+            return Ok(GlyphDecision::Unchanged);
+        }
+    }
     // the drawing contours as one shape per component: (shape, contour indices, component)
     let mut shapes: Vec<(Shape, Vec<usize>, usize)> = vec![];
     for (ci, comp) in input.components.iter().enumerate() {
@@ -127,27 +144,14 @@ pub(super) fn decide(input: &GlyphInput, budget: &Budget) -> Result<GlyphDecisio
         return Ok(GlyphDecision::Unchanged);
     }
     let inputs: Vec<Shape> = shapes.iter().map(|s| s.0.clone()).collect();
-    if input.components.len() > 1 {
-        // a composite: rewritten only when its components' regions overlap or share pieces
-        let arr = match arrangement(&inputs, budget)? {
-            Ok(a) => a,
-            Err(reason) => return Ok(uncertified(reason)),
-        };
-        if !components_meet(&arr) {
-            return Ok(GlyphDecision::Unchanged);
-        }
-        return rewrite(input, &arr, &shapes, budget);
-    }
-    let contours: Vec<Contour> = input.components[0].iter().filter(|c| anchor(c).is_none()).cloned().collect();
-    let kinds = vec![Kind::Direction, Kind::SelfIntersection, Kind::Overlap, Kind::OverlappingSegments];
-    let options = LintOptions { kinds, budget: *budget, ..LintOptions::new(input.orientation) };
-    if lint(&Glyph::new(contours), &options)?.is_empty() {
-        return Ok(GlyphDecision::Unchanged);
-    }
     let arr = match arrangement(&inputs, budget)? {
         Ok(a) => a,
         Err(reason) => return Ok(uncertified(reason)),
     };
+    // a composite: rewritten only when its components' regions overlap or share pieces
+    if input.components.len() > 1 && !components_meet(&arr) {
+        return Ok(GlyphDecision::Unchanged);
+    }
     rewrite(input, &arr, &shapes, budget)
 }
 
@@ -167,7 +171,7 @@ fn rewrite(
         Ok(p) => p,
         Err(e) => return Ok(uncertified(e.to_string())),
     };
-    let (plan, choice, dropped) = match round_certified(plan, input, budget)? {
+    let Certified { plan, choice, dropped, straight } = match round_certified(plan, input, budget)? {
         Ok(found) => found,
         Err(failure) => return Ok(uncertified(failure.reason)),
     };
@@ -204,14 +208,19 @@ fn rewrite(
             });
         }
     }
+    for (k, i) in straight {
+        let first = plan.contours[k].pieces[i].controls[0];
+        if let Some((ci, (_, _, source))) = keyed.iter().enumerate().find(|(_, e)| e.2.contains(&first)) {
+            let point = source.iter().position(|&s| s == first).unwrap_or(0);
+            repairs.push(Repair::Straightened { contour: ci, point });
+        }
+    }
     repairs.extend(dropped);
     let contours: Vec<GridContour> = keyed.into_iter().map(|(_, c, _)| c).collect();
     let all_inputs: Vec<&Contour> = input.components.iter().flatten().collect();
     let contours_before = all_inputs.iter().filter(|c| !c.segments.is_empty()).count();
-    let points_before = all_inputs
-        .iter()
-        .map(|c| if anchor(c).is_some() { 1 } else { stored_points(c, input.flavour) })
-        .sum();
+    let points_before =
+        all_inputs.iter().map(|c| if anchor(c).is_some() { 1 } else { stored_points(c, input.flavour) }).sum();
     let distance_bound = sqrt_up(&plan.bound2(&choice));
     let report = GlyphReport {
         glyph: input.name.clone(),
@@ -231,36 +240,48 @@ fn uncertified(reason: String) -> GlyphDecision {
     GlyphDecision::Uncertified { reason }
 }
 
-/// Plain rounding, then the repair search (see the module documentation): the plan (without
-/// the dropped contours), the choice of candidates, and the dropped contours' areas; or the
-/// last failure.
-#[allow(clippy::type_complexity)]
+/// A rounding that certifies: the plan (without the dropped contours), the choice of
+/// candidates, the dropped contours' repairs and the curves written straight.
+struct Certified {
+    plan: Plan,
+    choice: Vec<usize>,
+    dropped: Vec<Repair>,
+    straight: Vec<(usize, usize)>,
+}
+
+/// Plain rounding (curves kept curved where a candidate allows), then the repair search (see
+/// the module documentation); or the last failure.
 fn round_certified(
     mut plan: Plan,
     input: &GlyphInput,
     budget: &Budget,
-) -> Result<std::result::Result<(Plan, Vec<usize>, Vec<Repair>), Failure>> {
-    let each = Budget::new(budget.limit / MAX_ATTEMPTS as f64, budget.option);
+) -> Result<std::result::Result<Certified, Failure>> {
     let (flavour, orientation) = (input.flavour, input.orientation);
     let mut attempts = 0;
     let mut dropped = vec![];
     let mut choice = vec![0; plan.points.len()];
-    let check = |plan: &Plan, choice: &[usize], attempts: &mut usize| -> Result<Option<Failure>> {
+    plan.keep_curves(&mut choice);
+    // the attempts' work together within the budget: as many as it holds of the first one's
+    // estimate (the written glyph's arrangement), at most MAX_ATTEMPTS
+    let each = super::certify::estimate(&plan.write(&choice), flavour, orientation);
+    budget.check(format!("certifying the rounded glyph ({} contours)", plan.contours.len()), each)?;
+    let most = if each > 0.0 { ((budget.limit / each) as usize).clamp(1, MAX_ATTEMPTS) } else { MAX_ATTEMPTS };
+    let check = |plan: &Plan, choice: &[usize], attempts: &mut usize| {
         *attempts += 1;
-        certify(plan, choice, &plan.write(choice), flavour, orientation, &each)
+        certify(plan, choice, &plan.write(choice), flavour, orientation, budget)
     };
     let mut failure = match check(&plan, &choice, &mut attempts)? {
-        None => return Ok(Ok((plan, choice, dropped))),
-        Some(f) => f,
+        Ok(straight) => return Ok(Ok(Certified { plan, choice, dropped, straight })),
+        Err(f) => f,
     };
-    while attempts < MAX_ATTEMPTS {
+    while attempts < most {
         // a contour that collapses to nothing: dropped when its written copy bounds no area
-        if let Some(k) = collapsed(&plan, &choice, &failure, flavour, &each)? {
+        if let Some(k) = collapsed(&plan, &choice, &failure, flavour, budget)? {
             dropped.push(sliver(&plan, k));
             plan.drop_contour(k);
             match check(&plan, &choice, &mut attempts)? {
-                None => return Ok(Ok((plan, choice, dropped))),
-                Some(f) => {
+                Ok(straight) => return Ok(Ok(Certified { plan, choice, dropped, straight })),
+                Err(f) => {
                     failure = f;
                     continue;
                 }
@@ -271,17 +292,14 @@ fn round_certified(
         let mut best: Option<(Vec<usize>, Failure)> = None;
         'search: for s in suspects {
             for alt in 0..plan.points[s].candidates.len() {
-                if alt == choice[s] || attempts >= MAX_ATTEMPTS {
+                if alt == choice[s] || attempts >= most {
                     continue;
                 }
                 let mut next = choice.clone();
                 next[s] = alt;
                 match check(&plan, &next, &mut attempts)? {
-                    None => return Ok(Ok((plan, next, dropped))),
-                    Some(f) => {
-                        if std::env::var("CASTELJAU_DEBUG").is_ok() {
-                            eprintln!("try {s} -> {alt}: {} ({:?})", f.reason, f.score);
-                        }
+                    Ok(straight) => return Ok(Ok(Certified { plan, choice: next, dropped, straight })),
+                    Err(f) => {
                         if f.better_than(best.as_ref().map_or(&failure, |b| &b.1)) {
                             best = Some((next, f));
                             break 'search;

@@ -17,6 +17,7 @@ mod distance;
 mod glyph;
 mod region;
 mod round;
+mod screen;
 
 use crate::error::{Error, Result};
 use crate::format::Contour;
@@ -94,6 +95,15 @@ pub enum Repair {
         /// The contour (output numbering) where it is first written.
         contour: usize,
         /// The point within it.
+        point: usize,
+    },
+    /// A curve of the exact region that no grid candidate within one unit keeps curved,
+    /// written with its control points in order on the straight piece between its ends (it
+    /// lies within `distance_bound` of that piece).
+    Straightened {
+        /// The contour (output numbering).
+        contour: usize,
+        /// Its first control point within it.
         point: usize,
     },
     /// A contour whose exact area rounding must collapse was dropped.

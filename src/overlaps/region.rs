@@ -209,9 +209,11 @@ fn carriers(arr: &Arrangement, h: HalfEdge) -> Vec<(usize, RealAlgebraic, RealAl
     arr.edges[h.edge]
         .carriers
         .iter()
-        .map(|(k, lo, hi, fwd)| {
-            if *fwd == h.forward { (*k, lo.clone(), hi.clone()) } else { (*k, hi.clone(), lo.clone()) }
-        })
+        .map(
+            |(k, lo, hi, fwd)| {
+                if *fwd == h.forward { (*k, lo.clone(), hi.clone()) } else { (*k, hi.clone(), lo.clone()) }
+            },
+        )
         .collect()
 }
 

@@ -22,7 +22,9 @@
 //! A line piece whose two ends round to one grid point is left out (it is that point); the
 //! contour it belongs to is the same closed curve without it.
 
-use super::distance::{Enclosure, Interval, candidates, collinear, inner_controls, narrowed, nearest_algebraic, nearest_to};
+use super::distance::{
+    Enclosure, Interval, candidates, collinear, inner_controls, narrowed, nearest_algebraic, nearest_to,
+};
 use super::region::ExactContour;
 use super::{Flavour, GridContour, GridPoint};
 use crate::error::{Error, Result};
@@ -274,6 +276,64 @@ impl Plan {
         poly.iter().all(|p| *p == poly[0])
     }
 
+    /// Moves the points of every curve whose rounding under `choice` lies on one line to the
+    /// grid candidates (of its own start, control and end points) that keep it curved with the
+    /// least displacement, when there are such.
+    pub(super) fn keep_curves(&self, choice: &mut [usize]) {
+        const MOST: usize = 256;
+        for c in &self.contours {
+            let m = c.pieces.len();
+            for i in 0..m {
+                let p = &c.pieces[i];
+                if !p.curved || self.left_out(choice, c, i) || !collinear(&self.polygon(choice, c, i)) {
+                    continue;
+                }
+                let next = &c.pieces[(i + 1) % m];
+                let mut ks: Vec<usize> = p.controls.clone();
+                if !p.implied {
+                    ks.push(p.start);
+                }
+                if !next.implied {
+                    ks.push(next.start);
+                }
+                ks.retain(|&k| self.points[k].candidates.len() > 1);
+                let sizes: Vec<usize> = ks.iter().map(|&k| self.points[k].candidates.len()).collect();
+                let total: usize = sizes.iter().product();
+                if ks.is_empty() || total > MOST {
+                    continue;
+                }
+                let original: Vec<usize> = ks.iter().map(|&k| choice[k]).collect();
+                let mut best: Option<(BigRational, Vec<usize>)> = None;
+                for code in 0..total {
+                    let mut rest = code;
+                    let pick: Vec<usize> = sizes
+                        .iter()
+                        .map(|&n| {
+                            let v = rest % n;
+                            rest /= n;
+                            v
+                        })
+                        .collect();
+                    for (&k, &v) in ks.iter().zip(&pick) {
+                        choice[k] = v;
+                    }
+                    if collinear(&self.polygon(choice, c, i)) {
+                        continue;
+                    }
+                    let worst =
+                        ks.iter().map(|&k| self.displacement2(choice, k).clone()).max().unwrap_or_else(|| rat(0));
+                    if best.as_ref().is_none_or(|(w, _)| worst < *w) {
+                        best = Some((worst, pick));
+                    }
+                }
+                let chosen = best.map_or(original, |(_, pick)| pick);
+                for (&k, &v) in ks.iter().zip(&chosen) {
+                    choice[k] = v;
+                }
+            }
+        }
+    }
+
     /// The contours written under `choice`.
     pub(super) fn write(&self, choice: &[usize]) -> Vec<Written> {
         let mut out = vec![];
@@ -362,10 +422,8 @@ mod tests {
         let g = |x: i32, y: i32, on_curve: bool| GridPoint { x, y, on_curve };
         let pts = [g(0, 0, true), g(2, 2, false), g(4, 2, false), g(6, 0, true)];
         let segs = decode(&pts, Flavour::Quadratic);
-        let s: Vec<String> = segs
-            .iter()
-            .map(|s| s.iter().map(|p| format!("{} {}", p.x, p.y)).collect::<Vec<_>>().join(", "))
-            .collect();
+        let s: Vec<String> =
+            segs.iter().map(|s| s.iter().map(|p| format!("{} {}", p.x, p.y)).collect::<Vec<_>>().join(", ")).collect();
         assert_eq!(s, ["0 0, 2 2, 3 2", "3 2, 4 2, 6 0", "6 0, 0 0"]);
         let cubic = decode(&pts, Flavour::Cubic);
         assert_eq!(cubic.len(), 2);
