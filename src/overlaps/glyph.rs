@@ -372,10 +372,15 @@ fn collapsed(
     Ok(None)
 }
 
-/// The repair that drops contour `k`: its exact area, or, when that is irrational, the
-/// rational end of its enclosure farther from zero.
+/// The repair that drops contour `k`: its exact area when that is rational, else the
+/// multiple of 10⁻⁶ next beyond the enclosure of it (away from zero: a bound on its size).
 fn sliver(plan: &Plan, k: usize) -> Repair {
     let a = plan.area(k);
-    let area = if a.lo == a.hi || a.hi.abs() >= a.lo.abs() { a.hi } else { a.lo };
+    if a.lo == a.hi {
+        return Repair::DroppedSliver { area: a.hi };
+    }
+    let million = BigRational::from_integer(1_000_000.into());
+    let area =
+        if a.hi.abs() >= a.lo.abs() { (a.hi * &million).ceil() / million } else { (a.lo * &million).floor() / million };
     Repair::DroppedSliver { area }
 }

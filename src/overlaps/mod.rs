@@ -11,6 +11,12 @@
 //!   (TrueType `glyf`/`loca`/`hmtx`/`head`/`maxp`; CFF charstrings), everything else copied.
 //!
 //! SKELETON: the interface both halves build on. Bodies are filled in on their branches.
+//!
+//! The per-glyph half, file by file: `screen` (the cheap exact decision for glyphs whose
+//! contours meet nowhere), `glyph` (the decision, the rewrite and the repair search), `region`
+//! (the exact non-zero region as contours of input pieces), `round` (the rounding plan and the
+//! written contours), `distance` (enclosures, grid candidates and the bound), `certify` (the
+//! exact re-decision of the written outline).
 
 mod certify;
 mod distance;
@@ -108,7 +114,8 @@ pub enum Repair {
     },
     /// A contour whose exact area rounding must collapse was dropped.
     DroppedSliver {
-        /// Its exact area (string when serialized).
+        /// Its exact signed area (string when serialized); where that is irrational, the
+        /// multiple of 10⁻⁶ next beyond it, away from zero.
         #[serde(serialize_with = "crate::num::serial::string")]
         area: BigRational,
     },
@@ -161,9 +168,73 @@ pub enum GlyphDecision {
 
 /// Decides one glyph: whether it needs rewriting and, if so, its certified grid outline.
 ///
+/// * **Whether.** A simple glyph (one component) is rewritten when [`crate::lint`] finds an
+///   `overlap`, a `self_intersection`, `overlapping_segments` or a `direction` finding; a
+///   composite (several components) only when two components' regions overlap or share a
+///   boundary piece (decided on their exact arrangement). Contours or components that only
+///   touch at points are no reason, and one-point contours (anchors) are kept as they are.
+///   Glyphs whose contours meet nowhere are decided without an arrangement (an exact screen on
+///   small integers), so most glyphs of a font cost little.
+/// * **What.** The non-zero region of all the glyph's contours, exactly, in
+///   `input.orientation`: every piece of its boundary is an input segment or an exact
+///   sub-segment of one, of the same degree (a quadratic raised exactly to a cubic for
+///   [`Flavour::Cubic`]); a contour that touches itself (a pinch) is split there into contours
+///   meeting at the point; a contour that passes an input contour's start point starts there,
+///   and contours keep the input's order.
+/// * **The rounding, certified.** Meeting points are rounded to the nearest grid point (exact
+///   comparisons of the algebraic coordinates with the half-integers), control points of cut
+///   pieces from rational enclosures of their blossom values; TrueType's implied on-curve
+///   points stay implied where they are still midpoints. The written outline is then decided
+///   again, exactly: the same contours with the same nesting and orientations, no curve
+///   collapsed, no `overlap`, `self_intersection`, `overlapping_segments`,
+///   `zero_length_segment` or `direction` finding. Where that fails, the repairs (reported in
+///   [`GlyphReport::repairs`]) choose other grid points within one unit for the meeting and
+///   control points near the failure, or drop a contour whose rounding bounds no area.
+/// * **The bound.** `distance_bound` is a rational `≥ max |Q_i − P_i|` over every written
+///   control point `Q_i` and its exact counterpart `P_i` (an upper bound of the Euclidean
+///   distance, through a rational square root taken upwards): each written piece is the same
+///   degree as its exact piece, so `|Q(s) − P(s)| ≤ max |Q_i − P_i|` at every parameter `s`,
+///   and every point farther than the bound from the exact boundary is inside the written
+///   glyph exactly when it is inside the exact region. It is at most 1.
+///
+/// A glyph that needs rewriting but whose rounding cannot be certified is
+/// [`GlyphDecision::Uncertified`] with the reason (so is one whose exact arrangement is refused,
+/// e.g. two curves leaving a cusp tangentially); it is never [`GlyphDecision::Rewritten`].
+///
 /// # Errors
 /// [`Error::WorkLimit`] when the glyph's work exceeds `budget` (the caller reports it as an
-/// uncertified glyph left unchanged).
+/// uncertified glyph left unchanged): the glyph's arrangement, its certification (as many
+/// repair attempts as the budget holds, at most 32); the errors of [`crate::lint::lint`] for a
+/// segment of degree above 3.
+///
+/// # Example
+/// ```
+/// use casteljau::format::parse_path;
+/// use casteljau::num::NumberMode;
+/// use casteljau::overlaps::{decide_glyph, Flavour, GlyphDecision, GlyphInput};
+/// use casteljau::shape::Orientation;
+/// use casteljau::work::Budget;
+/// // two overlapping squares of a TrueType glyph (outer contours clockwise)
+/// let contours = parse_path("M0 0 V10 H10 V0 Z M5 5 V15 H15 V5 Z", NumberMode::Exact).unwrap();
+/// let input = GlyphInput {
+///     glyph_id: 7,
+///     name: Some("overlap".into()),
+///     components: vec![contours],
+///     flavour: Flavour::Quadratic,
+///     orientation: Orientation::Cw,
+/// };
+/// let GlyphDecision::Rewritten { contours, report } = decide_glyph(&input, &Budget::unlimited()).unwrap() else {
+///     panic!("an overlap is rewritten")
+/// };
+/// let points: Vec<(i32, i32)> = contours[0].points.iter().map(|p| (p.x, p.y)).collect();
+/// assert_eq!(points, [(0, 0), (0, 10), (5, 10), (5, 15), (15, 15), (15, 5), (10, 5), (10, 0)]);
+/// assert_eq!((report.contours_before, report.contours_after), (2, 1));
+/// assert_eq!(report.distance_bound.to_string(), "0"); // every meeting point is on the grid
+/// // a square with its hole is already right: unchanged
+/// let framed = parse_path("M0 0 V10 H10 V0 Z M2 2 H8 V8 H2 Z", NumberMode::Exact).unwrap();
+/// let input = GlyphInput { components: vec![framed], ..input };
+/// assert_eq!(decide_glyph(&input, &Budget::unlimited()).unwrap(), GlyphDecision::Unchanged);
+/// ```
 pub fn decide_glyph(input: &GlyphInput, budget: &Budget) -> Result<GlyphDecision> {
     glyph::decide(input, budget)
 }
