@@ -138,7 +138,7 @@ pub(super) fn certify(
     // 1. every contour written, with the right sign of area
     let mut failures: Vec<(String, Vec<[f64; 2]>, usize)> = vec![];
     for (k, (c, w)) in contours.iter().zip(written).enumerate() {
-        let expected = if plan.contours[k].depth % 2 == 0 { orientation } else { orientation.reversed() };
+        let expected = if plan.contours[k].depth.is_multiple_of(2) { orientation } else { orientation.reversed() };
         let a = area(c);
         let ok = match expected {
             Orientation::Ccw => a.is_positive(),

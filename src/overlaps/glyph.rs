@@ -384,3 +384,47 @@ fn sliver(plan: &Plan, k: usize) -> Repair {
         if a.hi.abs() >= a.lo.abs() { (a.hi * &million).ceil() / million } else { (a.lo * &million).floor() / million };
     Repair::DroppedSliver { area }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::Orientation;
+
+    /// The screen's "unchanged" agrees with the exact route on every glyph of the test font it
+    /// decides (composites taken whole), and decides most of them.
+    #[test]
+    fn screen_agrees_with_the_exact_decision() {
+        let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/Tuffy.ttf"));
+        let font = crate::format::Font::open(data, 0).unwrap();
+        let mut screened = 0;
+        for gid in 0..font.num_glyphs() {
+            let components = vec![font.outline(gid).unwrap()];
+            if !super::super::screen::clean(&components, Orientation::Cw) {
+                continue;
+            }
+            screened += 1;
+            let input = GlyphInput {
+                glyph_id: gid,
+                name: font.glyph_name(gid),
+                components,
+                flavour: Flavour::Quadratic,
+                orientation: Orientation::Cw,
+            };
+            assert_eq!(decide_exactly(&input, &Budget::unlimited()).unwrap(), GlyphDecision::Unchanged, "{gid}");
+        }
+        assert!(screened > font.num_glyphs() * 3 / 4, "{screened} of {}", font.num_glyphs());
+    }
+
+    #[test]
+    fn stored_points_leave_implied_midpoints_out() {
+        // a TrueType circle of four quadratics whose on-curve points are all midpoints: 4
+        // control points stored
+        let c = crate::format::parse_path(
+            "M0 -100 Q100 -100 100 0 Q100 100 0 100 Q-100 100 -100 0 Q-100 -100 0 -100 Z",
+            crate::num::NumberMode::Exact,
+        )
+        .unwrap();
+        assert_eq!(stored_points(&c[0], Flavour::Quadratic), 4);
+        assert_eq!(stored_points(&c[0], Flavour::Cubic), 8);
+    }
+}

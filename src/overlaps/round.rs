@@ -178,6 +178,15 @@ pub(super) fn plan(arr: &Arrangement, region: &[ExactContour], flavour: Flavour)
         }
         contours.push(PlanContour { pieces, parent: c.parent, depth: c.depth, exact: contours.len() });
     }
+    if points
+        .iter()
+        .flat_map(|p| &p.candidates)
+        .any(|(g, _)| g[0].abs() > MOST_COORDINATE || g[1].abs() > MOST_COORDINATE)
+    {
+        return Err(Error::InvalidArgument {
+            message: format!("a coordinate beyond ±{MOST_COORDINATE} cannot be written"),
+        });
+    }
     Ok(Plan { points, contours })
 }
 
@@ -189,6 +198,9 @@ fn elevate(q: &[Point2<BigRational>]) -> Vec<Point2<BigRational>> {
     };
     vec![q[0].clone(), mix(&q[0], &q[1]), mix(&q[2], &q[1]), q[2].clone()]
 }
+
+/// Largest grid coordinate written (font coordinates are 16-bit; this keeps `i32` safe).
+const MOST_COORDINATE: i64 = 1 << 30;
 
 impl Plan {
     /// The plan without contour `k` (which encloses no other contour).

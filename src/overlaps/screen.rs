@@ -199,7 +199,7 @@ pub(super) fn clean(components: &[Vec<Contour>], orientation: Orientation) -> bo
     // disjoint simple closed curves: nesting by one point of each, direction by exact areas
     for (j, rj) in rings.iter().enumerate() {
         let p = rj.segs[0][0];
-        let mut depth = 0;
+        let mut depth: usize = 0;
         // per component, the winding number of its rings around q
         let mut around = vec![0i64; components.len()];
         for (i, ri) in rings.iter().enumerate() {
@@ -220,7 +220,7 @@ pub(super) fn clean(components: &[Vec<Contour>], orientation: Orientation) -> bo
             continue;
         }
         let area: i128 = rj.segs.iter().map(|s| area_units(s)).sum();
-        let expected = if depth % 2 == 0 { orientation } else { orientation.reversed() };
+        let expected = if depth.is_multiple_of(2) { orientation } else { orientation.reversed() };
         let ok = match expected {
             Orientation::Ccw => area >= 0,
             Orientation::Cw => area <= 0,
