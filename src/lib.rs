@@ -27,6 +27,7 @@
 //!   operations) decided against the exact ones.
 //! * [`format`](mod@format): fonts, SVG and path data read exactly (the edge of the library).
 //! * [`lint`]: outline QA findings decided exactly, from the shapes and curves below.
+//! * [`overlaps`]: overlap removal that writes the font, its rounding to the grid certified.
 //! * [`catalogue`]: the `proofs/` claim files and their exact checks.
 //! * [`plot`]: deterministic SVG figures and the seed gallery.
 //!
@@ -53,6 +54,8 @@ pub mod intersect;
 pub mod lint;
 pub mod num;
 pub mod oracle;
+#[cfg(feature = "fonts")]
+pub mod overlaps;
 pub mod path;
 pub mod plot;
 pub mod poly;

@@ -29,7 +29,7 @@ mod boolean;
 mod changed;
 mod germ;
 mod hermite;
-mod pairs;
+pub(crate) mod pairs;
 mod ray;
 mod render;
 pub(crate) mod segment;

@@ -46,7 +46,7 @@ fn split_at_common_point(p: &Point2<BigRational>, a: &[Point2<BigRational>], b: 
 }
 
 /// [`split_at_common_point`] on small integers (exact in `i128`).
-fn split_at_common_point_small(p: [i64; 2], a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
+pub(crate) fn split_at_common_point_small(p: [i64; 2], a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
     let away = |ps: &[[i64; 2]]| -> Option<[i128; 2]> {
         let first = if ps[0] == p { ps.iter().find(|q| **q != p) } else { ps.iter().rev().find(|q| **q != p) };
         first.map(|q| [(q[0] - p[0]) as i128, (q[1] - p[1]) as i128])
@@ -63,7 +63,7 @@ fn split_at_common_point_small(p: [i64; 2], a: &[[i64; 2]], b: &[[i64; 2]]) -> b
 }
 
 /// [`hulls_separated`] on small integers (exact in `i128`).
-fn hulls_separated_small(a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
+pub(crate) fn hulls_separated_small(a: &[[i64; 2]], b: &[[i64; 2]]) -> bool {
     let proj = |n: [i128; 2], ps: &[[i64; 2]]| {
         ps.iter()
             .map(|q| q[0] as i128 * n[0] + q[1] as i128 * n[1])
@@ -131,6 +131,9 @@ pub(crate) fn injective(s: &Seg) -> bool {
         }
         return false;
     }
+    if let Some(small) = &s.small {
+        return injective_small(small);
+    }
     let h: Vec<[BigRational; 2]> = ps.windows(2).map(|w| [&w[1].x - &w[0].x, &w[1].y - &w[0].y]).collect();
     let mut candidates: Vec<[BigRational; 2]> = h.clone();
     let sum = h.iter().fold([rat(0), rat(0)], |acc, v| [&acc[0] + &v[0], &acc[1] + &v[1]]);
@@ -139,6 +142,19 @@ pub(crate) fn injective(s: &Seg) -> bool {
     candidates.iter().any(|n| {
         let dots: Vec<BigRational> = h.iter().map(|v| &v[0] * &n[0] + &v[1] * &n[1]).collect();
         dots.iter().all(|d| !d.is_negative()) && dots.iter().any(|d| d.is_positive())
+    })
+}
+
+/// [`injective`]'s hodograph test on small integers (doubled points: the same signs), exact in
+/// `i128`.
+pub(crate) fn injective_small(ps: &[[i64; 2]]) -> bool {
+    let h: Vec<[i128; 2]> = ps.windows(2).map(|w| [(w[1][0] - w[0][0]) as i128, (w[1][1] - w[0][1]) as i128]).collect();
+    let mut candidates: Vec<[i128; 2]> = h.clone();
+    candidates.push(h.iter().fold([0, 0], |acc, v| [acc[0] + v[0], acc[1] + v[1]]));
+    candidates.push([h[0][0] + h[h.len() - 1][0], h[0][1] + h[h.len() - 1][1]]);
+    candidates.iter().any(|n| {
+        let dots: Vec<i128> = h.iter().map(|v| v[0] * n[0] + v[1] * n[1]).collect();
+        dots.iter().all(|d| *d >= 0) && dots.iter().any(|d| *d > 0)
     })
 }
 

@@ -93,21 +93,20 @@ fn boxed(ps: &[Point2<BigRational>]) -> [f64; 4] {
     b
 }
 
-/// Twice the points as small integers (`|2c| < 2²⁴`), when they are.
+/// Twice the points as small integers (`|2c| < 2²⁴`), when they are (read off the reduced
+/// fractions: `2c` is an integer exactly when the denominator is 1 or 2, no arithmetic needed).
 fn small_points(ps: &[Point2<BigRational>]) -> Option<Vec<[i64; 2]>> {
     const LIMIT: i64 = 1 << 24;
-    ps.iter()
-        .map(|p| {
-            let c = |v: &BigRational| -> Option<i64> {
-                let two = v * rat(2);
-                if !two.is_integer() {
-                    return None;
-                }
-                two.to_integer().to_i64().filter(|x| x.abs() < LIMIT)
-            };
-            Some([c(&p.x)?, c(&p.y)?])
-        })
-        .collect()
+    let c = |v: &BigRational| -> Option<i64> {
+        let n = v.numer().to_i64()?;
+        let two = match v.denom().to_i64()? {
+            1 => n.checked_mul(2)?,
+            2 => n,
+            _ => return None,
+        };
+        (two.abs() < LIMIT).then_some(two)
+    };
+    ps.iter().map(|p| Some([c(&p.x)?, c(&p.y)?])).collect()
 }
 
 impl Seg {

@@ -41,6 +41,8 @@ mod lint_fonts;
 mod lint_report;
 #[cfg(feature = "cli")]
 mod oracle;
+#[cfg(feature = "fonts")]
+mod overlaps;
 mod parse_fuzz;
 mod parse_numbers;
 mod plot;
