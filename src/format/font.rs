@@ -239,7 +239,7 @@ impl<'a> Font<'a> {
         match &self.outlines {
             Outlines::Glyf { glyf, loca } => {
                 let mut raw = vec![];
-                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut raw)?;
+                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut raw, None)?;
                 let lone_points = raw.iter().filter(|c| c.len() == 1).map(|c| c[0].0.clone()).collect();
                 let (contours, numbers) = raw.iter().map(quadratic_contour).unzip();
                 Ok(super::NumberedOutline { contours, numbers, lone_points })
@@ -249,6 +249,40 @@ impl<'a> Font<'a> {
                 let numbers = contours.iter().map(super::point_numbers).collect();
                 Ok(super::NumberedOutline { contours, numbers, lone_points: vec![] })
             }
+        }
+    }
+
+    /// The glyph's outline split by component, for overlap removal: a simple glyph (or a CFF
+    /// glyph) is one part; a composite `glyf` glyph one part per component, each already placed
+    /// in the glyph's space exactly (as [`Self::outline`] places it). Contours of one point
+    /// are empty contours in their part; their points are listed apart, placed, in order.
+    ///
+    /// # Errors
+    /// As [`Self::outline`].
+    pub(crate) fn outline_parts(&self, gid: u32) -> Result<(Vec<Vec<Contour>>, Vec<P>)> {
+        if gid >= self.num_glyphs {
+            return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
+        }
+        match &self.outlines {
+            Outlines::Glyf { glyf, loca } => {
+                let (mut raw, mut ends) = (vec![], vec![]);
+                glyf_points(glyf, loca, gid, &Affine::identity(), 0, &mut raw, Some(&mut ends))?;
+                let lone = raw.iter().filter(|c| c.len() == 1).map(|c| c[0].0.clone()).collect();
+                if ends.is_empty() {
+                    ends.push(raw.len()); // a simple glyph: one part
+                }
+                let mut start = 0;
+                let parts = ends
+                    .iter()
+                    .map(|&end| {
+                        let part = raw[start..end].iter().map(|c| quadratic_contour(c).0).collect();
+                        start = end;
+                        part
+                    })
+                    .collect();
+                Ok((parts, lone))
+            }
+            Outlines::Cff(_) => Ok((vec![self.outline(gid)?], vec![])),
         }
     }
 
@@ -379,6 +413,7 @@ fn glyf_points(
     m: &Affine,
     depth: usize,
     out: &mut Vec<RawContour>,
+    mut parts: Option<&mut Vec<usize>>,
 ) -> Result<()> {
     if depth > MAX_COMPONENT_DEPTH {
         return Err(fail(format!("glyph {gid}: composite nesting deeper than {MAX_COMPONENT_DEPTH} (or cyclic)")));
@@ -419,7 +454,7 @@ fn glyf_points(
                 let before = out.len();
                 // the component in its own units, mapped by the 2×2 part only; placed below
                 let mut own = vec![];
-                glyf_points(glyf, loca, comp.glyph.to_u32(), &linear, depth + 1, &mut own)?;
+                glyf_points(glyf, loca, comp.glyph.to_u32(), &linear, depth + 1, &mut own, None)?;
                 let offset = match comp.anchor {
                     Anchor::Offset { x, y } => {
                         let o = Point::new(vec![int(x), int(y)]);
@@ -454,6 +489,9 @@ fn glyf_points(
                     offset.coords[1].clone(),
                 ]));
                 out.extend(own.into_iter().map(|c| c.into_iter().map(|(p, on)| (place.apply(&p), on)).collect()));
+                if let Some(parts) = parts.as_deref_mut() {
+                    parts.push(out.len());
+                }
             }
             Ok(())
         }
