@@ -154,6 +154,35 @@ fn without_instructions(g: &[u8], gid: u32) -> Result<Option<Vec<u8>>> {
             return Ok(None);
         }
         let rest = g.get(at + 2 + len..).ok_or_else(bad)?;
+        // the flags and coordinates, without the record's padding (fontTools' `trim`)
+        let points = u16_at(g, at - 2) as usize + 1;
+        let (mut k, mut seen, mut coords) = (0usize, 0usize, 0usize);
+        while seen < points {
+            let f = *rest.get(k).ok_or_else(bad)?;
+            k += 1;
+            let mut repeat = 1;
+            if f & REPEAT != 0 {
+                repeat += *rest.get(k).ok_or_else(bad)? as usize;
+                k += 1;
+            }
+            let x = if f & X_SHORT != 0 {
+                1
+            } else if f & X_SAME_OR_POSITIVE != 0 {
+                0
+            } else {
+                2
+            };
+            let y = if f & Y_SHORT != 0 {
+                1
+            } else if f & Y_SAME_OR_POSITIVE != 0 {
+                0
+            } else {
+                2
+            };
+            coords += (x + y) * repeat;
+            seen += repeat;
+        }
+        let rest = rest.get(..k + coords).ok_or_else(bad)?;
         let mut out = g[..at].to_vec();
         out.extend([0, 0]);
         out.extend(rest);
