@@ -300,11 +300,19 @@ pub fn write_font(
             };
             let input = GlyphInput { glyph_id: gid, name: font.glyph_name(gid), components, flavour, orientation };
             let decision = decide(&input).unwrap_or_else(|e| GlyphDecision::Uncertified { reason: e.to_string() });
-            if let GlyphDecision::Rewritten { contours, .. } = &decision
-                && let Some(e) = contours.iter().find_map(|c| storable(c, flavour).err())
-            {
-                let message = format!("glyph {gid}: the decided outline cannot be written: {e}");
-                return (gid, Err(Error::InvalidArgument { message }), vec![]);
+            if let GlyphDecision::Rewritten { contours, .. } = &decision {
+                // the outline must fit the format: checked by encoding it once
+                let fits = match contours.iter().find_map(|c| storable(c, flavour).err()) {
+                    Some(e) => Err(e),
+                    None if flavour == Flavour::Quadratic => {
+                        glyf::encode_simple(contours, gid).map(|_| ()).map_err(|e| e.to_string())
+                    }
+                    None => cff::encode_charstring(None, contours, gid).map(|_| ()).map_err(|e| e.to_string()),
+                };
+                if let Err(e) = fits {
+                    let message = format!("glyph {gid}: the decided outline cannot be written: {e}");
+                    return (gid, Err(Error::InvalidArgument { message }), vec![]);
+                }
             }
             (gid, Ok(decision), lone)
         })
