@@ -731,7 +731,7 @@ fn cli_a_glyph_over_the_budget_is_left_unchanged_and_fails_the_run() {
     let dir = TempDir::new("ro-budget");
     let font = dir.join("in.ttf");
     std::fs::write(&font, tt_test_font(&[])).unwrap();
-    let out = dir.join("out.ttf");
+    let (out, html) = (dir.join("out.ttf"), dir.join("report.html"));
     let args = [
         "remove-overlaps",
         font.to_str().unwrap(),
@@ -742,9 +742,14 @@ fn cli_a_glyph_over_the_budget_is_left_unchanged_and_fails_the_run() {
         "1",
         "--json",
         "--keep-hinting",
+        "--html",
+        html.to_str().unwrap(),
     ];
     let o = run(&args, None);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let report = std::fs::read_to_string(&html).unwrap();
+    assert!(report.contains("<h3>Left unchanged</h3>"), "{report}");
+    assert!(report.contains("<td>overlap</td><td class=\"n\">2</td>"), "{report}");
     let line: serde_json::Value = serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
     assert_eq!((line["glyph"].as_str(), line["glyph_id"].as_u64()), (Some("overlap"), Some(2)));
     assert!(line["uncertified"].is_string(), "{line}");

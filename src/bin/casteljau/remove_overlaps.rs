@@ -194,10 +194,10 @@ fn run_checked(args: &RemoveOverlapsArgs, out: &mut dyn Write) -> Result<i32, St
         }
     }
     let line = format!(
-        "{file} → {}: {} glyphs considered, {} rewritten (certified), {} not certified, {} could not be read or \
-         written, {} unchanged",
+        "{file} → {}: {} considered, {} rewritten (certified), {} not certified, {} could not be read or written, \
+         {} unchanged",
         args.output.display(),
-        summary.considered,
+        if summary.considered == 1 { "1 glyph".to_string() } else { format!("{} glyphs", summary.considered) },
         summary.rewritten,
         summary.uncertified,
         summary.failed,
