@@ -106,7 +106,7 @@ pub(super) fn checksum(data: &[u8]) -> u32 {
 /// each table's checksum, the data 4-byte aligned in directory order, and
 /// `head.checkSumAdjustment` set so that the whole file sums to `0xB1B0AFBA`.
 pub(super) fn assemble(version: u32, mut tables: Vec<([u8; 4], Vec<u8>)>) -> Vec<u8> {
-    tables.sort_by(|a, b| a.0.cmp(&b.0));
+    tables.sort_by_key(|a| a.0);
     let count = tables.len();
     let mut entry_selector = 0u16;
     while (2usize << entry_selector) <= count {

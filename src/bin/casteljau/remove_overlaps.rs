@@ -143,7 +143,7 @@ fn run_checked(args: &RemoveOverlapsArgs, out: &mut dyn Write) -> Result<i32, St
     let decide = |g: &casteljau::overlaps::GlyphInput| {
         let d = decide_glyph(g, &Budget::new(max_work, "--max-work"));
         let k = done.fetch_add(1, Ordering::Relaxed) + 1;
-        if progress && (k % 64 == 0 || k == total) {
+        if progress && (k.is_multiple_of(64) || k == total) {
             eprint!("\r\x1b[K{file}: {k}/{total} glyphs");
         }
         d
