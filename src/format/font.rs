@@ -325,17 +325,7 @@ impl<'a> Font<'a> {
         }
         match &self.outlines {
             Outlines::Glyf { glyf, loca } => {
-                let label = |g: u32| self.label(g);
-                let mut sizes = std::collections::HashMap::new();
-                let size = decomposed_size(glyf, loca, gid, 0, &mut sizes, &mut vec![], &label)?;
-                if size > MAX_GLYPH_POINTS {
-                    return Err(fail(format!(
-                        "{}: its composite decomposes into more than {MAX_GLYPH_POINTS} points and component \
-                         references, the limit (refused before composing)",
-                        self.label(gid)
-                    )));
-                }
-                let raw = glyf_points(glyf, loca, gid, &mut std::collections::HashMap::new(), &label)?;
+                let raw = self.glyf_raw(glyf, loca, gid, None)?;
                 let lone_points = raw.iter().filter(|c| c.len() == 1).map(|c| c[0].0.clone()).collect();
                 let (contours, numbers) = raw.iter().map(quadratic_contour).unzip();
                 Ok(super::NumberedOutline { contours, numbers, lone_points })
@@ -345,6 +335,62 @@ impl<'a> Font<'a> {
                 let numbers = contours.iter().map(super::point_numbers).collect();
                 Ok(super::NumberedOutline { contours, numbers, lone_points: vec![] })
             }
+        }
+    }
+
+    /// A `glyf` glyph's raw contours, its decomposed size counted first (refused before
+    /// composing when over the limit); `parts` receives where each top-level component ends.
+    fn glyf_raw(
+        &self,
+        glyf: &Glyf<'_>,
+        loca: &Loca<'_>,
+        gid: u32,
+        parts: Option<&mut Vec<usize>>,
+    ) -> Result<std::rc::Rc<Vec<RawContour>>> {
+        let label = |g: u32| self.label(g);
+        let mut sizes = std::collections::HashMap::new();
+        let size = decomposed_size(glyf, loca, gid, 0, &mut sizes, &mut vec![], &label)?;
+        if size > MAX_GLYPH_POINTS {
+            return Err(fail(format!(
+                "{}: its composite decomposes into more than {MAX_GLYPH_POINTS} points and component \
+                 references, the limit (refused before composing)",
+                self.label(gid)
+            )));
+        }
+        glyf_points(glyf, loca, gid, &mut std::collections::HashMap::new(), &label, parts)
+    }
+
+    /// The glyph's outline split by component, for overlap removal: a simple glyph (or a CFF
+    /// glyph) is one part; a composite `glyf` glyph one part per component, each already placed
+    /// in the glyph's space exactly (as [`Self::outline`] places it). Contours of one point
+    /// are empty contours in their part; their points are listed apart, placed, in order.
+    ///
+    /// # Errors
+    /// As [`Self::outline`].
+    pub(crate) fn outline_parts(&self, gid: u32) -> Result<(Vec<Vec<Contour>>, Vec<P>)> {
+        if gid >= self.num_glyphs {
+            return Err(fail(format!("glyph {gid}: the font has {} glyphs", self.num_glyphs)));
+        }
+        match &self.outlines {
+            Outlines::Glyf { glyf, loca } => {
+                let mut ends = vec![];
+                let raw = self.glyf_raw(glyf, loca, gid, Some(&mut ends))?;
+                let lone = raw.iter().filter(|c| c.len() == 1).map(|c| c[0].0.clone()).collect();
+                if ends.is_empty() {
+                    ends.push(raw.len()); // a simple glyph: one part
+                }
+                let mut start = 0;
+                let parts = ends
+                    .iter()
+                    .map(|&end| {
+                        let part = raw[start..end].iter().map(|c| quadratic_contour(c).0).collect();
+                        start = end;
+                        part
+                    })
+                    .collect();
+                Ok((parts, lone))
+            }
+            Outlines::Cff(_) => Ok((vec![self.outline(gid)?], vec![])),
         }
     }
 
@@ -520,6 +566,7 @@ fn glyf_points(
     gid: u32,
     done: &mut std::collections::HashMap<u32, std::rc::Rc<Vec<RawContour>>>,
     label: &dyn Fn(u32) -> String,
+    mut parts: Option<&mut Vec<usize>>,
 ) -> Result<std::rc::Rc<Vec<RawContour>>> {
     if let Some(points) = done.get(&gid) {
         return Ok(points.clone());
@@ -552,7 +599,7 @@ fn glyf_points(
             for comp in g.components() {
                 let t = &comp.transform;
                 let linear = Affine([f2dot14(t.xx), f2dot14(t.yx), f2dot14(t.xy), f2dot14(t.yy), rat(0), rat(0)]);
-                let own = glyf_points(glyf, loca, comp.glyph.to_u32(), done, label)?;
+                let own = glyf_points(glyf, loca, comp.glyph.to_u32(), done, label, None)?;
                 // the component in the composite's units: its 2×2 part, then the offset
                 let scaled: Vec<RawContour> = if linear == Affine::identity() {
                     own.as_ref().clone()
@@ -586,6 +633,9 @@ fn glyf_points(
                     starts.push(count);
                     count += c.len();
                     out.push(if moved { c.into_iter().map(|(p, on)| (p.add(&offset), on)).collect() } else { c });
+                }
+                if let Some(parts) = parts.as_deref_mut() {
+                    parts.push(out.len());
                 }
             }
         }

@@ -25,12 +25,17 @@ mod region;
 mod round;
 mod screen;
 
+mod cff;
+mod glyf;
+mod sfnt;
+
 use crate::error::{Error, Result};
-use crate::format::Contour;
+use crate::format::{Contour, Font};
 use crate::shape::Orientation;
 use crate::work::Budget;
 use num_rational::BigRational;
 use serde::Serialize;
+use std::collections::BTreeMap;
 
 /// The curves a font stores: TrueType quadratics or CFF cubics.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -119,6 +124,21 @@ pub enum Repair {
         #[serde(serialize_with = "crate::num::serial::string")]
         area: BigRational,
     },
+}
+
+impl std::fmt::Display for Repair {
+    /// One line per repair, as the command line's text output and HTML report print it.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Repair::HotPixel { x, y } => write!(f, "hot pixel at ({x}, {y})"),
+            Repair::MovedControl { contour, point } => write!(f, "control point {point} of contour {contour} moved"),
+            Repair::MovedVertex { contour, point } => write!(f, "on-curve point {point} of contour {contour} moved"),
+            Repair::Straightened { contour, point } => {
+                write!(f, "curve at point {point} of contour {contour} straightened")
+            }
+            Repair::DroppedSliver { area } => write!(f, "sliver of exact area {area} dropped"),
+        }
+    }
 }
 
 /// The certificate of a rewritten glyph. JSON fields: `glyph`, `glyph_id`, `contours_before`,
@@ -253,21 +273,185 @@ pub struct WriteOptions {
 pub struct FontOutcome {
     /// The new font file.
     pub data: Vec<u8>,
-    /// Per glyph considered, in glyph order: its id and decision (an `Err` is a glyph that
-    /// could not be read or decided, left unchanged).
+    /// Per glyph considered, in glyph order: its id and decision. An `Err` is a glyph whose
+    /// outline could not be read, or whose decided outline could not be written (a coordinate
+    /// beyond the format's range, points in an order the format cannot store); an error of
+    /// `decide` (such as [`Error::WorkLimit`]) is an [`GlyphDecision::Uncertified`] glyph
+    /// with the error's message. Either way the glyph is left unchanged.
     pub glyphs: Vec<(u32, Result<GlyphDecision>)>,
 }
 
+/// What the table writers need: the outlines to write and whose instructions or hints go.
+pub(crate) struct Written {
+    /// The glyphs rewritten: their contours (one-point contours of the original appended).
+    changed: BTreeMap<u32, Vec<GridContour>>,
+    /// The glyphs considered (`None`: all).
+    considered: Option<std::collections::BTreeSet<u32>>,
+    /// Keep the instructions (hints) of the glyphs not rewritten.
+    keep_hinting: bool,
+}
+
+impl Written {
+    /// Whether a glyph that is not rewritten loses its TrueType instructions.
+    fn strip_instructions(&self, gid: u32) -> bool {
+        !self.keep_hinting && self.considered.as_ref().is_none_or(|c| c.contains(&gid))
+    }
+}
+
+/// Whether the points of a decided contour can be stored in the font's format: the first
+/// point on-curve; TrueType: at most one control point between on-curve points; CFF: exactly
+/// two. A contour of one point is an anchor.
+fn storable(c: &GridContour, flavour: Flavour) -> std::result::Result<(), String> {
+    let Some(first) = c.points.first() else { return Ok(()) };
+    if !first.on_curve {
+        return Err("a contour starts with a control point".into());
+    }
+    let mut run = 0;
+    for p in c.points.iter().skip(1).chain(std::iter::once(first)) {
+        if p.on_curve {
+            let ok = match flavour {
+                Flavour::Quadratic => run <= 1,
+                Flavour::Cubic => run == 0 || run == 2,
+            };
+            if !ok {
+                return Err(format!("{run} control points between two on-curve points"));
+            }
+            run = 0;
+        } else {
+            run += 1;
+        }
+    }
+    Ok(())
+}
+
 /// Rewrites a font from per-glyph decisions (`decide`, normally [`decide_glyph`] with a
-/// budget): changed glyphs get their certified outlines, every other glyph stays byte-identical.
+/// budget per glyph), on all cores (rayon's current pool): changed glyphs get their certified
+/// outlines, every other glyph stays byte-identical, its instructions aside.
+///
+/// * TrueType (`glyf`): see the `glyf` writer — glyph records copied from their `loca` ranges,
+///   rewritten glyphs encoded as simple glyphs without instructions (a composite that is
+///   rewritten becomes a simple glyph), the instructions of the other glyphs considered
+///   removed unless [`WriteOptions::keep_hinting`] (fontTools' `removeHinting`), `loca`,
+///   `head` (box, `indexToLocFormat`, flags bit 1), `hmtx` (a rewritten glyph's left side
+///   bearing is its `xMin`), `hhea` and `maxp` recomputed as fontTools does on saving.
+/// * CFF (`CFF `): see the CFF writer — when a glyph is rewritten, its charstring is
+///   replaced (same width), every charstring is desubroutinized (no subroutine is left) and,
+///   unless `keep_hinting`, loses its hints.
+/// * Every other table is copied; the table directory, table checksums and
+///   `head.checkSumAdjustment` are computed anew. `head.modified` is kept, so the same input
+///   and decisions give the same bytes.
+///
+/// One-point contours of a rewritten glyph (anchors) are kept: appended after its decided
+/// contours unless the decision already has contours of one point.
 ///
 /// # Errors
-/// Variable fonts (`fvar`) and CFF2: refused naming the table.
+/// [`Error::InvalidArgument`] for data that is not a single OpenType font (collections, WOFF),
+/// variable fonts (`fvar`) and CFF2 (refused naming the table: instantiate first, then remove
+/// overlaps), a glyph id beyond the font, or tables too malformed to rewrite (naming the
+/// table or glyph).
+///
+/// # Example
+/// ```
+/// use casteljau::overlaps::{GlyphDecision, WriteOptions, write_font};
+/// let data = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fonts/Tuffy.ttf"));
+/// let options = WriteOptions { keep_hinting: true, glyphs: Some(vec![36]) };
+/// let out = write_font(data, &options, &|_| Ok(GlyphDecision::Unchanged)).unwrap();
+/// assert_eq!(out.glyphs.len(), 1);
+/// // nothing rewritten: the same outlines, every table but head, hhea, maxp, loca, glyf the same
+/// let font = casteljau::format::Font::open(&out.data, 0).unwrap();
+/// assert_eq!(font.num_glyphs(), 1502);
+/// ```
 pub fn write_font(
     data: &[u8],
     options: &WriteOptions,
     decide: &(dyn Fn(&GlyphInput) -> Result<GlyphDecision> + Sync),
 ) -> Result<FontOutcome> {
-    let _ = (data, options, decide);
-    Err(Error::InvalidArgument { message: "font writing: not implemented yet".into() })
+    use rayon::prelude::*;
+    let tables = sfnt::Tables::read(data)?;
+    if tables.get(b"fvar").is_some() {
+        return Err(Error::InvalidArgument {
+            message: "a variable font (fvar table): instantiate it first (a static instance, e.g. with \
+                      fontTools' instancer), then remove overlaps"
+                .into(),
+        });
+    }
+    if tables.get(b"CFF2").is_some() {
+        return Err(Error::InvalidArgument {
+            message: "a CFF2 table: only static TrueType (glyf) and CFF fonts are written".into(),
+        });
+    }
+    let cff = tables.get(b"glyf").is_none();
+    if cff && tables.get(b"CFF ").is_none() {
+        return Err(Error::InvalidArgument { message: "no glyf or CFF table: no outlines to rewrite".into() });
+    }
+    let font = Font::open(data, 0)?;
+    let n = font.num_glyphs();
+    let gids: Vec<u32> = match &options.glyphs {
+        None => (0..n).collect(),
+        Some(g) => {
+            if let Some(bad) = g.iter().find(|&&g| g >= n) {
+                return Err(Error::InvalidArgument { message: format!("glyph {bad}: the font has {n} glyphs") });
+            }
+            let set: std::collections::BTreeSet<u32> = g.iter().copied().collect();
+            set.into_iter().collect()
+        }
+    };
+    let flavour = if font.is_cff() { Flavour::Cubic } else { Flavour::Quadratic };
+    let orientation = font.outer_orientation();
+    type Decided = (u32, Result<GlyphDecision>, Vec<crate::num::Point<BigRational>>);
+    let decided: Vec<Decided> = gids
+        .par_iter()
+        .map(|&gid| {
+            let (components, lone) = match font.outline_parts(gid) {
+                Ok(parts) => parts,
+                Err(e) => return (gid, Err(e), vec![]),
+            };
+            let input = GlyphInput { glyph_id: gid, name: font.glyph_name(gid), components, flavour, orientation };
+            let decision = decide(&input).unwrap_or_else(|e| GlyphDecision::Uncertified { reason: e.to_string() });
+            if let GlyphDecision::Rewritten { contours, .. } = &decision {
+                // the outline must fit the format: checked by encoding it once
+                let fits = match contours.iter().find_map(|c| storable(c, flavour).err()) {
+                    Some(e) => Err(e),
+                    None if flavour == Flavour::Quadratic => {
+                        glyf::encode_simple(contours, gid).map(|_| ()).map_err(|e| e.to_string())
+                    }
+                    None => cff::encode_charstring(None, contours, gid).map(|_| ()).map_err(|e| e.to_string()),
+                };
+                if let Err(e) = fits {
+                    let message = format!("glyph {gid}: the decided outline cannot be written: {e}");
+                    return (gid, Err(Error::InvalidArgument { message }), vec![]);
+                }
+            }
+            (gid, Ok(decision), lone)
+        })
+        .collect();
+    let mut changed = BTreeMap::new();
+    for (gid, d, lone) in &decided {
+        if let Ok(GlyphDecision::Rewritten { contours, .. }) = d {
+            let mut all = contours.clone();
+            if !contours.iter().any(|c| c.points.len() == 1) {
+                all.extend(lone.iter().map(|p| GridContour { points: vec![grid_point(p)] }));
+            }
+            changed.insert(*gid, all);
+        }
+    }
+    let written = Written {
+        changed,
+        considered: options.glyphs.as_ref().map(|_| gids.iter().copied().collect()),
+        keep_hinting: options.keep_hinting,
+    };
+    let data =
+        if cff { cff::write(&tables, n as usize, &written)? } else { glyf::write(&tables, n as usize, &written)? };
+    Ok(FontOutcome { data, glyphs: decided.into_iter().map(|(g, d, _)| (g, d)).collect() })
+}
+
+/// A one-point contour's point on the grid: its coordinates rounded half up (they are integers
+/// except in a scaled component).
+fn grid_point(p: &crate::num::Point<BigRational>) -> GridPoint {
+    let half = BigRational::new(1.into(), 2.into());
+    let round = |v: &BigRational| {
+        let r = (v + &half).floor().to_integer();
+        i32::try_from(r).unwrap_or(0)
+    };
+    GridPoint { x: round(&p.coords[0]), y: round(&p.coords[1]), on_curve: true }
 }

@@ -489,4 +489,3 @@ fn nth_root(x: &BigRational, n: u32) -> Option<BigRational> {
     };
     Some(BigRational::new(root(x.numer())?, root(x.denom())?))
 }
-

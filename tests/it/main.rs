@@ -52,6 +52,8 @@ mod rational_cubic;
 #[cfg(feature = "cli")]
 mod readers;
 #[cfg(feature = "cli")]
+mod remove_overlaps;
+#[cfg(feature = "cli")]
 mod robustness;
 mod seed_examples;
 mod shape_properties;

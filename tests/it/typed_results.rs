@@ -142,4 +142,3 @@ fn patch_split_in_u_and_in_v_of_the_transpose_agree() {
     assert_eq!(u.first, v.first.transpose());
     assert_eq!(u.second, v.second.transpose());
 }
-

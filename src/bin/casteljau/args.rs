@@ -136,6 +136,9 @@ pub enum Command {
         #[command(flatten)]
         curve: CurveArgs,
     },
+    /// Remove overlaps from a static TrueType or CFF font and write it: each glyph's region
+    /// decided exactly, rounded to the grid and certified; other glyphs stay byte-identical.
+    RemoveOverlaps(crate::remove_overlaps::RemoveOverlapsArgs),
     /// Prove or refute that a (rational) curve lies on f = 0: exit 0 proved, 1 counterexample.
     Implicit {
         /// The polynomial f in x, y (and z), e.g. "x^3 - 3*x*y + y^3".

@@ -76,7 +76,7 @@ fn meaning(k: Kind) -> &'static str {
     }
 }
 
-const STYLE: &str = r#"
+pub(crate) const STYLE: &str = r#"
 :root{--ink:#1d2129;--muted:#6b7280;--line:#e5e7eb;--bg:#f6f7f9;--card:#fff;--accent:#2f5bd3}
 *{box-sizing:border-box}
 body{margin:0;background:var(--bg);color:var(--ink);font:14px/1.45 system-ui,-apple-system,"Segoe UI",Roboto,"Helvetica Neue",Arial,sans-serif}
@@ -555,7 +555,7 @@ fn rounding_item(s: &mut String, f: &Finding) {
     );
 }
 
-fn finding_item(s: &mut String, n: usize, f: &Finding) {
+pub(crate) fn finding_item(s: &mut String, n: usize, f: &Finding) {
     let k = f.kind().as_str();
     let num = format!("<span class=\"num\">{n}</span>");
     let sev = f.severity.as_str();

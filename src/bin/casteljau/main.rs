@@ -12,7 +12,8 @@
 //!   `gallery`); [`splines`]: the `spline` command (knot vectors, JSON Lines splines); [`scan`]:
 //!   fonts, SVG and batches, segment by segment; [`intersect`]: `intersect` and `winding`;
 //!   [`check`]: a float library's answers against the exact ones; [`shapes`]: `boolean` and
-//!   `arrange` on path data and SVG files, [`glyphs`]: `boolean simplify` on every glyph of fonts.
+//!   `arrange` on path data and SVG files, [`glyphs`]: `boolean simplify` on every glyph of fonts;
+//!   [`remove_overlaps`]: overlap removal that writes the font.
 
 mod answers;
 mod args;
@@ -30,6 +31,8 @@ mod lint_html;
 mod lint_units;
 mod options;
 mod pipeline;
+mod remove_overlaps;
+mod remove_overlaps_html;
 mod render;
 mod scan;
 mod shapes;
@@ -76,5 +79,6 @@ fn run(cli: Cli, out: &mut dyn Write) -> i32 {
         Command::Winding(args) => intersect::run_winding(&args, out),
         Command::Boolean(args) => shapes::boolean(&args, out),
         Command::Arrange(args) => shapes::arrange(&args, out),
+        Command::RemoveOverlaps(args) => remove_overlaps::run(&args, out),
     }
 }
