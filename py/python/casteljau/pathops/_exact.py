@@ -1,0 +1,430 @@
+"""The exact operations under ``casteljau.pathops``: paths to casteljau shapes and back."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from typing import Any, Dict, List, Optional, Sequence, Tuple
+
+from .. import _core
+from ._path import (
+    FillType,
+    Path,
+    PathOp,
+    PathOpsError,
+    PathVerb,
+    UnsupportedVerbError,
+    _collinear,
+    _reverse_contour,
+    _same,
+    _signed_area,
+    _POINTS_IN_VERB,
+)
+
+Contours = List[List[Tuple[list, Optional[list]]]]
+
+
+class ExactOperationError(PathOpsError, _core.CasteljauError):
+    """An exact operation refused its input or its work budget: both a ``PathOpsError`` (as
+    skia-pathops raises) and a ``casteljau.CasteljauError`` (a ``ValueError``) with casteljau's
+    message (``max_work`` named when the budget refused)."""
+
+
+_OPS = {
+    PathOp.DIFFERENCE: "difference",
+    PathOp.INTERSECTION: "intersection",
+    PathOp.UNION: "union",
+    PathOp.XOR: "xor",
+    PathOp.REVERSE_DIFFERENCE: "difference",
+}
+
+
+def exchange(path: Path) -> Contours:
+    """A path's contours as casteljau's exchange form: each contour closed by a line when its
+    last point is not its first (Skia fills open contours closed)."""
+    out: Contours = []
+    segs: List[Tuple[list, Optional[list]]] = []
+    start = cur = None
+    weights = iter(path._weights)
+
+    def finish() -> None:
+        if segs:
+            if not _same(cur, start):  # type: ignore[arg-type]
+                segs.append(([cur, start], None))
+            out.append(list(segs))
+        segs.clear()
+
+    for verb, pts in path._records():
+        if verb == PathVerb.MOVE:
+            finish()
+            start = cur = pts[0]
+        elif verb == PathVerb.CLOSE:
+            finish()
+        elif verb == PathVerb.LINE:
+            segs.append(([cur, pts[0]], None))
+            cur = pts[0]
+        elif verb == PathVerb.QUAD:
+            segs.append(([cur, pts[0], pts[1]], None))
+            cur = pts[1]
+        elif verb == PathVerb.CUBIC:
+            segs.append(([cur, pts[0], pts[1], pts[2]], None))
+            cur = pts[2]
+        elif verb == PathVerb.CONIC:
+            segs.append(([cur, pts[0], pts[1]], [1, next(weights), 1]))
+            cur = pts[1]
+    finish()
+    return out
+
+
+def _conic_weight(ws: Sequence[Any]) -> Any:
+    """The middle weight of ``(w0, w1, w2)`` in Skia's form ``(1, w, 1)``: ``w1/√(w0·w2)``,
+    exact when the square root is rational."""
+    w0, w1, w2 = ws
+    if all(isinstance(w, (int, Fraction)) for w in ws):
+        p = Fraction(w0) * Fraction(w2)
+        if p <= 0:
+            raise UnsupportedVerbError("a rational quadratic with end weights of opposite signs")
+        n, d = math.isqrt(p.numerator), math.isqrt(p.denominator)
+        if n * n == p.numerator and d * d == p.denominator:
+            return Fraction(w1) / Fraction(n, d)
+    return float(w1) / math.sqrt(float(w0) * float(w2))
+
+
+def from_exchange(contours: Contours, fill: FillType) -> Path:
+    """Closed contours in exchange form as a path (a last line back to the start is left to
+    ``close``)."""
+    path = Path(fillType=fill)
+    for c in contours:
+        if not c:
+            continue
+        start = c[0][0][0]
+        path.moveTo(*start)
+        for k, (pts, ws) in enumerate(c):
+            n = len(pts)
+            if ws is not None:
+                if n != 3:
+                    raise UnsupportedVerbError("a rational segment of degree %d" % (n - 1))
+                path.conicTo(*pts[1], *pts[2], _conic_weight(ws))
+            elif n == 2:
+                if k == len(c) - 1 and _same(pts[1], start):
+                    continue
+                path.lineTo(*pts[1])
+            elif n == 3:
+                path.quadTo(*pts[1], *pts[2])
+            elif n == 4:
+                path.cubicTo(*pts[1], *pts[2], *pts[3])
+            else:
+                raise UnsupportedVerbError("a segment of degree %d" % (n - 1))
+        path.close()
+    return path
+
+
+def _fill_rule(fill: FillType) -> str:
+    if fill in (FillType.INVERSE_WINDING, FillType.INVERSE_EVEN_ODD):
+        raise PathOpsError("inverse fill types are not supported by the exact operations")
+    return "evenodd" if fill == FillType.EVEN_ODD else "nonzero"
+
+
+def _boolean(op: str, paths: Sequence[Path], orientation: str, max_work: Optional[float]) -> Tuple[Contours, Any]:
+    rules = [_fill_rule(p.fillType) for p in paths]
+    inputs = [exchange(p) for p in paths]
+    try:
+        if len(set(rules)) > 1:
+            # different fill rules: each even-odd input as the boundary of its region first
+            for i, r in enumerate(rules):
+                if r == "evenodd":
+                    inputs[i] = _core.boolean("simplify", [inputs[i]], "evenodd", "ccw", max_work)[0]
+            rules = ["nonzero"] * len(rules)
+        contours, area, _, _ = _core.boolean(op, inputs, rules[0], orientation, max_work)
+    except _core.CasteljauError as e:
+        raise ExactOperationError(str(e)) from e
+    return contours, area
+
+
+def _finish(
+    contours: Contours, fix_winding: bool, keep_starting_points: bool, first_points: List[Any]
+) -> Path:
+    result = from_exchange(contours, FillType.WINDING if fix_winding else FillType.EVEN_ODD)
+    if fix_winding:
+        _sort_by_area(result)
+    if keep_starting_points:
+        restore_starting_points(result, first_points)
+    return result
+
+
+def op(
+    one: Path,
+    two: Path,
+    operator: int,
+    fix_winding: bool = True,
+    keep_starting_points: bool = True,
+    clockwise: bool = False,
+    *,
+    max_work: Optional[float] = None,
+) -> Path:
+    """The exact boolean operation ``operator`` (a ``PathOp``) on two paths, each filled by its
+    own fill type: the result's contours are the exact boundary of the region (outer contours
+    counter-clockwise, or clockwise with ``clockwise=True``; holes the other way), each segment
+    an exact piece of an input segment. ``fix_winding`` also orders contours by decreasing area
+    (as skia-pathops does); ``keep_starting_points`` starts each contour, where it can, at an
+    input contour's first point."""
+    operator = PathOp(operator)
+    first = (one.firstPoints + two.firstPoints) if keep_starting_points else []
+    inputs = [two, one] if operator == PathOp.REVERSE_DIFFERENCE else [one, two]
+    contours, _ = _boolean(_OPS[operator], inputs, "cw" if clockwise else "ccw", max_work)
+    return _finish(contours, fix_winding, keep_starting_points, first)
+
+
+def simplify(
+    path: Path,
+    fix_winding: bool = True,
+    keep_starting_points: bool = True,
+    clockwise: bool = False,
+    *,
+    max_work: Optional[float] = None,
+) -> Path:
+    """The exact boundary of the path's fill (overlaps removed); see ``op``.
+
+    >>> from casteljau.pathops import Path, simplify
+    >>> p = Path()
+    >>> for x, y in ((0, 0), (5, 5)):
+    ...     p.moveTo(x, y); p.lineTo(x + 10, y); p.lineTo(x + 10, y + 10); p.lineTo(x, y + 10); p.close()
+    >>> [pts for _, pts in simplify(p)][:3]
+    [((0, 0),), ((10, 0),), ((10, 5),)]
+    """
+    first = path.firstPoints if keep_starting_points else []
+    contours, _ = _boolean("simplify", [path], "cw" if clockwise else "ccw", max_work)
+    return _finish(contours, fix_winding, keep_starting_points, first)
+
+
+class OpBuilder:
+    """Boolean operations applied in turn: ``((empty op₁ p₁) op₂ p₂) …``, each exactly."""
+
+    def __init__(
+        self,
+        fix_winding: bool = True,
+        keep_starting_points: bool = True,
+        clockwise: bool = False,
+        *,
+        max_work: Optional[float] = None,
+    ) -> None:
+        self.fix_winding = fix_winding
+        self.keep_starting_points = keep_starting_points
+        self.clockwise = clockwise
+        self.max_work = max_work
+        self.first_points: List[Any] = []
+        self._ops: List[Tuple[Path, PathOp]] = []
+
+    def add(self, path: Path, operator: int) -> None:
+        self._ops.append((Path(path), PathOp(operator)))
+        if self.keep_starting_points:
+            self.first_points.extend(path.firstPoints)
+
+    def resolve(self) -> Path:
+        orientation = "cw" if self.clockwise else "ccw"
+        acc: Optional[Contours] = None
+        for path, operator in self._ops:
+            current = Path(fillType=FillType.WINDING)
+            if acc is not None:
+                current = from_exchange(acc, FillType.WINDING)
+            inputs = [path, current] if operator == PathOp.REVERSE_DIFFERENCE else [current, path]
+            acc, _ = _boolean(_OPS[operator], inputs, orientation, self.max_work)
+        return _finish(acc or [], self.fix_winding, self.keep_starting_points, list(self.first_points))
+
+
+def _sort_by_area(path: Path) -> None:
+    """Contours by decreasing absolute area, stable (skia-pathops' winding_from_even_odd)."""
+    contours = list(path.contours)
+    try:
+        keyed = [(-abs(_signed_area(c)), i, c) for i, c in enumerate(contours)]
+    except UnsupportedVerbError:
+        return  # conics: their areas are not rational; the order stays
+    keyed.sort(key=lambda k: (k[0], k[1]))
+    fill = path.fillType
+    path.reset()
+    for _, _, c in keyed:
+        path.addPath(c)
+    path.fillType = fill
+
+
+def restore_starting_points(path: Path, points: List[Any]) -> bool:
+    """Starts each contour, where possible, at one of ``points`` (an on-curve point of it,
+    exactly), as skia-pathops does after an operation."""
+    if not points:
+        return False
+    points = list(points)
+    contours = list(path.contours)
+    modified = False
+    for this in contours:
+        for j, pt in enumerate(points):
+            if _set_contour_start_point(this, pt):
+                modified = True
+                del points[j]
+                break
+    if not modified:
+        return False
+    fill = path.fillType
+    path.reset()
+    for c in contours:
+        path.addPath(c)
+    path.fillType = fill
+    return True
+
+
+def _set_contour_start_point(path: Path, pt: Any) -> bool:
+    """skia-pathops' set_contour_start_point, with exact comparisons."""
+    verbs = list(path._verbs)
+    pts = list(path._points)
+    vc, pc = len(verbs), len(pts)
+    if vc == 0:
+        return False
+    closed = PathVerb.CLOSE in verbs[1:]
+    # conic weights by verb index
+    weights: Dict[int, Any] = {}
+    wi = iter(path._weights)
+    for i, v in enumerate(verbs):
+        if v == PathVerb.CONIC:
+            weights[i] = next(wi)
+    pt_index = verb_index = -1
+    seen = 0
+    for i, v in enumerate(verbs):
+        n = _POINTS_IN_VERB[v]
+        if n == 0:
+            continue
+        j = seen + n - 1
+        if _same(pts[j], pt):
+            pt_index, verb_index = j, i
+            break
+        seen += n
+    if pt_index <= 0 or (not closed and pt_index != pc - 1):
+        return False
+    if not closed:
+        _reverse_contour(path)
+        return True
+    temp = Path(fillType=path.fillType)
+    first_verb = verbs[verb_index]
+    first_pt = pts[pt_index]
+    vi = (verb_index + 1) % vc
+    pi = (pt_index + 1) % pc
+    temp.moveTo(*first_pt)
+    last = first_pt
+    for _ in range(1, vc):
+        v = verbs[vi]
+        n = _POINTS_IN_VERB[v]
+        if v == PathVerb.MOVE:
+            if _same(last, pts[pi]) or (
+                verbs[(vi + 1) % vc] == PathVerb.LINE and _collinear(last, pts[pi], pts[(pi + 1) % pc])
+            ):
+                pass
+            else:
+                temp.lineTo(*pts[pi])
+                last = pts[pi]
+        elif v == PathVerb.LINE:
+            if verbs[(vi + 1) % vc] == PathVerb.CLOSE and _same(pts[pi], pts[(pi + 1) % pc]):
+                pass
+            else:
+                temp.lineTo(*pts[pi])
+                last = pts[pi]
+        elif v == PathVerb.QUAD:
+            temp.quadTo(*pts[pi], *pts[pi + 1])
+            last = pts[pi + 1]
+        elif v == PathVerb.CONIC:
+            temp.conicTo(*pts[pi], *pts[pi + 1], weights[vi])
+            last = pts[pi + 1]
+        elif v == PathVerb.CUBIC:
+            temp.cubicTo(*pts[pi], *pts[pi + 1], *pts[pi + 2])
+            last = pts[pi + 2]
+        vi = (vi + 1) % vc
+        pi = (pi + n) % pc
+    if first_verb == PathVerb.QUAD:
+        temp.quadTo(*pts[pi], *pts[pi + 1])
+    elif first_verb == PathVerb.CONIC:
+        temp.conicTo(*pts[pi], *pts[pi + 1], weights[verb_index])
+    elif first_verb == PathVerb.CUBIC:
+        temp.cubicTo(*pts[pi], *pts[pi + 1], *pts[pi + 2])
+    temp.close()
+    path._copy_from(temp)
+    return True
+
+
+def tight_bounds(path: Path) -> Tuple[Any, Any, Any, Any]:
+    """Exact tight bounds: end points, and each curve's exact box where its control points
+    leave the box of its ends."""
+    xs: List[Any] = []
+    ys: List[Any] = []
+    cur = None
+    weights = iter(path._weights)
+    for verb, pts in path._records():
+        if verb == PathVerb.CLOSE:
+            continue
+        if verb in (PathVerb.MOVE, PathVerb.LINE):
+            cur = pts[0]
+            xs.append(cur[0])
+            ys.append(cur[1])
+            continue
+        ctrl = [cur] + list(pts)
+        w = next(weights) if verb == PathVerb.CONIC else None
+        end = ctrl[-1]
+        xs.append(end[0])
+        ys.append(end[1])
+        lo_x, hi_x = min(cur[0], end[0]), max(cur[0], end[0])  # type: ignore[index]
+        lo_y, hi_y = min(cur[1], end[1]), max(cur[1], end[1])  # type: ignore[index]
+        if any(not (lo_x <= p[0] <= hi_x and lo_y <= p[1] <= hi_y) for p in ctrl[1:-1]):
+            if w is None:
+                b = _core.Bezier(ctrl).bounds()
+            else:
+                b = _core.RationalBezier(ctrl, [1, w, 1]).bounds()
+            xs += [b[0], b[2]]
+            ys += [b[1], b[3]]
+        cur = end
+    if not xs:
+        return (0, 0, 0, 0)
+    return (min(xs), min(ys), max(xs), max(ys))
+
+
+def contains(path: Path, pt: Tuple[Any, Any]) -> bool:
+    """Whether ``pt`` is in the path's fill, exactly (on the boundary: inside)."""
+    w = _core.winding(exchange(path), pt)
+    inverse = path.fillType in (FillType.INVERSE_WINDING, FillType.INVERSE_EVEN_ODD)
+    if w is None:
+        return True
+    inside = (w % 2 == 1) if path.fillType in (FillType.EVEN_ODD, FillType.INVERSE_EVEN_ODD) else w != 0
+    return inside != inverse
+
+
+def is_convex(path: Path) -> bool:
+    """One contour whose control polygon turns one way, once around (exact cross products)."""
+    contours = exchange(path)
+    if len(contours) > 1:
+        return False
+    if not contours:
+        return True
+    pts: List[Any] = []
+    for seg, _ in contours[0]:
+        for p in seg[1:]:
+            if not pts or not _same(pts[-1], p):
+                pts.append(p)
+    if len(pts) > 1 and _same(pts[0], pts[-1]):
+        pts.pop()
+    n = len(pts)
+    if n < 3:
+        return True
+    sign = 0
+    x_changes = 0
+    last_dx = 0
+    for i in range(n):
+        a, b, c = pts[i], pts[(i + 1) % n], pts[(i + 2) % n]
+        ux, uy = Fraction(b[0]) - Fraction(a[0]), Fraction(b[1]) - Fraction(a[1])
+        vx, vy = Fraction(c[0]) - Fraction(b[0]), Fraction(c[1]) - Fraction(b[1])
+        cross = ux * vy - uy * vx
+        s = (cross > 0) - (cross < 0)
+        if s:
+            if sign and s != sign:
+                return False
+            sign = s
+        dx = (ux > 0) - (ux < 0)
+        if dx:
+            if last_dx and dx != last_dx:
+                x_changes += 1
+            last_dx = dx
+    return x_changes <= 2
