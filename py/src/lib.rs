@@ -40,7 +40,8 @@ pub(crate) fn budget(max_work: Option<f64>) -> PyResult<casteljau::Budget> {
 
 /// A library error as `CasteljauError`, with the command line's message.
 pub(crate) fn error(e: casteljau::Error) -> PyErr {
-    CasteljauError::new_err(e.to_string().replace("max_work= ", "max_work="))
+    // the budget is `max_work=` here, where the command line says `--max-work`
+    CasteljauError::new_err(e.to_string().replace("max_work= ", "max_work=").replace("--max-work", "max_work="))
 }
 
 /// What a caught panic said.
