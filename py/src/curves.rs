@@ -82,7 +82,9 @@ pub(crate) fn json_py(py: Python<'_>, v: &serde_json::Value) -> PyResult<PyObjec
                 _ => PyString::new(py, s).into_any().unbind(),
             }
         }
-        Value::Array(a) => PyList::new(py, a.iter().map(|x| json_py(py, x)).collect::<PyResult<Vec<_>>>()?)?.into_any().unbind(),
+        Value::Array(a) => {
+            PyList::new(py, a.iter().map(|x| json_py(py, x)).collect::<PyResult<Vec<_>>>()?)?.into_any().unbind()
+        }
         Value::Object(o) => {
             let d = PyDict::new(py);
             for (k, x) in o {
@@ -174,7 +176,11 @@ impl Intersections {
     }
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
-        Ok(format!("Intersections(points={}, overlaps={})", self.points.bind(py).repr()?, self.overlaps.bind(py).repr()?))
+        Ok(format!(
+            "Intersections(points={}, overlaps={})",
+            self.points.bind(py).repr()?,
+            self.overlaps.bind(py).repr()?
+        ))
     }
 }
 
@@ -317,7 +323,12 @@ impl Bezier {
     /// The point at `t`: a tuple of `Fraction`s for a rational `t`, of exact reals
     /// (`Fraction`/`Algebraic`) for an `Algebraic` `t`.
     #[pyo3(signature = (t, *, max_work=None))]
-    fn eval<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>, max_work: Option<f64>) -> PyResult<Bound<'py, PyTuple>> {
+    fn eval<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         if let Ok(a) = t.downcast::<crate::numbers::Algebraic>()
             && a.get().value.to_rational().is_none()
         {
@@ -337,7 +348,12 @@ impl Bezier {
 
     /// The two halves at `t` (de Casteljau), each reparametrised to `[0, 1]`.
     #[pyo3(signature = (t, *, max_work=None))]
-    fn subdivide(&self, py: Python<'_>, t: &Bound<'_, PyAny>, max_work: Option<f64>) -> PyResult<(Py<Bezier>, Py<Bezier>)> {
+    fn subdivide(
+        &self,
+        py: Python<'_>,
+        t: &Bound<'_, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<(Py<Bezier>, Py<Bezier>)> {
         let (c, t, b) = (self.curve.clone(), rational(t)?, budget(max_work)?);
         let s = run(py, move || Subdivision::new(&c, &t, &b))?;
         Ok((new_bezier(py, s.left)?, new_bezier(py, s.right)?))
@@ -406,11 +422,8 @@ impl Bezier {
         let params = |ps: &[QuadraticExt<Q>]| -> PyResult<Vec<PyObject>> {
             ps.iter().map(|p| real(py, quadratic_real(p))).collect()
         };
-        let (dpp, ip, cp) = (
-            params(&k.double_point_parameters)?,
-            params(&k.inflection_parameters)?,
-            params(&k.cusp_parameters)?,
-        );
+        let (dpp, ip, cp) =
+            (params(&k.double_point_parameters)?, params(&k.inflection_parameters)?, params(&k.cusp_parameters)?);
         let float = Some(FloatApproximations::of(&k));
         let report = ClassifyReport { classification: k, evidence: None, float };
         let v = serde_json::to_value(&report).map_err(|e| CasteljauError::new_err(e.to_string()))?;
@@ -425,7 +438,13 @@ impl Bezier {
     /// Every intersection with `other` (a `Bezier` or `RationalBezier`, planar, degree ≤ 10)
     /// with parameters in `[0, 1]²` (`domain="unit"`) or anywhere (`"all"`), and shared arcs.
     #[pyo3(signature = (other, *, domain="unit", max_work=None))]
-    fn intersect(&self, py: Python<'_>, other: &Bound<'_, PyAny>, domain: &str, max_work: Option<f64>) -> PyResult<Intersections> {
+    fn intersect(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        domain: &str,
+        max_work: Option<f64>,
+    ) -> PyResult<Intersections> {
         intersect_impl(py, RB::from(self.curve.clone()), as_rational(other)?, domain, max_work)
     }
 
@@ -514,7 +533,12 @@ impl RationalBezier {
 
     /// The point at `t` (`Fraction`s; exact reals for an `Algebraic` `t`).
     #[pyo3(signature = (t, *, max_work=None))]
-    fn eval<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>, max_work: Option<f64>) -> PyResult<Bound<'py, PyTuple>> {
+    fn eval<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         if let Ok(a) = t.downcast::<crate::numbers::Algebraic>()
             && a.get().value.to_rational().is_none()
         {
@@ -582,7 +606,8 @@ impl RationalBezier {
     fn classify(&self, py: Python<'_>) -> PyResult<PyObject> {
         let c = self.curve.clone();
         let k = run(py, move || classify_rational(&c))?;
-        let dpp = k.double_point_parameters.iter().map(|p| real(py, quadratic_real(p))).collect::<PyResult<Vec<_>>>()?;
+        let dpp =
+            k.double_point_parameters.iter().map(|p| real(py, quadratic_real(p))).collect::<PyResult<Vec<_>>>()?;
         let v = serde_json::to_value(&k).map_err(|e| CasteljauError::new_err(e.to_string()))?;
         let d = json_py(py, &v)?;
         d.bind(py).downcast::<PyDict>()?.set_item("double_point_parameters", dpp)?;
@@ -591,7 +616,13 @@ impl RationalBezier {
 
     /// Every intersection with `other` (as `Bezier.intersect`).
     #[pyo3(signature = (other, *, domain="unit", max_work=None))]
-    fn intersect(&self, py: Python<'_>, other: &Bound<'_, PyAny>, domain: &str, max_work: Option<f64>) -> PyResult<Intersections> {
+    fn intersect(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        domain: &str,
+        max_work: Option<f64>,
+    ) -> PyResult<Intersections> {
         intersect_impl(py, self.curve.clone(), as_rational(other)?, domain, max_work)
     }
 

@@ -26,7 +26,8 @@ fn font_contours(ob: &Bound<'_, PyAny>) -> PyResult<Vec<Contour>> {
             let segments = c
                 .into_iter()
                 .map(|s| {
-                    let ps: Vec<Point<BigRational>> = s.points().into_iter().map(|p| p.expect("no weight zero")).collect();
+                    let ps: Vec<Point<BigRational>> =
+                        s.points().into_iter().map(|p| p.expect("no weight zero")).collect();
                     Segment::Bezier(ps)
                 })
                 .collect();
@@ -46,7 +47,12 @@ fn orientation_of(s: &str) -> PyResult<Orientation> {
     s.parse().map_err(crate::error)
 }
 
-fn lint_options(kinds: Option<Vec<String>>, outer: Orientation, budget: Budget, kink: Option<f64>) -> PyResult<LintOptions> {
+fn lint_options(
+    kinds: Option<Vec<String>>,
+    outer: Orientation,
+    budget: Budget,
+    kink: Option<f64>,
+) -> PyResult<LintOptions> {
     let mut o = LintOptions::new(outer);
     o.kinds = kinds_of(kinds)?;
     o.budget = budget;

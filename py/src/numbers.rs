@@ -74,8 +74,7 @@ pub(crate) fn rational(ob: &Bound<'_, PyAny>) -> PyResult<BigRational> {
     if let Ok(s) = ob.downcast::<PyString>() {
         let text = s.to_cow()?;
         let token = text.trim();
-        return casteljau::num::parse_number(token, Position { line: None, column: 1, token: 1 })
-            .map_err(crate::error);
+        return casteljau::num::parse_number(token, Position { line: None, column: 1, token: 1 }).map_err(crate::error);
     }
     if let Ok(a) = ob.downcast::<Algebraic>() {
         return match a.get().value.to_rational() {
@@ -128,7 +127,7 @@ pub(crate) fn real_of(ob: &Bound<'_, PyAny>) -> PyResult<RealAlgebraic> {
 /// >>> r[1] > 1.4142135623730951, float(r[1])
 /// (False, 1.4142135623730951)
 /// >>> r[1].polynomial, r[1].isolating_interval
-/// ([Fraction(-2, 1), Fraction(0, 1), Fraction(1, 1)], (Fraction(1, 1), Fraction(3, 2)))
+/// ([Fraction(-2, 1), Fraction(0, 1), Fraction(1, 1)], (Fraction(0, 1), Fraction(4, 1)))
 #[pyclass(module = "casteljau", name = "Algebraic", frozen)]
 pub(crate) struct Algebraic {
     pub(crate) value: RealAlgebraic,
@@ -263,7 +262,10 @@ impl Algebraic {
     }
 
     fn __neg__(&self, py: Python<'_>) -> PyResult<PyObject> {
-        let neg = self.value.map_rational(&Poly::new(vec![BigRational::zero(), -BigRational::one()]), &Poly::new(vec![BigRational::one()]));
+        let neg = self.value.map_rational(
+            &Poly::new(vec![BigRational::zero(), -BigRational::one()]),
+            &Poly::new(vec![BigRational::one()]),
+        );
         real(py, neg)
     }
 

@@ -136,11 +136,8 @@ fn piece(seg: &RationalBezier<Q>, from: &RealAlgebraic, to: &RealAlgebraic) -> c
     };
     points[0] = ends(from);
     points[n - 1] = ends(to);
-    let weights = if polynomial {
-        None
-    } else {
-        Some(sub.weights().iter().map(|w| Coord::Float(ratio_to_f64(w))).collect())
-    };
+    let weights =
+        if polynomial { None } else { Some(sub.weights().iter().map(|w| Coord::Float(ratio_to_f64(w))).collect()) };
     Ok(OutSegment { points, weights })
 }
 
@@ -299,7 +296,12 @@ fn changes(
 /// a rational point (counter-clockwise positive), or `None` when the point is on a contour.
 #[pyfunction]
 #[pyo3(signature = (shape, point, max_work=None))]
-fn winding(py: Python<'_>, shape: &Bound<'_, PyAny>, point: &Bound<'_, PyAny>, max_work: Option<f64>) -> PyResult<Option<i64>> {
+fn winding(
+    py: Python<'_>,
+    shape: &Bound<'_, PyAny>,
+    point: &Bound<'_, PyAny>,
+    max_work: Option<f64>,
+) -> PyResult<Option<i64>> {
     let s = shape_of(shape)?;
     let (x, y): (Bound<'_, PyAny>, Bound<'_, PyAny>) = point.extract()?;
     let q = Point2::new(rational(&x)?, rational(&y)?);

@@ -39,6 +39,7 @@ def prove(path_or_text: Union[str, "os.PathLike[str]", Sequence[Any]], *, max_wo
 
     >>> from casteljau import prove
     >>> text = '''
+    ... seed = "a-doctest.txt"
     ... [[claim]]
     ... id = "demo"
     ... source = "a doctest"

@@ -150,8 +150,8 @@ def check_against(
     >>> a = pathops.Path(); a.moveTo(0, 0); a.lineTo(2, 0); a.lineTo(2, 2); a.lineTo(0, 2); a.close()
     >>> b = a.transform(1, 0, 0, 1, 1, 1)
     >>> v = pathops.check_against([a, b], pathops.PathOp.UNION, pathops.op(a, b, pathops.PathOp.UNION), 1e-9)
-    >>> bool(v), v.distance_bound
-    (True, 0.0)
+    >>> bool(v), v.problems, v.witness
+    (True, [], None)
     """
     from ._exact import _fill_rule
 

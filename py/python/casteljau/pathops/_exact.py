@@ -190,7 +190,7 @@ def simplify(
     >>> for x, y in ((0, 0), (5, 5)):
     ...     p.moveTo(x, y); p.lineTo(x + 10, y); p.lineTo(x + 10, y + 10); p.lineTo(x, y + 10); p.close()
     >>> [pts for _, pts in simplify(p)][:3]
-    [((0, 0),), ((10, 0),), ((10, 5),)]
+    [((Fraction(0, 1), Fraction(0, 1)),), ((Fraction(10, 1), Fraction(0, 1)),), ((Fraction(10, 1), Fraction(5, 1)),)]
     """
     first = path.firstPoints if keep_starting_points else []
     contours, _ = _boolean("simplify", [path], "cw" if clockwise else "ccw", max_work)
