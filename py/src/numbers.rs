@@ -31,8 +31,23 @@ pub(crate) fn int(py: Python<'_>, n: &BigInt) -> PyResult<PyObject> {
     Ok(n.clone().into_pyobject(py)?.into_any().unbind())
 }
 
+/// `Fraction(k)` for small integers `k`, made once (fonts' coordinates are mostly integers, and a
+/// `Fraction` is immutable, so one object serves every use).
+static SMALL: GILOnceCell<Vec<PyObject>> = GILOnceCell::new();
+const SMALL_RANGE: i64 = 1 << 14;
+
 /// A rational as a `fractions.Fraction` (already reduced: the constructor normalises anyway).
 pub(crate) fn fraction(py: Python<'_>, r: &BigRational) -> PyResult<PyObject> {
+    if r.is_integer()
+        && let Some(k) = num_traits::ToPrimitive::to_i64(r.numer())
+        && k.abs() < SMALL_RANGE
+    {
+        let small = SMALL.get_or_try_init(py, || {
+            let f = fraction_type(py)?;
+            (-SMALL_RANGE + 1..SMALL_RANGE).map(|k| Ok(f.call1((k,))?.unbind())).collect::<PyResult<Vec<_>>>()
+        })?;
+        return Ok(small[(k + SMALL_RANGE - 1) as usize].clone_ref(py));
+    }
     let (n, d) = (int(py, r.numer())?, int(py, r.denom())?);
     Ok(fraction_type(py)?.call1((n, d))?.unbind())
 }

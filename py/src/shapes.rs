@@ -156,6 +156,48 @@ fn coord_py(py: Python<'_>, c: &Coord) -> PyResult<PyObject> {
     }
 }
 
+fn coord_q(c: &Coord) -> Q {
+    match c {
+        Coord::Exact(r) => r.clone(),
+        Coord::Float(f) => Q::from_float(*f).expect("a finite coordinate"),
+    }
+}
+
+/// The signed area (counter-clockwise positive) enclosed by a closed contour of polynomial
+/// output segments, exactly: `½ Σ ∫₀¹ (x y′ − y x′) dt` over the segments, each in power form
+/// (`x = Σ a_k t^k`, `y = Σ b_k t^k`: `∫₀¹ x y′ dt = Σ_{k, m ≥ 1} a_k b_m m/(k + m)`). `None` when a
+/// segment is rational.
+fn contour_area(c: &[OutSegment]) -> Option<Q> {
+    let mut total = Q::from_integer(0.into());
+    for s in c {
+        if s.weights.is_some() {
+            return None;
+        }
+        let pts: Vec<[Q; 2]> = s.points.iter().map(|[x, y]| [coord_q(x), coord_q(y)]).collect();
+        let n = pts.len() - 1;
+        // power coefficients a_k = C(n, k) Δ^k P_0
+        let mut diff = pts.clone();
+        let mut coef: Vec<[Q; 2]> = vec![];
+        let mut binom = BigInt::one();
+        for k in 0..=n {
+            let b = Q::from_integer(binom.clone());
+            coef.push([&diff[0][0] * &b, &diff[0][1] * &b]);
+            for i in 0..n - k {
+                diff[i] = [&diff[i + 1][0] - &diff[i][0], &diff[i + 1][1] - &diff[i][1]];
+            }
+            binom = binom * BigInt::from(n - k) / BigInt::from(k + 1);
+        }
+        for (k, ak) in coef.iter().enumerate() {
+            for (m, bm) in coef.iter().enumerate().skip(1) {
+                let w = Q::new(BigInt::from(m), BigInt::from(k + m));
+                // x y′ − y x′ for the pair (k, m): a_k b_m m/(k+m) − b_k a_m m/(k+m)
+                total += (&ak[0] * &bm[1] - &ak[1] * &bm[0]) * w;
+            }
+        }
+    }
+    Some(total / Q::from_integer(2.into()))
+}
+
 fn segments_py(py: Python<'_>, contours: &[Vec<OutSegment>]) -> PyResult<Py<PyList>> {
     let out = PyList::empty(py);
     for c in contours {
@@ -181,10 +223,11 @@ fn segments_py(py: Python<'_>, contours: &[Vec<OutSegment>]) -> PyResult<Py<PyLi
 
 /// `boolean(op, inputs, fill, orientation, max_work)`: the exact boolean operation `op`
 /// (`union`, `intersection`, `difference`, `xor`, `simplify`) on shapes in exchange form.
-/// Returns `(contours, area, parents, orientations)`: the result's contours in exchange form,
-/// its exact area (`Fraction`, or `None` when a piece is rational or has irrational ends),
-/// each contour's directly enclosing contour (or `None`), and each contour's orientation
-/// (`"ccw"`/`"cw"`).
+/// Returns `(contours, area, parents, orientations, areas)`: the result's contours in exchange
+/// form, its exact area (`Fraction`, or `None` when a piece is rational or has irrational ends),
+/// each contour's directly enclosing contour (or `None`), each contour's orientation
+/// (`"ccw"`/`"cw"`), and each output contour's exact signed area as drawn (`None` for a contour
+/// with a rational piece).
 #[pyfunction]
 #[pyo3(signature = (op, inputs, fill="nonzero", orientation="ccw", max_work=None))]
 #[allow(clippy::type_complexity)]
@@ -195,17 +238,25 @@ fn boolean(
     fill: &str,
     orientation: &str,
     max_work: Option<f64>,
-) -> PyResult<(Py<PyList>, PyObject, Vec<Option<usize>>, Vec<&'static str>)> {
+) -> PyResult<(Py<PyList>, PyObject, Vec<Option<usize>>, Vec<&'static str>, Vec<PyObject>)> {
     let op = op_of(op)?;
     let options = BooleanOptions { fill: fill_of(fill)?, orientation: orientation_of(orientation)? };
     let inputs = inputs.iter().map(contours_of).collect::<PyResult<Vec<_>>>()?;
     let budget = budget(max_work)?;
-    let (r, segs) = run(py, move || {
+    let (r, segs, areas) = run(py, move || {
         let shapes = inputs.iter().map(|c| Shape::from_contours(c.clone())).collect::<casteljau::Result<Vec<_>>>()?;
         let r = exact_boolean(op, &shapes, options, &budget)?;
         let segs = result_segments(&inputs, &r)?;
-        Ok((r, segs))
+        let areas: Vec<Option<Q>> = segs.iter().map(|c| contour_area(c)).collect();
+        Ok((r, segs, areas))
     })?;
+    let areas = areas
+        .iter()
+        .map(|a| match a {
+            Some(a) => fraction(py, a),
+            None => Ok(py.None()),
+        })
+        .collect::<PyResult<Vec<_>>>()?;
     let area = match &r.area {
         Some(a) => fraction(py, a)?,
         None => py.None(),
@@ -218,7 +269,7 @@ fn boolean(
             Orientation::Cw => "cw",
         })
         .collect();
-    Ok((segments_py(py, &segs)?, area, r.parents.clone(), orient))
+    Ok((segments_py(py, &segs)?, area, r.parents.clone(), orient, areas))
 }
 
 /// Whether `r` (the simplified `shape`) is `shape`'s outline with some contours reversed: as

@@ -168,7 +168,7 @@ class Shape:
 
     def _op(self, op: str, others: Sequence["Shape"], orientation: str, max_work: Optional[float]) -> "Shape":
         inputs = [self._contours] + [o._contours for o in others]
-        contours, _, _, _ = _core.boolean(op, inputs, self.fill, orientation, max_work)
+        contours = _core.boolean(op, inputs, self.fill, orientation, max_work)[0]
         return Shape(contours, "nonzero")
 
     def simplify(self, *, orientation: str = "ccw", max_work: Optional[float] = None) -> "Shape":

@@ -90,33 +90,65 @@ def _conic_weight(ws: Sequence[Any]) -> Any:
     return float(w1) / math.sqrt(float(w0) * float(w2))
 
 
-def from_exchange(contours: Contours, fill: FillType) -> Path:
-    """Closed contours in exchange form as a path (a last line back to the start is left to
-    ``close``)."""
+def _contour_path(c: List[Tuple[list, Optional[list]]], fill: FillType) -> Path:
+    """One closed contour in exchange form as a path, its numbers used as they are (a last
+    line back to the start is left to ``close``)."""
     path = Path(fillType=fill)
-    for c in contours:
-        if not c:
-            continue
-        start = c[0][0][0]
-        path.moveTo(*start)
-        for k, (pts, ws) in enumerate(c):
-            n = len(pts)
-            if ws is not None:
-                if n != 3:
-                    raise UnsupportedVerbError("a rational segment of degree %d" % (n - 1))
-                path.conicTo(*pts[1], *pts[2], _conic_weight(ws))
-            elif n == 2:
-                if k == len(c) - 1 and _same(pts[1], start):
-                    continue
-                path.lineTo(*pts[1])
-            elif n == 3:
-                path.quadTo(*pts[1], *pts[2])
-            elif n == 4:
-                path.cubicTo(*pts[1], *pts[2], *pts[3])
+    verbs, points, weights = path._verbs, path._points, path._weights
+    start = tuple(c[0][0][0])
+    verbs.append(PathVerb.MOVE)
+    points.append(start)
+    last = len(c) - 1
+    for k, (pts, ws) in enumerate(c):
+        n = len(pts)
+        if ws is not None:
+            if n != 3:
+                raise UnsupportedVerbError("a rational segment of degree %d" % (n - 1))
+            w = _conic_weight(ws)
+            if w == 1:
+                verbs.append(PathVerb.QUAD)
             else:
-                raise UnsupportedVerbError("a segment of degree %d" % (n - 1))
-        path.close()
+                verbs.append(PathVerb.CONIC)
+                weights.append(w)
+            points.append(tuple(pts[1]))
+            points.append(tuple(pts[2]))
+        elif n == 2:
+            end = tuple(pts[1])
+            if k == last and _same(end, start):
+                continue
+            verbs.append(PathVerb.LINE)
+            points.append(end)
+        elif n == 3:
+            verbs.append(PathVerb.QUAD)
+            points.append(tuple(pts[1]))
+            points.append(tuple(pts[2]))
+        elif n == 4:
+            verbs.append(PathVerb.CUBIC)
+            points.append(tuple(pts[1]))
+            points.append(tuple(pts[2]))
+            points.append(tuple(pts[3]))
+        else:
+            raise UnsupportedVerbError("a segment of degree %d" % (n - 1))
+    verbs.append(PathVerb.CLOSE)
+    path._last_move = start
+    path._needs_move = True
     return path
+
+
+def _concatenate(paths: List[Path], fill: FillType) -> Path:
+    out = Path(fillType=fill)
+    for p in paths:
+        out._verbs += p._verbs
+        out._points += p._points
+        out._weights += p._weights
+        out._last_move = p._last_move
+        out._needs_move = p._needs_move
+    return out
+
+
+def from_exchange(contours: Contours, fill: FillType) -> Path:
+    """Closed contours in exchange form as a path."""
+    return _concatenate([_contour_path(c, fill) for c in contours if c], fill)
 
 
 def _fill_rule(fill: FillType) -> str:
@@ -125,7 +157,8 @@ def _fill_rule(fill: FillType) -> str:
     return "evenodd" if fill == FillType.EVEN_ODD else "nonzero"
 
 
-def _boolean(op: str, paths: Sequence[Path], orientation: str, max_work: Optional[float]) -> Tuple[Contours, Any]:
+def _boolean(op: str, paths: Sequence[Path], orientation: str, max_work: Optional[float]) -> Tuple[Contours, List[Any]]:
+    """The exact operation's contours and their signed areas."""
     rules = [_fill_rule(p.fillType) for p in paths]
     inputs = [exchange(p) for p in paths]
     try:
@@ -135,21 +168,29 @@ def _boolean(op: str, paths: Sequence[Path], orientation: str, max_work: Optiona
                 if r == "evenodd":
                     inputs[i] = _core.boolean("simplify", [inputs[i]], "evenodd", "ccw", max_work)[0]
             rules = ["nonzero"] * len(rules)
-        contours, area, _, _ = _core.boolean(op, inputs, rules[0], orientation, max_work)
+        contours, _, _, _, areas = _core.boolean(op, inputs, rules[0], orientation, max_work)
     except _core.CasteljauError as e:
         raise ExactOperationError(str(e)) from e
-    return contours, area
+    return contours, areas
 
 
 def _finish(
-    contours: Contours, fix_winding: bool, keep_starting_points: bool, first_points: List[Any]
+    contours: Contours, areas: List[Any], fix_winding: bool, keep_starting_points: bool, first_points: List[Any]
 ) -> Path:
-    result = from_exchange(contours, FillType.WINDING if fix_winding else FillType.EVEN_ODD)
-    if fix_winding:
-        _sort_by_area(result)
-    if keep_starting_points:
-        restore_starting_points(result, first_points)
-    return result
+    fill = FillType.WINDING if fix_winding else FillType.EVEN_ODD
+    items = [(c, a) for c, a in zip(contours, areas) if c]
+    if fix_winding and len(items) > 1 and all(a is not None for _, a in items):
+        # by decreasing absolute area, stable (skia-pathops' winding_from_even_odd)
+        items.sort(key=lambda ca: -abs(ca[1]))
+    paths = [_contour_path(c, fill) for c, _ in items]
+    if keep_starting_points and first_points:
+        points = list(first_points)
+        for this in paths:
+            for j, pt in enumerate(points):
+                if _set_contour_start_point(this, pt):
+                    del points[j]
+                    break
+    return _concatenate(paths, fill)
 
 
 def op(
@@ -171,8 +212,8 @@ def op(
     operator = PathOp(operator)
     first = (one.firstPoints + two.firstPoints) if keep_starting_points else []
     inputs = [two, one] if operator == PathOp.REVERSE_DIFFERENCE else [one, two]
-    contours, _ = _boolean(_OPS[operator], inputs, "cw" if clockwise else "ccw", max_work)
-    return _finish(contours, fix_winding, keep_starting_points, first)
+    contours, areas = _boolean(_OPS[operator], inputs, "cw" if clockwise else "ccw", max_work)
+    return _finish(contours, areas, fix_winding, keep_starting_points, first)
 
 
 def simplify(
@@ -193,8 +234,8 @@ def simplify(
     [((Fraction(0, 1), Fraction(0, 1)),), ((Fraction(10, 1), Fraction(0, 1)),), ((Fraction(10, 1), Fraction(5, 1)),)]
     """
     first = path.firstPoints if keep_starting_points else []
-    contours, _ = _boolean("simplify", [path], "cw" if clockwise else "ccw", max_work)
-    return _finish(contours, fix_winding, keep_starting_points, first)
+    contours, areas = _boolean("simplify", [path], "cw" if clockwise else "ccw", max_work)
+    return _finish(contours, areas, fix_winding, keep_starting_points, first)
 
 
 class OpBuilder:
@@ -222,29 +263,13 @@ class OpBuilder:
 
     def resolve(self) -> Path:
         orientation = "cw" if self.clockwise else "ccw"
-        acc: Optional[Contours] = None
+        acc: Contours = []
+        areas: List[Any] = []
         for path, operator in self._ops:
-            current = Path(fillType=FillType.WINDING)
-            if acc is not None:
-                current = from_exchange(acc, FillType.WINDING)
+            current = from_exchange(acc, FillType.WINDING)
             inputs = [path, current] if operator == PathOp.REVERSE_DIFFERENCE else [current, path]
-            acc, _ = _boolean(_OPS[operator], inputs, orientation, self.max_work)
-        return _finish(acc or [], self.fix_winding, self.keep_starting_points, list(self.first_points))
-
-
-def _sort_by_area(path: Path) -> None:
-    """Contours by decreasing absolute area, stable (skia-pathops' winding_from_even_odd)."""
-    contours = list(path.contours)
-    try:
-        keyed = [(-abs(_signed_area(c)), i, c) for i, c in enumerate(contours)]
-    except UnsupportedVerbError:
-        return  # conics: their areas are not rational; the order stays
-    keyed.sort(key=lambda k: (k[0], k[1]))
-    fill = path.fillType
-    path.reset()
-    for _, _, c in keyed:
-        path.addPath(c)
-    path.fillType = fill
+            acc, areas = _boolean(_OPS[operator], inputs, orientation, self.max_work)
+        return _finish(acc, areas, self.fix_winding, self.keep_starting_points, list(self.first_points))
 
 
 def restore_starting_points(path: Path, points: List[Any]) -> bool:

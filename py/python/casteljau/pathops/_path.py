@@ -210,11 +210,14 @@ def _same(p: Point, q: Point) -> bool:
     return p[0] == q[0] and p[1] == q[1]
 
 
+def _q(v: Any) -> Any:
+    """An int or Fraction (exact arithmetic), a float as its exact Fraction."""
+    return Fraction(v) if type(v) is float else v
+
+
 def _is_middle(p1: Point, p2: Point, p3: Point) -> bool:
     """``p2`` is exactly the midpoint of ``p1`` and ``p3``."""
-    return 2 * Fraction(p2[0]) == Fraction(p1[0]) + Fraction(p3[0]) and 2 * Fraction(p2[1]) == Fraction(
-        p1[1]
-    ) + Fraction(p3[1])
+    return 2 * _q(p2[0]) == _q(p1[0]) + _q(p3[0]) and 2 * _q(p2[1]) == _q(p1[1]) + _q(p3[1])
 
 
 def _collinear(p1: Point, p2: Point, p3: Point) -> bool:
