@@ -92,11 +92,17 @@ for _id, (_kinds, _status, _what) in CHECKS.items():
 
 
 def _googlefonts_available() -> bool:
+    """Whether fontbakery's googlefonts profile loads (its extra, ``fontbakery[googlefonts]``,
+    brings the modules its checks import)."""
     try:
-        import fontbakery.profiles.googlefonts  # noqa: F401
+        import fontbakery.profiles.googlefonts as gf
+        from fontbakery.fonts_profile import checks_by_id, load_all_checks
 
-        return all(importlib.util.find_spec(m) is not None for m in ("gflanguages", "axisregistry"))
-    except ImportError:
+        if not checks_by_id:
+            load_all_checks()
+        wanted = [c for checks in gf.PROFILE["sections"].values() for c in checks]
+        return all(c in checks_by_id for c in wanted)
+    except Exception:  # any import or profile error: the universal profile alone
         return False
 
 
