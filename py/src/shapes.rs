@@ -19,7 +19,7 @@ use casteljau::shape::{BooleanOp, BooleanOptions, BooleanResult, Orientation, Sh
 use casteljau::{BezierCurve, Point, RationalBezier};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::One;
+use num_traits::{One, Zero};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
@@ -113,6 +113,19 @@ fn near(t: &RealAlgebraic) -> Q {
 fn piece(seg: &RationalBezier<Q>, from: &RealAlgebraic, to: &RealAlgebraic) -> casteljau::Result<OutSegment> {
     let polynomial = seg.weights().iter().all(One::is_one);
     if let (Some(a), Some(b)) = (from.to_rational(), to.to_rational()) {
+        // the whole segment, forwards or backwards (most pieces): its own numbers
+        let whole = |x: &Q, y: &Q| x.is_zero() && y.is_one();
+        if whole(a, b) || whole(b, a) {
+            let mut points: Vec<[Coord; 2]> =
+                seg.points().into_iter().map(|p| exact_point(&p.expect("a defined piece has no weight zero"))).collect();
+            let mut weights = seg.weights();
+            if whole(b, a) {
+                points.reverse();
+                weights.reverse();
+            }
+            let weights = if polynomial { None } else { Some(weights.into_iter().map(Coord::Exact).collect()) };
+            return Ok(OutSegment { points, weights });
+        }
         let sub = seg.subsegment(a, b)?;
         let points: Vec<[Coord; 2]> =
             sub.points().into_iter().map(|p| exact_point(&p.expect("a defined piece has no weight zero"))).collect();
@@ -141,14 +154,6 @@ fn piece(seg: &RationalBezier<Q>, from: &RealAlgebraic, to: &RealAlgebraic) -> c
     Ok(OutSegment { points, weights })
 }
 
-/// The result's contours as segments of the inputs' exact pieces.
-fn result_segments(inputs: &[Contours], r: &BooleanResult) -> casteljau::Result<Vec<Vec<OutSegment>>> {
-    r.pieces
-        .iter()
-        .map(|c| c.iter().map(|p| piece(&inputs[p.input][p.contour][p.segment], &p.from, &p.to)).collect())
-        .collect()
-}
-
 fn coord_py(py: Python<'_>, c: &Coord) -> PyResult<PyObject> {
     match c {
         Coord::Exact(r) => fraction(py, r),
@@ -163,39 +168,103 @@ fn coord_q(c: &Coord) -> Q {
     }
 }
 
+/// `60 · ∫₀¹ (x y′ − y x′) dt` over a polynomial segment of degree ≤ 3, from its control points:
+/// `P₀×P₁` (line), `⅓(2P₀×P₁ + P₀×P₂ + 2P₁×P₂)` (quadratic), `1/20(12P₀×P₁ + 6P₀×P₂ + 2P₀×P₃ +
+/// 6P₁×P₂ + 6P₁×P₃ + 12P₂×P₃)` (cubic), scaled by 60 to stay free of fractions. `None` above
+/// degree 3.
+fn sixty_green(p: &[[Q; 2]]) -> Option<Q> {
+    let cross = |i: usize, j: usize| &p[i][0] * &p[j][1] - &p[i][1] * &p[j][0];
+    let k = |c: i64| Q::from_integer(c.into());
+    Some(match p.len() {
+        1 => Q::zero(),
+        2 => cross(0, 1) * k(60),
+        3 => (cross(0, 1) * k(2) + cross(0, 2) + cross(1, 2) * k(2)) * k(20),
+        4 => {
+            (cross(0, 1) * k(12)
+                + cross(0, 2) * k(6)
+                + cross(0, 3) * k(2)
+                + cross(1, 2) * k(6)
+                + cross(1, 3) * k(6)
+                + cross(2, 3) * k(12))
+                * k(3)
+        }
+        _ => return None,
+    })
+}
+
 /// The signed area (counter-clockwise positive) enclosed by a closed contour of polynomial
-/// output segments, exactly: `½ Σ ∫₀¹ (x y′ − y x′) dt` over the segments, each in power form
-/// (`x = Σ a_k t^k`, `y = Σ b_k t^k`: `∫₀¹ x y′ dt = Σ_{k, m ≥ 1} a_k b_m m/(k + m)`). `None` when a
-/// segment is rational.
-fn contour_area(c: &[OutSegment]) -> Option<Q> {
-    let mut total = Q::from_integer(0.into());
-    for s in c {
-        if s.weights.is_some() {
-            return None;
-        }
-        let pts: Vec<[Q; 2]> = s.points.iter().map(|[x, y]| [coord_q(x), coord_q(y)]).collect();
-        let n = pts.len() - 1;
-        // power coefficients a_k = C(n, k) Δ^k P_0
-        let mut diff = pts.clone();
-        let mut coef: Vec<[Q; 2]> = vec![];
-        let mut binom = BigInt::one();
-        for k in 0..=n {
-            let b = Q::from_integer(binom.clone());
-            coef.push([&diff[0][0] * &b, &diff[0][1] * &b]);
-            for i in 0..n - k {
-                diff[i] = [&diff[i + 1][0] - &diff[i][0], &diff[i + 1][1] - &diff[i][1]];
-            }
-            binom = binom * BigInt::from(n - k) / BigInt::from(k + 1);
-        }
-        for (k, ak) in coef.iter().enumerate() {
-            for (m, bm) in coef.iter().enumerate().skip(1) {
-                let w = Q::new(BigInt::from(m), BigInt::from(k + m));
-                // x y′ − y x′ for the pair (k, m): a_k b_m m/(k+m) − b_k a_m m/(k+m)
-                total += (&ak[0] * &bm[1] - &ak[1] * &bm[0]) * w;
-            }
-        }
+/// segments of degree ≤ 3, exactly: `½ Σ ∫₀¹ (x y′ − y x′) dt`. `None` above degree 3.
+fn contour_area(segments: &[Vec<[Q; 2]>]) -> Option<Q> {
+    let mut total = Q::zero();
+    for s in segments {
+        total += sixty_green(s)?;
     }
-    Some(total / Q::from_integer(2.into()))
+    Some(total / Q::from_integer(120.into()))
+}
+
+/// An output piece: a whole input segment (forwards or backwards), which Python takes from its
+/// own input, or the control points of a part of one.
+enum Item {
+    Whole { input: usize, contour: usize, segment: usize, reversed: bool },
+    Part(OutSegment),
+}
+
+/// The result's contours as items and, when there are several, their exact signed areas (for
+/// skia-pathops' contour order; `None` for a contour with a rational piece).
+fn result_items(inputs: &[&[Vec<RationalBezier<Q>>]], r: &BooleanResult) -> casteljau::Result<(Vec<Vec<Item>>, Vec<Option<Q>>)> {
+    let (zero, one) = (RealAlgebraic::from(Q::zero()), RealAlgebraic::from(Q::one()));
+    let several = r.pieces.len() > 1;
+    let mut out = vec![];
+    let mut areas = vec![];
+    for c in &r.pieces {
+        let mut items = vec![];
+        let mut polygon: Option<Vec<Vec<[Q; 2]>>> = several.then(Vec::new);
+        for p in c {
+            let seg = &inputs[p.input][p.contour][p.segment];
+            let forward = p.from == zero && p.to == one;
+            let item = if forward || (p.from == one && p.to == zero) {
+                Item::Whole { input: p.input, contour: p.contour, segment: p.segment, reversed: !forward }
+            } else {
+                Item::Part(piece(seg, &p.from, &p.to)?)
+            };
+            if let Some(poly) = polygon.as_mut() {
+                match &item {
+                    Item::Whole { reversed, .. } if seg.weights().iter().all(One::is_one) => {
+                        let h = seg.homogeneous().points();
+                        let mut pts: Vec<[Q; 2]> = h.iter().map(|h| [h.coords[0].clone(), h.coords[1].clone()]).collect();
+                        if *reversed {
+                            pts.reverse();
+                        }
+                        poly.push(pts);
+                    }
+                    Item::Part(o) if o.weights.is_none() => {
+                        poly.push(o.points.iter().map(|[x, y]| [coord_q(x), coord_q(y)]).collect());
+                    }
+                    _ => polygon = None,
+                }
+            }
+            items.push(item);
+        }
+        areas.push(polygon.and_then(|p| contour_area(&p)));
+        out.push(items);
+    }
+    Ok((out, areas))
+}
+
+/// One output segment as `(points, weights)`.
+fn segment_py<'py>(py: Python<'py>, s: &OutSegment) -> PyResult<Bound<'py, PyTuple>> {
+    let pts = s
+        .points
+        .iter()
+        .map(|[x, y]| PyTuple::new(py, [coord_py(py, x)?, coord_py(py, y)?]))
+        .collect::<PyResult<Vec<_>>>()?;
+    let w: PyObject = match &s.weights {
+        None => py.None(),
+        Some(ws) => {
+            PyList::new(py, ws.iter().map(|w| coord_py(py, w)).collect::<PyResult<Vec<_>>>()?)?.into_any().unbind()
+        }
+    };
+    PyTuple::new(py, [PyList::new(py, pts)?.into_any().unbind(), w])
 }
 
 fn segments_py(py: Python<'_>, contours: &[Vec<OutSegment>]) -> PyResult<Py<PyList>> {
@@ -203,18 +272,24 @@ fn segments_py(py: Python<'_>, contours: &[Vec<OutSegment>]) -> PyResult<Py<PyLi
     for c in contours {
         let segs = PyList::empty(py);
         for s in c {
-            let pts = s
-                .points
-                .iter()
-                .map(|[x, y]| PyTuple::new(py, [coord_py(py, x)?, coord_py(py, y)?]))
-                .collect::<PyResult<Vec<_>>>()?;
-            let w: PyObject = match &s.weights {
-                None => py.None(),
-                Some(ws) => PyList::new(py, ws.iter().map(|w| coord_py(py, w)).collect::<PyResult<Vec<_>>>()?)?
-                    .into_any()
-                    .unbind(),
-            };
-            segs.append(PyTuple::new(py, [PyList::new(py, pts)?.into_any().unbind(), w])?)?;
+            segs.append(segment_py(py, s)?)?;
+        }
+        out.append(segs)?;
+    }
+    Ok(out.unbind())
+}
+
+/// Items as Python: a whole piece as `(input, contour, segment, reversed)`, a part as
+/// `(points, weights)`.
+fn items_py(py: Python<'_>, contours: &[Vec<Item>]) -> PyResult<Py<PyList>> {
+    let out = PyList::empty(py);
+    for c in contours {
+        let segs = PyList::empty(py);
+        for item in c {
+            match item {
+                Item::Whole { input, contour, segment, reversed } => segs.append((*input, *contour, *segment, *reversed))?,
+                Item::Part(s) => segs.append(segment_py(py, s)?)?,
+            }
         }
         out.append(segs)?;
     }
@@ -223,11 +298,12 @@ fn segments_py(py: Python<'_>, contours: &[Vec<OutSegment>]) -> PyResult<Py<PyLi
 
 /// `boolean(op, inputs, fill, orientation, max_work)`: the exact boolean operation `op`
 /// (`union`, `intersection`, `difference`, `xor`, `simplify`) on shapes in exchange form.
-/// Returns `(contours, area, parents, orientations, areas)`: the result's contours in exchange
-/// form, its exact area (`Fraction`, or `None` when a piece is rational or has irrational ends),
-/// each contour's directly enclosing contour (or `None`), each contour's orientation
-/// (`"ccw"`/`"cw"`), and each output contour's exact signed area as drawn (`None` for a contour
-/// with a rational piece).
+/// Returns `(contours, area, parents, orientations, areas)`: the result's contours, each a list
+/// of pieces — a whole input segment as `(input, contour, segment, reversed)`, a part of one in
+/// exchange form `(points, weights)` —, its exact area (`Fraction`, or `None` when a piece is
+/// rational or has irrational ends), each contour's directly enclosing contour (or `None`), each
+/// contour's orientation (`"ccw"`/`"cw"`), and, when there are several contours, each one's exact
+/// signed area as drawn (`None` otherwise, and for a contour with a rational piece).
 #[pyfunction]
 #[pyo3(signature = (op, inputs, fill="nonzero", orientation="ccw", max_work=None))]
 #[allow(clippy::type_complexity)]
@@ -243,12 +319,12 @@ fn boolean(
     let options = BooleanOptions { fill: fill_of(fill)?, orientation: orientation_of(orientation)? };
     let inputs = inputs.iter().map(contours_of).collect::<PyResult<Vec<_>>>()?;
     let budget = budget(max_work)?;
-    let (r, segs, areas) = run(py, move || {
-        let shapes = inputs.iter().map(|c| Shape::from_contours(c.clone())).collect::<casteljau::Result<Vec<_>>>()?;
+    let (r, items, areas) = run(py, move || {
+        let shapes = inputs.into_iter().map(Shape::from_contours).collect::<casteljau::Result<Vec<_>>>()?;
         let r = exact_boolean(op, &shapes, options, &budget)?;
-        let segs = result_segments(&inputs, &r)?;
-        let areas: Vec<Option<Q>> = segs.iter().map(|c| contour_area(c)).collect();
-        Ok((r, segs, areas))
+        let contours: Vec<&[Vec<RationalBezier<Q>>]> = shapes.iter().map(|s| s.path().contours()).collect();
+        let (items, areas) = result_items(&contours, &r)?;
+        Ok((r, items, areas))
     })?;
     let areas = areas
         .iter()
@@ -269,8 +345,9 @@ fn boolean(
             Orientation::Cw => "cw",
         })
         .collect();
-    Ok((segments_py(py, &segs)?, area, r.parents.clone(), orient, areas))
+    Ok((items_py(py, &items)?, area, r.parents.clone(), orient, areas))
 }
+
 
 /// Whether `r` (the simplified `shape`) is `shape`'s outline with some contours reversed: as
 /// many contours, each made of the non-degenerate segments of one input contour (each used

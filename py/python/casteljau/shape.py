@@ -20,6 +20,27 @@ def _exchange_of_segment(seg: Any) -> Tuple[list, Optional[list]]:
     return (list(pts), None if ws is None else list(ws))
 
 
+def resolve(contours: list, inputs: Sequence[list]) -> list:
+    """The native ``boolean``'s result contours in exchange form: a whole input segment
+    ``(input, contour, segment, reversed)`` is taken from ``inputs`` (its numbers as given), a
+    part ``(points, weights)`` is used as it is."""
+    out = []
+    for c in contours:
+        segs = []
+        for item in c:
+            if len(item) == 4:
+                i, k, s, rev = item
+                pts, ws = inputs[i][k][s]
+                if rev:
+                    pts = pts[::-1]
+                    ws = ws[::-1] if ws is not None else None
+                segs.append((pts, ws))
+            else:
+                segs.append(item)
+        out.append(segs)
+    return out
+
+
 class Shape:
     """A filled shape: closed contours of exact (rational) Bézier segments under a fill rule
     (``"nonzero"`` or ``"evenodd"``).
@@ -169,7 +190,7 @@ class Shape:
     def _op(self, op: str, others: Sequence["Shape"], orientation: str, max_work: Optional[float]) -> "Shape":
         inputs = [self._contours] + [o._contours for o in others]
         contours = _core.boolean(op, inputs, self.fill, orientation, max_work)[0]
-        return Shape(contours, "nonzero")
+        return Shape(resolve(contours, inputs), "nonzero")
 
     def simplify(self, *, orientation: str = "ccw", max_work: Optional[float] = None) -> "Shape":
         """The exact boundary of the fill: overlaps removed, outer contours ``orientation``

@@ -7,6 +7,7 @@ from fractions import Fraction
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from .. import _core
+from ..shape import resolve
 from ._path import (
     FillType,
     Path,
@@ -44,35 +45,49 @@ def exchange(path: Path) -> Contours:
     last point is not its first (Skia fills open contours closed)."""
     out: Contours = []
     segs: List[Tuple[list, Optional[list]]] = []
-    start = cur = None
+    pts = path._points
+    verbs = path._verbs
+    n = len(verbs)
     weights = iter(path._weights)
-
-    def finish() -> None:
-        if segs:
-            if not _same(cur, start):  # type: ignore[arg-type]
-                segs.append(([cur, start], None))
-            out.append(list(segs))
-        segs.clear()
-
-    for verb, pts in path._records():
-        if verb == PathVerb.MOVE:
-            finish()
-            start = cur = pts[0]
-        elif verb == PathVerb.CLOSE:
-            finish()
-        elif verb == PathVerb.LINE:
-            segs.append(([cur, pts[0]], None))
-            cur = pts[0]
-        elif verb == PathVerb.QUAD:
-            segs.append(([cur, pts[0], pts[1]], None))
-            cur = pts[1]
-        elif verb == PathVerb.CUBIC:
-            segs.append(([cur, pts[0], pts[1], pts[2]], None))
-            cur = pts[2]
-        elif verb == PathVerb.CONIC:
-            segs.append(([cur, pts[0], pts[1]], [1, next(weights), 1]))
-            cur = pts[1]
-    finish()
+    start = cur = None
+    i = 0
+    MOVE, LINE, QUAD, CUBIC, CLOSE = PathVerb.MOVE, PathVerb.LINE, PathVerb.QUAD, PathVerb.CUBIC, PathVerb.CLOSE
+    for k, v in enumerate(verbs):
+        if v == MOVE or v == CLOSE:
+            if segs:
+                if not _same(cur, start):  # type: ignore[arg-type]
+                    segs.append(([cur, start], None))
+                out.append(segs)
+                segs = []
+            if v == MOVE:
+                if k == n - 1:
+                    break  # a trailing moveTo draws nothing
+                start = cur = pts[i]
+                i += 1
+        elif v == LINE:
+            p = pts[i]
+            segs.append(([cur, p], None))
+            cur = p
+            i += 1
+        elif v == QUAD:
+            p = pts[i + 1]
+            segs.append(([cur, pts[i], p], None))
+            cur = p
+            i += 2
+        elif v == CUBIC:
+            p = pts[i + 2]
+            segs.append(([cur, pts[i], pts[i + 1], p], None))
+            cur = p
+            i += 3
+        else:  # CONIC
+            p = pts[i + 1]
+            segs.append(([cur, pts[i], p], [1, next(weights), 1]))
+            cur = p
+            i += 2
+    if segs:
+        if not _same(cur, start):  # type: ignore[arg-type]
+            segs.append(([cur, start], None))
+        out.append(segs)
     return out
 
 
@@ -166,9 +181,10 @@ def _boolean(op: str, paths: Sequence[Path], orientation: str, max_work: Optiona
             # different fill rules: each even-odd input as the boundary of its region first
             for i, r in enumerate(rules):
                 if r == "evenodd":
-                    inputs[i] = _core.boolean("simplify", [inputs[i]], "evenodd", "ccw", max_work)[0]
+                    inputs[i] = resolve(_core.boolean("simplify", [inputs[i]], "evenodd", "ccw", max_work)[0], [inputs[i]])
             rules = ["nonzero"] * len(rules)
-        contours, _, _, _, areas = _core.boolean(op, inputs, rules[0], orientation, max_work)
+        items, _, _, _, areas = _core.boolean(op, inputs, rules[0], orientation, max_work)
+        contours = resolve(items, inputs)
     except _core.CasteljauError as e:
         raise ExactOperationError(str(e)) from e
     return contours, areas
@@ -186,7 +202,13 @@ def _finish(
     if keep_starting_points and first_points:
         points = list(first_points)
         for this in paths:
+            # skia-pathops tries each point in turn; only an on-curve point of the contour other
+            # than its first can move the start (the first one leaves it as it is)
+            oncurve = set(_oncurve_points(this))
+            first = this._points[0]
             for j, pt in enumerate(points):
+                if pt not in oncurve or _same(pt, first):
+                    continue
                 if _set_contour_start_point(this, pt):
                     del points[j]
                     break
@@ -231,7 +253,7 @@ def simplify(
     >>> for x, y in ((0, 0), (5, 5)):
     ...     p.moveTo(x, y); p.lineTo(x + 10, y); p.lineTo(x + 10, y + 10); p.lineTo(x, y + 10); p.close()
     >>> [pts for _, pts in simplify(p)][:3]
-    [((Fraction(0, 1), Fraction(0, 1)),), ((Fraction(10, 1), Fraction(0, 1)),), ((Fraction(10, 1), Fraction(5, 1)),)]
+    [((0, 0),), ((10, 0),), ((Fraction(10, 1), Fraction(5, 1)),)]
     """
     first = path.firstPoints if keep_starting_points else []
     contours, areas = _boolean("simplify", [path], "cw" if clockwise else "ccw", max_work)
@@ -270,6 +292,18 @@ class OpBuilder:
             inputs = [path, current] if operator == PathOp.REVERSE_DIFFERENCE else [current, path]
             acc, areas = _boolean(_OPS[operator], inputs, orientation, self.max_work)
         return _finish(acc, areas, self.fix_winding, self.keep_starting_points, list(self.first_points))
+
+
+def _oncurve_points(path: Path) -> List[Any]:
+    """The last point of each verb (the on-curve points), in order."""
+    out = []
+    i = 0
+    for v in path._verbs:
+        n = _POINTS_IN_VERB[v]
+        if n:
+            i += n
+            out.append(path._points[i - 1])
+    return out
 
 
 def restore_starting_points(path: Path, points: List[Any]) -> bool:
@@ -326,49 +360,61 @@ def _set_contour_start_point(path: Path, pt: Any) -> bool:
     if not closed:
         _reverse_contour(path)
         return True
-    temp = Path(fillType=path.fillType)
+    # the contour rebuilt from the new start, straight into the lists
+    out_verbs: List[PathVerb] = [PathVerb.MOVE]
     first_verb = verbs[verb_index]
     first_pt = pts[pt_index]
+    out_pts: List[Any] = [first_pt]
+    out_weights: List[Any] = []
     vi = (verb_index + 1) % vc
     pi = (pt_index + 1) % pc
-    temp.moveTo(*first_pt)
     last = first_pt
+    MOVE, LINE, QUAD, CONIC, CUBIC, CLOSE = (
+        PathVerb.MOVE, PathVerb.LINE, PathVerb.QUAD, PathVerb.CONIC, PathVerb.CUBIC, PathVerb.CLOSE,
+    )
     for _ in range(1, vc):
         v = verbs[vi]
         n = _POINTS_IN_VERB[v]
-        if v == PathVerb.MOVE:
-            if _same(last, pts[pi]) or (
-                verbs[(vi + 1) % vc] == PathVerb.LINE and _collinear(last, pts[pi], pts[(pi + 1) % pc])
+        if v == MOVE:
+            # the old start becomes a lineTo, unless it repeats the last point or lies between it
+            # and the next line on one line (skia-pathops #12)
+            if not (
+                _same(last, pts[pi])
+                or (verbs[(vi + 1) % vc] == LINE and _collinear(last, pts[pi], pts[(pi + 1) % pc]))
             ):
-                pass
-            else:
-                temp.lineTo(*pts[pi])
+                out_verbs.append(LINE)
+                out_pts.append(pts[pi])
                 last = pts[pi]
-        elif v == PathVerb.LINE:
-            if verbs[(vi + 1) % vc] == PathVerb.CLOSE and _same(pts[pi], pts[(pi + 1) % pc]):
-                pass
-            else:
-                temp.lineTo(*pts[pi])
+        elif v == LINE:
+            # the original contour's last line back to its old start is left to close
+            if not (verbs[(vi + 1) % vc] == CLOSE and _same(pts[pi], pts[(pi + 1) % pc])):
+                out_verbs.append(LINE)
+                out_pts.append(pts[pi])
                 last = pts[pi]
-        elif v == PathVerb.QUAD:
-            temp.quadTo(*pts[pi], *pts[pi + 1])
+        elif v == QUAD or v == CONIC:
+            out_verbs.append(v)
+            out_pts += (pts[pi], pts[pi + 1])
+            if v == CONIC:
+                out_weights.append(weights[vi])
             last = pts[pi + 1]
-        elif v == PathVerb.CONIC:
-            temp.conicTo(*pts[pi], *pts[pi + 1], weights[vi])
-            last = pts[pi + 1]
-        elif v == PathVerb.CUBIC:
-            temp.cubicTo(*pts[pi], *pts[pi + 1], *pts[pi + 2])
+        elif v == CUBIC:
+            out_verbs.append(v)
+            out_pts += (pts[pi], pts[pi + 1], pts[pi + 2])
             last = pts[pi + 2]
         vi = (vi + 1) % vc
         pi = (pi + n) % pc
-    if first_verb == PathVerb.QUAD:
-        temp.quadTo(*pts[pi], *pts[pi + 1])
-    elif first_verb == PathVerb.CONIC:
-        temp.conicTo(*pts[pi], *pts[pi + 1], weights[verb_index])
-    elif first_verb == PathVerb.CUBIC:
-        temp.cubicTo(*pts[pi], *pts[pi + 1], *pts[pi + 2])
-    temp.close()
-    path._copy_from(temp)
+    if first_verb in (QUAD, CONIC):
+        out_verbs.append(first_verb)
+        out_pts += (pts[pi], pts[pi + 1])
+        if first_verb == CONIC:
+            out_weights.append(weights[verb_index])
+    elif first_verb == CUBIC:
+        out_verbs.append(first_verb)
+        out_pts += (pts[pi], pts[pi + 1], pts[pi + 2])
+    out_verbs.append(CLOSE)
+    path._verbs, path._points, path._weights = out_verbs, out_pts, out_weights
+    path._last_move = first_pt
+    path._needs_move = True
     return True
 
 

@@ -607,28 +607,18 @@ class Path:
         supported (it would turn segments into rational curves)."""
         if perspectiveX != 0 or perspectiveY != 0 or perspectiveBias != 1:
             raise NotImplementedError("casteljau.pathops: perspective transforms are not supported")
-        a, b, c, d, e, f = (_num(v) for v in (scaleX, skewY, skewX, scaleY, translateX, translateY))
+        a, b, c, d, e, f = (_q(_num(v)) for v in (scaleX, skewY, skewX, scaleY, translateX, translateY))
+        # ints and Fractions compute exactly as they are; floats become their exact Fractions
+        if a == 1 and d == 1 and b == 0 and c == 0:
 
-        def mul(u: Any, v: Any) -> Any:
-            if type(u) is int and type(v) is int:
-                return u * v
-            if u == 0 or v == 0:
-                return 0
-            if v == 1:
-                return u
-            if u == 1:
-                return v
-            return Fraction(u) * Fraction(v)
+            def m(p: Point) -> Point:
+                return (_q(p[0]) + e, _q(p[1]) + f)
 
-        def add(*xs: Any) -> Any:
-            if all(type(x) is int for x in xs):
-                return sum(xs)
-            s = sum(Fraction(x) for x in xs)
-            return s
+        else:
 
-        def m(p: Point) -> Point:
-            x, y = p
-            return (add(mul(a, x), mul(c, y), e), add(mul(b, x), mul(d, y), f))
+            def m(p: Point) -> Point:
+                x, y = _q(p[0]), _q(p[1])
+                return (a * x + c * y + e, b * x + d * y + f)
 
         out = Path(self)
         out._points = [m(p) for p in self._points]
@@ -778,7 +768,12 @@ class PathPen:
         self.path.moveTo(pt[0], pt[1])
 
     def lineTo(self, pt: Sequence[Any]) -> None:
-        self.path.lineTo(pt[0], pt[1])
+        x, y = pt
+        if type(x) is int and type(y) is int and not self.path._needs_move:
+            self.path._verbs.append(PathVerb.LINE)
+            self.path._points.append((x, y))
+            return
+        self.path.lineTo(x, y)
 
     def curveTo(self, *points: Sequence[Any]) -> None:
         n = len(points) - 1
@@ -795,6 +790,21 @@ class PathPen:
 
     def qCurveTo(self, *points: Any) -> None:
         n = len(points) - 1
+        if n > 0 and points[-1] is not None and all(type(c) is int for p in points for c in p):
+            # integer points (TrueType): the implied on-curve points straight into the path
+            path = self.path
+            path._ensure_move()
+            verbs, pts = path._verbs, path._points
+            for i in range(n - 1):
+                (x, y), (nx, ny) = points[i], points[i + 1]
+                sx, sy = x + nx, y + ny
+                verbs.append(PathVerb.QUAD)
+                pts.append((x, y))
+                pts.append((sx >> 1 if not sx & 1 else Fraction(sx, 2), sy >> 1 if not sy & 1 else Fraction(sy, 2)))
+            verbs.append(PathVerb.QUAD)
+            pts.append(tuple(points[-2]))
+            pts.append(tuple(points[-1]))
+            return
         if n > 0:
             oncurveless = points[-1] is None
             pts = tuple(_pt(p) for p in points[:-1]) + ((None,) if oncurveless else (_pt(points[-1]),))
