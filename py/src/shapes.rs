@@ -195,11 +195,49 @@ fn sixty_green(p: &[[Q; 2]]) -> Option<Q> {
 /// The signed area (counter-clockwise positive) enclosed by a closed contour of polynomial
 /// segments of degree ≤ 3, exactly: `½ Σ ∫₀¹ (x y′ − y x′) dt`. `None` above degree 3.
 fn contour_area(segments: &[Vec<[Q; 2]>]) -> Option<Q> {
+    if let Some(a) = contour_area_halves(segments) {
+        return Some(a);
+    }
     let mut total = Q::zero();
     for s in segments {
         total += sixty_green(s)?;
     }
     Some(total / Q::from_integer(120.into()))
+}
+
+/// [`contour_area`] in `i128` when every coordinate is an integer or a half-integer that fits
+/// `i64` (font outlines with TrueType's implied points): the same formula on the doubled
+/// coordinates, every step checked. `None` otherwise, or on overflow.
+fn contour_area_halves(segments: &[Vec<[Q; 2]>]) -> Option<Q> {
+    use num_traits::ToPrimitive;
+    let two = BigInt::from(2);
+    let doubled = |q: &Q| -> Option<i128> {
+        let n = q.numer().to_i64()? as i128;
+        if q.denom().is_one() {
+            n.checked_mul(2)
+        } else if *q.denom() == two {
+            Some(n)
+        } else {
+            None
+        }
+    };
+    let mut total: i128 = 0;
+    for s in segments {
+        let p: Vec<[i128; 2]> = s.iter().map(|[x, y]| Some([doubled(x)?, doubled(y)?])).collect::<Option<_>>()?;
+        let cross = |i: usize, j: usize| p[i][0].checked_mul(p[j][1])?.checked_sub(p[i][1].checked_mul(p[j][0])?);
+        let terms: &[(usize, usize, i128)] = match p.len() {
+            1 => &[],
+            2 => &[(0, 1, 60)],
+            3 => &[(0, 1, 40), (0, 2, 20), (1, 2, 40)],
+            4 => &[(0, 1, 36), (0, 2, 18), (0, 3, 6), (1, 2, 18), (1, 3, 18), (2, 3, 36)],
+            _ => return None,
+        };
+        for &(i, j, k) in terms {
+            total = total.checked_add(cross(i, j)?.checked_mul(k)?)?;
+        }
+    }
+    // the coordinates were doubled: areas scale by 4
+    Some(Q::new(BigInt::from(total), BigInt::from(480)))
 }
 
 /// An output piece: a whole input segment (forwards or backwards), which Python takes from its

@@ -185,6 +185,20 @@ def _half(a: Any, b: Any) -> Any:
     return m.numerator if m.denominator == 1 else m
 
 
+_HALVES: dict = {}
+
+
+def _halves(s: int) -> Fraction:
+    """``Fraction(s, 2)`` for an odd ``s``, made once per value (TrueType's implied points)."""
+    f = _HALVES.get(s)
+    if f is None:
+        f = _HALVES[s] = Fraction(s, 2)
+        if len(_HALVES) > 1 << 16:
+            _HALVES.clear()
+            _HALVES[s] = f
+    return f
+
+
 def _mid(p: Point, q: Point) -> Point:
     return (_half(p[0], q[0]), _half(p[1], q[1]))
 
@@ -800,7 +814,7 @@ class PathPen:
                 sx, sy = x + nx, y + ny
                 verbs.append(PathVerb.QUAD)
                 pts.append((x, y))
-                pts.append((sx >> 1 if not sx & 1 else Fraction(sx, 2), sy >> 1 if not sy & 1 else Fraction(sy, 2)))
+                pts.append((sx >> 1 if not sx & 1 else _halves(sx), sy >> 1 if not sy & 1 else _halves(sy)))
             verbs.append(PathVerb.QUAD)
             pts.append(tuple(points[-2]))
             pts.append(tuple(points[-1]))
