@@ -116,8 +116,11 @@ fn piece(seg: &RationalBezier<Q>, from: &RealAlgebraic, to: &RealAlgebraic) -> c
         // the whole segment, forwards or backwards (most pieces): its own numbers
         let whole = |x: &Q, y: &Q| x.is_zero() && y.is_one();
         if whole(a, b) || whole(b, a) {
-            let mut points: Vec<[Coord; 2]> =
-                seg.points().into_iter().map(|p| exact_point(&p.expect("a defined piece has no weight zero"))).collect();
+            let mut points: Vec<[Coord; 2]> = seg
+                .points()
+                .into_iter()
+                .map(|p| exact_point(&p.expect("a defined piece has no weight zero")))
+                .collect();
             let mut weights = seg.weights();
             if whole(b, a) {
                 points.reverse();
@@ -249,7 +252,10 @@ enum Item {
 
 /// The result's contours as items and, when there are several, their exact signed areas (for
 /// skia-pathops' contour order; `None` for a contour with a rational piece).
-fn result_items(inputs: &[&[Vec<RationalBezier<Q>>]], r: &BooleanResult) -> casteljau::Result<(Vec<Vec<Item>>, Vec<Option<Q>>)> {
+fn result_items(
+    inputs: &[&[Vec<RationalBezier<Q>>]],
+    r: &BooleanResult,
+) -> casteljau::Result<(Vec<Vec<Item>>, Vec<Option<Q>>)> {
     let (zero, one) = (RealAlgebraic::from(Q::zero()), RealAlgebraic::from(Q::one()));
     let several = r.pieces.len() > 1;
     let mut out = vec![];
@@ -269,7 +275,8 @@ fn result_items(inputs: &[&[Vec<RationalBezier<Q>>]], r: &BooleanResult) -> cast
                 match &item {
                     Item::Whole { reversed, .. } if seg.weights().iter().all(One::is_one) => {
                         let h = seg.homogeneous().points();
-                        let mut pts: Vec<[Q; 2]> = h.iter().map(|h| [h.coords[0].clone(), h.coords[1].clone()]).collect();
+                        let mut pts: Vec<[Q; 2]> =
+                            h.iter().map(|h| [h.coords[0].clone(), h.coords[1].clone()]).collect();
                         if *reversed {
                             pts.reverse();
                         }
@@ -325,7 +332,9 @@ fn items_py(py: Python<'_>, contours: &[Vec<Item>]) -> PyResult<Py<PyList>> {
         let segs = PyList::empty(py);
         for item in c {
             match item {
-                Item::Whole { input, contour, segment, reversed } => segs.append((*input, *contour, *segment, *reversed))?,
+                Item::Whole { input, contour, segment, reversed } => {
+                    segs.append((*input, *contour, *segment, *reversed))?
+                }
                 Item::Part(s) => segs.append(segment_py(py, s)?)?,
             }
         }
@@ -385,7 +394,6 @@ fn boolean(
         .collect();
     Ok((items_py(py, &items)?, area, r.parents.clone(), orient, areas))
 }
-
 
 /// Whether `r` (the simplified `shape`) is `shape`'s outline with some contours reversed: as
 /// many contours, each made of the non-degenerate segments of one input contour (each used
