@@ -168,3 +168,16 @@ def test_fontmake_builds_a_font_lint_finds_clean(tmp_path):
     if run.returncode != 0:
         raise CasteljauError(run.stderr.strip().splitlines()[-1])
     assert not [f for f in casteljau.lint(str(out)) if f.fails]
+
+
+def test_install_replaces_fonttools_remove_overlaps():
+    import fontTools.ttLib.removeOverlaps as ro
+
+    import casteljau.fonttools
+
+    saved = ro.removeOverlaps
+    try:
+        casteljau.fonttools.install()
+        assert ro.removeOverlaps is casteljau.fonttools.removeOverlaps
+    finally:
+        ro.removeOverlaps = saved
