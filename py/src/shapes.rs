@@ -250,12 +250,12 @@ enum Item {
     Part(OutSegment),
 }
 
+/// Per contour its items, and per contour its area (see [`result_items`]).
+type ResultItems = (Vec<Vec<Item>>, Vec<Option<Q>>);
+
 /// The result's contours as items and, when there are several, their exact signed areas (for
 /// skia-pathops' contour order; `None` for a contour with a rational piece).
-fn result_items(
-    inputs: &[&[Vec<RationalBezier<Q>>]],
-    r: &BooleanResult,
-) -> casteljau::Result<(Vec<Vec<Item>>, Vec<Option<Q>>)> {
+fn result_items(inputs: &[&[Vec<RationalBezier<Q>>]], r: &BooleanResult) -> casteljau::Result<ResultItems> {
     let (zero, one) = (RealAlgebraic::from(Q::zero()), RealAlgebraic::from(Q::one()));
     let several = r.pieces.len() > 1;
     let mut out = vec![];
