@@ -1,0 +1,1 @@
+"""ufo2ft filters: ``casteljau.filters.removeOverlaps::RemoveOverlapsFilter``."""

@@ -1,0 +1,855 @@
+"""skia-pathops' ``Path`` and ``PathPen`` with exact numbers.
+
+A ``Path`` stores its verbs and points as Skia's ``SkPath`` does, but every coordinate is an
+exact number: ints, floats (their binary64 value, not rounded to float32 as Skia does) and
+``Fraction``s are kept as given; strings such as ``"1/3"`` are read exactly. Points computed by
+an operation are ``Fraction``s when rational and correctly rounded floats when irrational.
+Geometric decisions (is a point the midpoint, do two points coincide) are exact comparisons,
+where Skia compares within ``SK_ScalarNearlyZero``.
+"""
+
+from __future__ import annotations
+
+import enum
+import itertools
+import struct
+from fractions import Fraction
+from typing import Any, Iterator, List, Optional, Sequence, Tuple
+
+from .. import _core
+from ..numbers import exact
+
+__all__ = [
+    "Path",
+    "PathPen",
+    "PathVerb",
+    "PathOp",
+    "FillType",
+    "LineCap",
+    "LineJoin",
+    "ArcSize",
+    "Direction",
+    "PathOpsError",
+    "UnsupportedVerbError",
+    "OpenPathError",
+    "NumberOfPointsError",
+    "bits2float",
+    "float2bits",
+    "decompose_quadratic_segment",
+]
+
+Point = Tuple[Any, Any]
+
+
+class PathOpsError(Exception):
+    """An operation on paths failed (skia-pathops' base class)."""
+
+
+class UnsupportedVerbError(PathOpsError):
+    """A verb the operation does not handle."""
+
+
+class OpenPathError(PathOpsError):
+    """An open contour where closed ones are required (``getPen(allow_open_paths=False)``)."""
+
+
+class NumberOfPointsError(PathOpsError):
+    """A pen segment with the wrong number of points."""
+
+
+class PathVerb(enum.IntEnum):
+    """Skia's path verbs."""
+
+    MOVE = 0
+    LINE = 1
+    QUAD = 2
+    CONIC = 3
+    CUBIC = 4
+    CLOSE = 5
+
+
+class PathOp(enum.IntEnum):
+    """Skia's boolean operations."""
+
+    DIFFERENCE = 0
+    INTERSECTION = 1
+    UNION = 2
+    XOR = 3
+    REVERSE_DIFFERENCE = 4
+
+
+class FillType(enum.IntEnum):
+    """Skia's fill types."""
+
+    WINDING = 0
+    EVEN_ODD = 1
+    INVERSE_WINDING = 2
+    INVERSE_EVEN_ODD = 3
+
+
+class LineCap(enum.IntEnum):
+    """Stroke caps (stroking is not supported: ``Path.stroke`` raises)."""
+
+    BUTT_CAP = 0
+    ROUND_CAP = 1
+    SQUARE_CAP = 2
+
+
+class LineJoin(enum.IntEnum):
+    """Stroke joins (stroking is not supported)."""
+
+    MITER_JOIN = 0
+    ROUND_JOIN = 1
+    BEVEL_JOIN = 2
+
+
+class ArcSize(enum.IntEnum):
+    """SVG arc size flag (``arcTo`` is not supported: its conics have irrational weights)."""
+
+    SMALL = 0
+    LARGE = 1
+
+
+class Direction(enum.IntEnum):
+    """SVG arc sweep direction."""
+
+    CW = 0
+    CCW = 1
+
+
+_POINTS_IN_VERB = {
+    PathVerb.MOVE: 1,
+    PathVerb.LINE: 1,
+    PathVerb.QUAD: 2,
+    PathVerb.CONIC: 2,
+    PathVerb.CUBIC: 3,
+    PathVerb.CLOSE: 0,
+}
+
+_VERB_METHODS = {
+    PathVerb.MOVE: "moveTo",
+    PathVerb.LINE: "lineTo",
+    PathVerb.QUAD: "quadTo",
+    PathVerb.CONIC: "conicTo",
+    PathVerb.CUBIC: "cubicTo",
+    PathVerb.CLOSE: "close",
+}
+
+
+def float2bits(x: float) -> int:
+    """The bits of ``x`` rounded to float32, unsigned (as skia-pathops).
+
+    >>> hex(float2bits(17.5))
+    '0x418c0000'
+    >>> hex(float2bits(-10.0))
+    '0xc1200000'
+    """
+    return struct.unpack("<I", struct.pack("<f", x))[0]
+
+
+def bits2float(float_as_bits: int) -> float:
+    """The float32 with these bits (negative ints as their two's complement).
+
+    >>> bits2float(0x418c0000)
+    17.5
+    >>> bits2float(-0x3ee00000)
+    -10.0
+    """
+    return struct.unpack("<f", struct.pack("<I", float_as_bits & 0xFFFFFFFF))[0]
+
+
+def _num(v: Any) -> Any:
+    """A coordinate kept exactly: int, float and Fraction as they are, others read exactly."""
+    t = type(v)
+    if t is int or t is Fraction:
+        return v
+    if t is float:
+        if v != v or v in (float("inf"), float("-inf")):
+            raise _core.CasteljauError("not a finite number: %r" % v)
+        return v
+    if isinstance(v, bool):
+        return int(v)
+    return exact(v)
+
+
+def _pt(p: Sequence[Any]) -> Point:
+    return (_num(p[0]), _num(p[1]))
+
+
+def _half(a: Any, b: Any) -> Any:
+    """The exact midpoint of two coordinates (an int when it is one)."""
+    if type(a) is int and type(b) is int:
+        s = a + b
+        return s >> 1 if not s & 1 else Fraction(s, 2)
+    m = (Fraction(a) + Fraction(b)) / 2
+    return m.numerator if m.denominator == 1 else m
+
+
+_HALVES: dict = {}
+
+
+def _halves(s: int) -> Fraction:
+    """``Fraction(s, 2)`` for an odd ``s``, made once per value (TrueType's implied points)."""
+    f = _HALVES.get(s)
+    if f is None:
+        f = _HALVES[s] = Fraction(s, 2)
+        if len(_HALVES) > 1 << 16:
+            _HALVES.clear()
+            _HALVES[s] = f
+    return f
+
+
+def _mid(p: Point, q: Point) -> Point:
+    return (_half(p[0], q[0]), _half(p[1], q[1]))
+
+
+def decompose_quadratic_segment(points: Sequence[Point]) -> List[Tuple[Point, Point]]:
+    """A TrueType quadratic spline as quadratic segments ``(off, on)``, the implied on-curve
+    points the exact midpoints of consecutive off-curve points.
+
+    >>> decompose_quadratic_segment(((0, 0), (1, 1), (2, 1)))
+    [((0, 0), (Fraction(1, 2), Fraction(1, 2))), ((1, 1), (2, 1))]
+    """
+    points = tuple(points)
+    n = len(points) - 1
+    assert n > 0
+    quads = []
+    for i in range(n - 1):
+        quads.append((points[i], _mid(points[i], points[i + 1])))
+    quads.append((points[-2], points[-1]))
+    return quads
+
+
+def _same(p: Point, q: Point) -> bool:
+    return p[0] == q[0] and p[1] == q[1]
+
+
+def _q(v: Any) -> Any:
+    """An int or Fraction (exact arithmetic), a float as its exact Fraction."""
+    return Fraction(v) if type(v) is float else v
+
+
+def _is_middle(p1: Point, p2: Point, p3: Point) -> bool:
+    """``p2`` is exactly the midpoint of ``p1`` and ``p3``."""
+    return 2 * _q(p2[0]) == _q(p1[0]) + _q(p3[0]) and 2 * _q(p2[1]) == _q(p1[1]) + _q(p3[1])
+
+
+def _collinear(p1: Point, p2: Point, p3: Point) -> bool:
+    x1, y1, x2, y2, x3, y3 = (Fraction(c) for c in (p1[0], p1[1], p2[0], p2[1], p3[0], p3[1]))
+    return x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2) == 0
+
+
+class Path:
+    """An exact mirror of skia-pathops' ``Path``: verbs and exact points.
+
+    >>> from casteljau.pathops import Path, PathVerb
+    >>> p = Path()
+    >>> p.moveTo(0, 0); p.lineTo(10, 0); p.lineTo(0, 10); p.close()
+    >>> p.area
+    Fraction(50, 1)
+    >>> list(p)[:2]
+    [(<PathVerb.MOVE: 0>, ((0, 0),)), (<PathVerb.LINE: 1>, ((10, 0),))]
+    """
+
+    __slots__ = ("_verbs", "_points", "_weights", "_fill", "_last_move", "_needs_move")
+    __hash__ = None  # type: ignore[assignment]  # mutable, as skia-pathops' Path
+
+    def __init__(self, other: Any = None, fillType: Optional[int] = None) -> None:
+        self._verbs: List[PathVerb] = []
+        self._points: List[Point] = []
+        self._weights: List[Any] = []
+        self._fill = FillType.WINDING
+        self._last_move: Point = (0, 0)
+        self._needs_move = True
+        if other is not None:
+            if isinstance(other, Path):
+                self._copy_from(other)
+            else:
+                other.draw(self.getPen())
+        if fillType is not None:
+            self.fillType = fillType
+
+    def _copy_from(self, other: "Path") -> None:
+        self._verbs = list(other._verbs)
+        self._points = list(other._points)
+        self._weights = list(other._weights)
+        self._fill = other._fill
+        self._last_move = other._last_move
+        self._needs_move = other._needs_move
+
+    def copy(self) -> "Path":
+        """A copy."""
+        return Path(self)
+
+    # -- building ---------------------------------------------------------------------------
+
+    def getPen(self, glyphSet: Any = None, allow_open_paths: bool = True) -> "PathPen":
+        """A fontTools segment pen drawing into this path."""
+        return PathPen(self, glyphSet=glyphSet, allow_open_paths=allow_open_paths)
+
+    def _ensure_move(self) -> None:
+        if self._needs_move:
+            self._move(self._last_move)
+
+    def _move(self, p: Point) -> None:
+        if self._verbs and self._verbs[-1] == PathVerb.MOVE:
+            # consecutive moveTo collapse (Skia m143+): the second replaces the first
+            self._points[-1] = p
+        else:
+            self._verbs.append(PathVerb.MOVE)
+            self._points.append(p)
+        self._last_move = p
+        self._needs_move = False
+
+    def moveTo(self, x: Any, y: Any) -> None:
+        self._move((_num(x), _num(y)))
+
+    def lineTo(self, x: Any, y: Any) -> None:
+        self._ensure_move()
+        self._verbs.append(PathVerb.LINE)
+        self._points.append((_num(x), _num(y)))
+
+    def quadTo(self, x1: Any, y1: Any, x2: Any, y2: Any) -> None:
+        self._ensure_move()
+        self._verbs.append(PathVerb.QUAD)
+        self._points.append((_num(x1), _num(y1)))
+        self._points.append((_num(x2), _num(y2)))
+
+    def conicTo(self, x1: Any, y1: Any, x2: Any, y2: Any, w: Any) -> None:
+        """A conic: the rational quadratic with weights ``(1, w, 1)``, exact (skia-pathops
+        passes ``y2`` for ``y1`` here; this does not)."""
+        self._ensure_move()
+        w = _num(w)
+        if w == 1:  # Skia stores a conic of weight 1 as a quad
+            self.quadTo(x1, y1, x2, y2)
+            return
+        self._verbs.append(PathVerb.CONIC)
+        self._points.append((_num(x1), _num(y1)))
+        self._points.append((_num(x2), _num(y2)))
+        self._weights.append(w)
+
+    def cubicTo(self, x1: Any, y1: Any, x2: Any, y2: Any, x3: Any, y3: Any) -> None:
+        self._ensure_move()
+        self._verbs.append(PathVerb.CUBIC)
+        self._points.append((_num(x1), _num(y1)))
+        self._points.append((_num(x2), _num(y2)))
+        self._points.append((_num(x3), _num(y3)))
+
+    def arcTo(self, rx: Any, ry: Any, xAxisRotate: Any, largeArc: Any, sweep: Any, x: Any, y: Any) -> None:
+        """Not supported: an SVG arc is a conic whose weight is a cosine, irrational in general."""
+        raise NotImplementedError(
+            "casteljau.pathops: arcTo makes conics with irrational weights (cos of half the sweep); "
+            "give the arc as conicTo with exact weights"
+        )
+
+    def close(self) -> None:
+        if self._verbs and self._verbs[-1] != PathVerb.CLOSE:
+            self._verbs.append(PathVerb.CLOSE)
+        self._needs_move = True
+
+    def reset(self) -> None:
+        fill = self._fill
+        self.__init__()  # type: ignore[misc]
+        self._fill = fill
+
+    def rewind(self) -> None:
+        """Deprecated alias for ``reset()``."""
+        self.reset()
+
+    def add(self, verb: int, *pts: Any) -> None:
+        """Appends one verb with its points (a conic: two points and the weight)."""
+        verb = PathVerb(verb)
+        if verb == PathVerb.MOVE:
+            self.moveTo(*pts[0])
+        elif verb == PathVerb.LINE:
+            self.lineTo(*pts[0])
+        elif verb == PathVerb.QUAD:
+            self.quadTo(*pts[0], *pts[1])
+        elif verb == PathVerb.CONIC:
+            self.conicTo(*pts[0], *pts[1], pts[2])
+        elif verb == PathVerb.CUBIC:
+            self.cubicTo(*pts[0], *pts[1], *pts[2])
+        elif verb == PathVerb.CLOSE:
+            self.close()
+        else:  # pragma: no cover
+            raise UnsupportedVerbError(verb)
+
+    def addPath(self, path: "Path") -> None:
+        """Appends the contours of ``path``."""
+        w = iter(path._weights)
+        for verb, pts in path._records():
+            if verb == PathVerb.CONIC:
+                self.conicTo(*pts[0], *pts[1], next(w))
+            else:
+                self.add(verb, *pts)
+
+    # -- reading ----------------------------------------------------------------------------
+
+    def _records(self) -> Iterator[Tuple[PathVerb, Tuple[Point, ...]]]:
+        """Verbs with their own points (conics without the weight); trailing moveTo stripped."""
+        i = 0
+        n = len(self._verbs)
+        for k, verb in enumerate(self._verbs):
+            c = _POINTS_IN_VERB[verb]
+            if verb == PathVerb.MOVE and k == n - 1:
+                return
+            yield verb, tuple(self._points[i : i + c])
+            i += c
+
+    def __iter__(self) -> Iterator[Tuple[PathVerb, tuple]]:
+        w = iter(self._weights)
+        for verb, pts in self._records():
+            if verb == PathVerb.CONIC:
+                yield verb, pts + (next(w),)
+            else:
+                yield verb, pts
+
+    def __len__(self) -> int:
+        return sum(1 for v, _ in self._records() if v == PathVerb.MOVE)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Path):
+            return NotImplemented
+        return (
+            self._fill == other._fill
+            and self._verbs == other._verbs
+            and self._points == other._points
+            and self._weights == other._weights
+        )
+
+    def __ne__(self, other: object) -> bool:
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    def __repr__(self) -> str:
+        return "<casteljau.pathops.Path object at %s: %d contours>" % (hex(id(self)), len(self))
+
+    def _to_string(self, as_hex: bool = False) -> str:
+        if not self._verbs:
+            return ""
+
+        def coords_to_string(fs: Sequence[Any]) -> str:
+            if as_hex:
+                return "".join("\n    bits2float(%s),  # %g" % (hex(float2bits(float(f))), f) for f in fs) + "\n"
+            return ", ".join(str(f) for f in fs)
+
+        lines = ["path.fillType = %s" % self.fillType]
+        for verb, pts in self:
+            suffix = ""
+            if verb == PathVerb.CONIC:
+                suffix = "[%s]" % coords_to_string([pts[-1]])
+                pts = pts[:-1]
+            lines.append("path.%s(%s)%s" % (_VERB_METHODS[verb], coords_to_string(list(itertools.chain(*pts))), suffix))
+        return "\n".join(lines)
+
+    def __str__(self) -> str:
+        return self._to_string()
+
+    def dump(self, cpp: bool = False, as_hex: bool = False) -> None:
+        """Prints the path as Python code."""
+        print(self._to_string(as_hex=as_hex))
+
+    @property
+    def fillType(self) -> FillType:
+        return self._fill
+
+    @fillType.setter
+    def fillType(self, value: int) -> None:
+        self._fill = FillType(value)
+
+    @property
+    def verbs(self) -> List[PathVerb]:
+        return list(self._verbs)
+
+    @property
+    def points(self) -> List[Point]:
+        return list(self._points)
+
+    @property
+    def firstPoints(self) -> List[Point]:
+        """The first point of each contour."""
+        return [pts[0] for v, pts in self._records() if v == PathVerb.MOVE]
+
+    @property
+    def contours(self) -> Iterator["Path"]:
+        """Each contour as a ``Path``."""
+        temp = Path(fillType=self._fill)
+        w = iter(self._weights)
+        for verb, pts in self._records():
+            if verb == PathVerb.MOVE:
+                if temp._verbs:
+                    yield temp
+                    temp = Path(fillType=self._fill)
+                temp.moveTo(*pts[0])
+            elif verb == PathVerb.CLOSE:
+                temp.close()
+                yield temp
+                temp = Path(fillType=self._fill)
+            elif verb == PathVerb.CONIC:
+                temp.conicTo(*pts[0], *pts[1], next(w))
+            else:
+                temp.add(verb, *pts)
+        if temp._verbs:
+            yield temp
+
+    @property
+    def segments(self) -> Iterator[Tuple[str, tuple]]:
+        """The path as fontTools segment-pen calls: TrueType quadratic splines joined where the
+        on-curve point is exactly the midpoint, ``endPath`` for open contours, and an
+        on-curve-less closed spline as ``qCurveTo(..., None)``."""
+        result: List[Tuple[str, tuple]] = []
+        it = itertools.chain([None], _segment_pen_calls(self), [None])
+        for previous, current, next_ in _triplewise(it):
+            if (
+                previous is not None
+                and previous[0] == "moveTo"
+                and current[0] == "qCurveTo"
+                and next_ is not None
+                and next_[0] == "closePath"
+                and _same(previous[1][0], current[1][-1])
+                and len(current[1]) > 2
+                and _is_middle(current[1][-2], current[1][-1], current[1][0])
+            ):
+                del result[-1]
+                result.append((current[0], current[1][:-1] + (None,)))
+                continue
+            result.append(current)  # type: ignore[arg-type]
+        yield from result
+
+    def draw(self, pen: Any) -> None:
+        """Draws the path with a fontTools segment pen."""
+        for method, pts in self.segments:
+            getattr(pen, method)(*pts)
+
+    # -- geometry ---------------------------------------------------------------------------
+
+    @property
+    def area(self) -> Fraction:
+        """The absolute value of the signed area (open contours closed), exact."""
+        return abs(_signed_area(self))
+
+    @property
+    def clockwise(self) -> bool:
+        """Whether the signed area is negative (y up: clockwise)."""
+        return _signed_area(self) < 0
+
+    @clockwise.setter
+    def clockwise(self, value: bool) -> None:
+        if self.clockwise != value:
+            self.reverse()
+
+    @property
+    def bounds(self) -> Tuple[Any, Any, Any, Any]:
+        """The exact tight bounds ``(xMin, yMin, xMax, yMax)``: curve extrema included, each a
+        number as stored, a ``Fraction`` or an ``Algebraic``."""
+        from ._exact import tight_bounds
+
+        return tight_bounds(self)
+
+    @property
+    def controlPointBounds(self) -> Tuple[Any, Any, Any, Any]:
+        """The bounds of every stored point."""
+        pts = [p for _, ps in self._records() for p in ps]
+        if not pts:
+            return (0, 0, 0, 0)
+        xs = [p[0] for p in pts]
+        ys = [p[1] for p in pts]
+        return (min(xs), min(ys), max(xs), max(ys))
+
+    @property
+    def isConvex(self) -> bool:
+        """Whether the path is one convex contour of lines (exact turns; curves are decided by
+        their control polygons, as Skia does)."""
+        from ._exact import is_convex
+
+        return is_convex(self)
+
+    def contains(self, pt: Tuple[Any, Any]) -> bool:
+        """Whether the point is inside the path's fill (exact; a point on the boundary counts as
+        inside, as Skia's ``contains``)."""
+        from ._exact import contains
+
+        return contains(self, pt)
+
+    def reverse(self) -> None:
+        """Reverses every contour in place (the last point becomes the first)."""
+        out = Path(fillType=self._fill)
+        for contour in self.contours:
+            _reverse_contour(contour)
+            out.addPath(contour)
+        self._copy_from(out)
+        self._fill = out._fill
+
+    def simplify(self, fix_winding: bool = True, keep_starting_points: bool = True, clockwise: bool = False) -> None:
+        """Removes overlaps in place (the exact region; see ``casteljau.pathops.simplify``)."""
+        from ._exact import simplify
+
+        self._copy_from(
+            simplify(self, fix_winding=fix_winding, keep_starting_points=keep_starting_points, clockwise=clockwise)
+        )
+
+    def convertConicsToQuads(self, tolerance: float = 0.25) -> None:
+        """Not supported exactly: a conic is not a sequence of quadratics."""
+        if PathVerb.CONIC not in self._verbs:
+            return
+        raise NotImplementedError(
+            "casteljau.pathops: a conic is not a union of quadratic Béziers; convertConicsToQuads is "
+            "Skia's float approximation. The exact operations take conics as they are."
+        )
+
+    def stroke(self, width: float, cap: int, join: int, miter_limit: float, dash_array: Any = None, dash_offset: float = 0) -> None:
+        """Not supported: stroking is Skia's float stroker, outside casteljau's exact scope."""
+        raise NotImplementedError(
+            "casteljau.pathops: stroking (Skia's float stroker) is out of scope; offset curves of "
+            "Béziers are not Béziers"
+        )
+
+    def transform(
+        self,
+        scaleX: Any = 1,
+        skewY: Any = 0,
+        skewX: Any = 0,
+        scaleY: Any = 1,
+        translateX: Any = 0,
+        translateY: Any = 0,
+        perspectiveX: Any = 0,
+        perspectiveY: Any = 0,
+        perspectiveBias: Any = 1,
+    ) -> "Path":
+        """The path mapped by the affine matrix ``[a b c d e f]`` (SVG order), exactly: the
+        numbers given (floats as their binary64 values) with no rounding. Perspective is not
+        supported (it would turn segments into rational curves)."""
+        if perspectiveX != 0 or perspectiveY != 0 or perspectiveBias != 1:
+            raise NotImplementedError("casteljau.pathops: perspective transforms are not supported")
+        a, b, c, d, e, f = (_q(_num(v)) for v in (scaleX, skewY, skewX, scaleY, translateX, translateY))
+        # ints and Fractions compute exactly as they are; floats become their exact Fractions
+        if a == 1 and d == 1 and b == 0 and c == 0:
+
+            def m(p: Point) -> Point:
+                return (_q(p[0]) + e, _q(p[1]) + f)
+
+        else:
+
+            def m(p: Point) -> Point:
+                x, y = _q(p[0]), _q(p[1])
+                return (a * x + c * y + e, b * x + d * y + f)
+
+        out = Path(self)
+        out._points = [m(p) for p in self._points]
+        out._last_move = m(self._last_move)
+        return out
+
+
+def _triplewise(iterable: Any) -> Iterator[Tuple[Any, Any, Any]]:
+    a, b, c = itertools.tee(iterable, 3)
+    next(b, None)
+    next(c, None)
+    next(c, None)
+    return zip(a, b, c)
+
+
+def _segment_pen_calls(path: Path) -> Iterator[Tuple[str, tuple]]:
+    """skia-pathops' SegmentPenIterator, with exact comparisons."""
+    records = list(path._records())
+    n = len(records)
+    closed = True
+    move_pt: Point = (0, 0)
+    k = 0
+    while k < n:
+        verb, pts = records[k]
+        nxt = records[k + 1][0] if k + 1 < n else None
+        if verb == PathVerb.MOVE:
+            if not closed:
+                yield ("endPath", ())
+            move_pt = pts[0]
+            closed = False
+            yield ("moveTo", (pts[0],))
+        elif verb == PathVerb.CLOSE:
+            closed = True
+            yield ("closePath", ())
+        elif verb == PathVerb.LINE:
+            yield ("lineTo", (pts[0],))
+        elif verb == PathVerb.CUBIC:
+            yield ("curveTo", pts)
+        elif verb == PathVerb.QUAD:
+            # join a TrueType spline: the next quad continues it when this quad's on-curve
+            # point is exactly the midpoint of the two off-curve points
+            points = [pts[0]]
+            on = pts[1]
+            while k + 1 < n and records[k + 1][0] == PathVerb.QUAD and _is_middle(pts[0], on, records[k + 1][1][0]):
+                k += 1
+                pts = records[k][1]
+                points.append(pts[0])
+                on = pts[1]
+            points.append(on)
+            yield ("qCurveTo", tuple(points))
+        elif verb == PathVerb.CONIC:
+            raise UnsupportedVerbError("CONIC")
+        k += 1
+    if not closed:
+        yield ("endPath", ())
+
+
+def _reverse_contour(path: Path) -> None:
+    """Reverses a one-contour path in place (skia-pathops' reverse_contour; conics too)."""
+    records = list(path._records())
+    if not records:
+        return
+    weights = list(path._weights)
+    out = Path(fillType=path._fill)
+    # the start point of each record
+    starts: List[Point] = []
+    cur: Point = records[0][1][0]
+    for verb, pts in records:
+        starts.append(cur)
+        if pts:
+            cur = pts[-1]
+    out.moveTo(*path._points[-1])
+    closed = False
+    wi = len(weights)
+    for (verb, pts), start in zip(reversed(records[1:]), reversed(starts[1:])):
+        if verb == PathVerb.LINE:
+            out.lineTo(*start)
+        elif verb == PathVerb.QUAD:
+            out.quadTo(*pts[0], *start)
+        elif verb == PathVerb.CONIC:
+            wi -= 1
+            out.conicTo(*pts[0], *start, weights[wi])
+        elif verb == PathVerb.CUBIC:
+            out.cubicTo(*pts[1], *pts[0], *start)
+        elif verb == PathVerb.CLOSE:
+            closed = True
+    if closed:
+        out.close()
+    path._copy_from(out)
+
+
+def _signed_area(path: Path) -> Fraction:
+    """fontTools' AreaPen formula, exactly (open contours closed)."""
+    value = Fraction(0)
+    p0: Point = (0, 0)
+    start: Point = (0, 0)
+    need_close = False
+
+    def line(a: Point, b: Point) -> Fraction:
+        return -(Fraction(b[0]) - Fraction(a[0])) * (Fraction(b[1]) + Fraction(a[1])) / 2
+
+    for verb, pts in path._records():
+        if verb == PathVerb.MOVE:
+            if need_close:
+                value += line(p0, start)
+            p0 = start = pts[0]
+            need_close = True
+        elif verb == PathVerb.LINE:
+            value += line(p0, pts[0])
+            p0 = pts[0]
+        elif verb == PathVerb.QUAD:
+            x0, y0 = Fraction(p0[0]), Fraction(p0[1])
+            x1, y1 = Fraction(pts[0][0]) - x0, Fraction(pts[0][1]) - y0
+            x2, y2 = Fraction(pts[1][0]) - x0, Fraction(pts[1][1]) - y0
+            value -= (x2 * y1 - x1 * y2) / 3
+            value += line(p0, pts[1])
+            p0 = pts[1]
+        elif verb == PathVerb.CUBIC:
+            x0, y0 = Fraction(p0[0]), Fraction(p0[1])
+            x1, y1 = Fraction(pts[0][0]) - x0, Fraction(pts[0][1]) - y0
+            x2, y2 = Fraction(pts[1][0]) - x0, Fraction(pts[1][1]) - y0
+            x3, y3 = Fraction(pts[2][0]) - x0, Fraction(pts[2][1]) - y0
+            value -= (x1 * (-y2 - y3) + x2 * (y1 - 2 * y3) + x3 * (y1 + 2 * y2)) * Fraction(3, 20)
+            value += line(p0, pts[2])
+            p0 = pts[2]
+        elif verb == PathVerb.CONIC:
+            raise UnsupportedVerbError("CONIC")
+        elif verb == PathVerb.CLOSE:
+            value += line(p0, start)
+            p0 = start = (0, 0)
+            need_close = False
+    if need_close:
+        value += line(p0, start)
+    return value
+
+
+class PathPen:
+    """A fontTools segment pen drawing into a ``Path`` (skia-pathops' ``PathPen``), with the
+    implied on-curve points of TrueType splines at their exact midpoints."""
+
+    def __init__(self, path: Path, glyphSet: Any = None, allow_open_paths: bool = True) -> None:
+        self.path = path
+        self.glyphSet = glyphSet
+        self.allow_open_paths = allow_open_paths
+
+    def moveTo(self, pt: Sequence[Any]) -> None:
+        self.path.moveTo(pt[0], pt[1])
+
+    def lineTo(self, pt: Sequence[Any]) -> None:
+        x, y = pt
+        if type(x) is int and type(y) is int and not self.path._needs_move:
+            self.path._verbs.append(PathVerb.LINE)
+            self.path._points.append((x, y))
+            return
+        self.path.lineTo(x, y)
+
+    def curveTo(self, *points: Sequence[Any]) -> None:
+        n = len(points) - 1
+        if n == 2:
+            p1, p2, p3 = points
+            self.path.cubicTo(p1[0], p1[1], p2[0], p2[1], p3[0], p3[1])
+        elif n == 1:
+            p1, p2 = points
+            self.path.quadTo(p1[0], p1[1], p2[0], p2[1])
+        elif n == 0:
+            self.path.lineTo(points[0][0], points[0][1])
+        else:
+            raise NumberOfPointsError("curveTo requires between 1 and 3 points; got %d" % len(points))
+
+    def qCurveTo(self, *points: Any) -> None:
+        n = len(points) - 1
+        if n > 0 and points[-1] is not None and all(type(c) is int for p in points for c in p):
+            # integer points (TrueType): the implied on-curve points straight into the path
+            path = self.path
+            path._ensure_move()
+            verbs, pts = path._verbs, path._points
+            for i in range(n - 1):
+                (x, y), (nx, ny) = points[i], points[i + 1]
+                sx, sy = x + nx, y + ny
+                verbs.append(PathVerb.QUAD)
+                pts.append((x, y))
+                pts.append((sx >> 1 if not sx & 1 else _halves(sx), sy >> 1 if not sy & 1 else _halves(sy)))
+            verbs.append(PathVerb.QUAD)
+            pts.append(tuple(points[-2]))
+            pts.append(tuple(points[-1]))
+            return
+        if n > 0:
+            oncurveless = points[-1] is None
+            pts = tuple(_pt(p) for p in points[:-1]) + ((None,) if oncurveless else (_pt(points[-1]),))
+            if oncurveless:
+                implied = _mid(pts[-2], pts[0])
+                self.moveTo(implied)
+                pts = pts[:-1] + (implied,)
+            for p1, p2 in decompose_quadratic_segment(pts):
+                self.path.quadTo(p1[0], p1[1], p2[0], p2[1])
+            if oncurveless:
+                self.closePath()
+        elif n == 0:
+            self.lineTo(points[0])
+        else:
+            raise NumberOfPointsError("qCurveTo requires at least 1 point; got 0")
+
+    def closePath(self) -> None:
+        self.path.close()
+
+    def endPath(self) -> None:
+        if not self.allow_open_paths:
+            raise OpenPathError()
+
+    def addComponent(self, glyphName: str, transformation: Sequence[Any]) -> None:
+        if self.glyphSet is None:
+            raise TypeError("Missing required glyphSet; can't decompose components")
+        base = self.glyphSet[glyphName]
+        base_path = Path()
+        base.draw(base_path.getPen(glyphSet=self.glyphSet))
+        self.path.addPath(base_path.transform(*transformation))
+
+    def addVarComponent(self, glyphName: str, transformation: Any, location: Any) -> None:
+        raise TypeError("variable components are not supported")
+
