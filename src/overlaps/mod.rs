@@ -10,8 +10,6 @@
 //! * [`write_font`] (`glyf.rs`, `cff.rs`): the font file rewritten from the decisions
 //!   (TrueType `glyf`/`loca`/`hmtx`/`head`/`maxp`; CFF charstrings), everything else copied.
 //!
-//! SKELETON: the interface both halves build on. Bodies are filled in on their branches.
-//!
 //! The per-glyph half, file by file: `screen` (the cheap exact decision for glyphs whose
 //! contours meet nowhere), `glyph` (the decision, the rewrite and the repair search), `region`
 //! (the exact non-zero region as contours of input pieces), `round` (the rounding plan and the

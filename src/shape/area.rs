@@ -10,7 +10,7 @@
 //! area's size still straddling is refused as, never guessed).
 
 use super::arrangement::Arrangement;
-use super::boolean::Run;
+use super::run::Run;
 use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::num::scalar::{rat, ratio_to_f64};

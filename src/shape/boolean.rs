@@ -21,6 +21,7 @@
 use super::area::{contour_area, total_area};
 use super::arrangement::{Arrangement, HalfEdge, InputPiece};
 use super::render::svg_path;
+use super::run::{Run, runs};
 use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::num::point::Point2;
@@ -395,60 +396,6 @@ fn exact_boundary(arr: &Arrangement, contours: &[Vec<Run>], flip: bool) -> Exact
         cycles.push(cycle);
     }
     (segs, cycles)
-}
-
-/// A maximal run of boundary edges on one segment: parameters `from → to`.
-#[derive(Clone, Debug)]
-pub(super) struct Run {
-    pub(super) seg: usize,
-    pub(super) from: RealAlgebraic,
-    pub(super) to: RealAlgebraic,
-    /// The index of its first half-edge in the cycle.
-    first: usize,
-    /// The arrangement's vertex it starts at.
-    start: usize,
-}
-
-impl Run {
-    fn key(&self) -> (usize, RealAlgebraic) {
-        (self.seg, self.from.clone())
-    }
-    fn piece(&self, arr: &Arrangement) -> InputPiece {
-        let forward = self.from <= self.to;
-        let (lo, hi) = if forward { (&self.from, &self.to) } else { (&self.to, &self.from) };
-        arr.input_piece(self.seg, lo, hi, forward)
-    }
-}
-
-/// The cycle's edges (each by its first carrier) joined into runs on one segment.
-fn runs(arr: &Arrangement, cycle: &[HalfEdge]) -> Vec<Run> {
-    let mut out: Vec<Run> = vec![];
-    for (i, h) in cycle.iter().enumerate() {
-        let e = &arr.edges[h.edge];
-        let (k, lo, hi, fwd) = &e.carriers[0];
-        let forward = *fwd == h.forward;
-        let (from, to) = if forward { (lo.clone(), hi.clone()) } else { (hi.clone(), lo.clone()) };
-        if let Some(last) = out.last_mut()
-            && last.seg == *k
-            && last.to == from
-            && ((last.from < last.to) == forward)
-        {
-            last.to = to;
-            continue;
-        }
-        let start = if h.forward { e.from } else { e.to };
-        out.push(Run { seg: *k, from, to, first: i, start });
-    }
-    if out.len() > 1 {
-        let (first, last) = (&out[0], &out[out.len() - 1]);
-        if first.seg == last.seg && last.to == first.from && ((first.from < first.to) == (last.from < last.to)) {
-            let last = out.pop().expect("two runs");
-            out[0].from = last.from;
-            out[0].first = last.first;
-            out[0].start = last.start;
-        }
-    }
-    out
 }
 
 /// The union of the boxes of a cycle's segments.

@@ -32,6 +32,7 @@ mod hermite;
 pub(crate) mod pairs;
 mod ray;
 mod render;
+mod run;
 pub(crate) mod segment;
 
 pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, Vertex};

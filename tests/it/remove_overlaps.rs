@@ -1,10 +1,7 @@
 //! Overlap removal that writes the font: `casteljau::overlaps::write_font` with hand-made
 //! decisions (what is written, what stays byte-identical, the tables it recomputes), read back
 //! with casteljau's reader, `read-fonts` and `skrifa`; and the `remove-overlaps` command.
-//!
-//! The tests marked `#[ignore = "needs decide_glyph (branch glyphcert)"]` run the command end
-//! to end and need the real per-glyph decision; everything else tests the writer and the
-//! command around it.
+//! The last tests run the command end to end with the real per-glyph decision.
 
 use crate::common::{TempDir, run, stderr, stdout};
 use crate::font_builder::{self, CffGlyph, Cmd, Line, Move, TtPoint, cff_expected, off, on, tt_expected};
@@ -760,7 +757,6 @@ fn cli_a_glyph_over_the_budget_is_left_unchanged_and_fails_the_run() {
 }
 
 #[test]
-#[ignore = "needs decide_glyph (branch glyphcert)"]
 fn cli_removes_overlaps_from_a_truetype_font_end_to_end() {
     let dir = TempDir::new("ro-e2e-tt");
     let font = dir.join("in.ttf");
@@ -804,7 +800,6 @@ fn cli_removes_overlaps_from_a_truetype_font_end_to_end() {
 }
 
 #[test]
-#[ignore = "needs decide_glyph (branch glyphcert)"]
 fn cli_removes_overlaps_from_a_cff_font_end_to_end() {
     let dir = TempDir::new("ro-e2e-cff");
     let font = dir.join("in.otf");
