@@ -14,22 +14,22 @@ use std::io::Write;
 use std::time::{Duration, Instant};
 
 /// xorshift64*: deterministic, seedable, no dependency.
-struct Rng(u64);
+pub(crate) struct Rng(pub(crate) u64);
 
 impl Rng {
-    fn next(&mut self) -> u64 {
+    pub(crate) fn next(&mut self) -> u64 {
         self.0 ^= self.0 >> 12;
         self.0 ^= self.0 << 25;
         self.0 ^= self.0 >> 27;
         self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
-    fn below(&mut self, n: usize) -> usize {
+    pub(crate) fn below(&mut self, n: usize) -> usize {
         (self.next() % n as u64) as usize
     }
-    fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
+    pub(crate) fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
         xs[self.below(xs.len())]
     }
-    fn chance(&mut self, percent: usize) -> bool {
+    pub(crate) fn chance(&mut self, percent: usize) -> bool {
         self.below(100) < percent
     }
 }
@@ -270,7 +270,7 @@ fn claim_file(r: &mut Rng) -> (Vec<String>, Option<String>) {
 }
 
 /// Runs one case with a time cap; returns a description of what broke the promise, if anything.
-fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> {
+pub(crate) fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Option<String> {
     let mut child = crate::common::spawn(args);
     let mut pipe = child.stdin.take().expect("stdin");
     let input = stdin.unwrap_or("").to_string();

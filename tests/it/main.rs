@@ -30,6 +30,8 @@ mod formats;
 #[cfg(feature = "cli")]
 mod fuzz;
 #[cfg(feature = "cli")]
+mod fuzz_formats;
+#[cfg(feature = "cli")]
 mod golden;
 mod identity_8;
 #[cfg(feature = "cli")]
