@@ -48,6 +48,8 @@ mod properties;
 mod rational_bezier;
 mod rational_cubic;
 #[cfg(feature = "cli")]
+mod regions;
+#[cfg(feature = "cli")]
 mod robustness;
 mod seed_examples;
 mod shape_properties;
