@@ -208,11 +208,12 @@ fn box_of(ps: &[BallPoint]) -> [f64; 4] {
     b
 }
 
-/// A lower bound of the distance from `q` to the box `b`.
+/// A lower bound of the distance from `q` to the box `b` (the larger of the axis gaps: a search
+/// filter).
 fn box_distance(b: &[f64; 4], q: [f64; 2]) -> f64 {
     let dx = (b[0] - q[0]).max(q[0] - b[2]).max(0.0);
     let dy = (b[1] - q[1]).max(q[1] - b[3]).max(0.0);
-    dx.hypot(dy) * (1.0 - 1e-12)
+    dx.max(dy) * (1.0 - 1e-12)
 }
 
 /// One run of the exact boundary, with binary64 parameters just outside (`lo_out ≤ lo`,
