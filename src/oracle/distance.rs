@@ -258,6 +258,9 @@ impl Pos {
     }
 }
 
+/// A stretch of a run that `φ(∂F)` runs along: the run, from, to.
+type Trav = (usize, Pos, Pos);
+
 /// A part of a float segment matched with a piece of a run.
 #[derive(Clone, Debug)]
 struct Part {
@@ -422,10 +425,10 @@ impl<'a> Decider<'a> {
         // the net counts, and the runs they leave uncovered
         let counts: Vec<Option<i64>> = (0..self.runs.len()).map(|i| self.count(i)).collect();
         for (i, c) in counts.iter().enumerate() {
-            if c.is_none_or(|c| c == 0) {
-                if let Some(o) = self.directed_exact(i)? {
-                    return Ok(o);
-                }
+            if c.is_none_or(|c| c == 0)
+                && let Some(o) = self.directed_exact(i)?
+            {
+                return Ok(o);
             }
         }
         let sign = counts.first().copied().flatten().unwrap_or(1);
@@ -452,7 +455,7 @@ impl<'a> Decider<'a> {
         }
         let um = u0 + (u1 - u0) / 2.0;
         // a point far from ∂E ends the matching; looked for at every third level (a search)
-        if depth % 3 == 0
+        if depth.is_multiple_of(3)
             && let Some(o) = self.float_point_far(j, um)?
         {
             return Ok(Some(o));
@@ -676,7 +679,7 @@ impl<'a> Decider<'a> {
             return None;
         }
         let pm = [p[0].m, p[1].m];
-        let mut edges: HashMap<usize, Vec<(usize, (usize, Pos, Pos), f64)>> = HashMap::new();
+        let mut edges: HashMap<usize, Vec<(usize, Trav, f64)>> = HashMap::new();
         for i in 0..self.runs.len() {
             let e = &self.runs[i];
             if box_distance(&e.bbox, pm) > self.tol_f {
@@ -687,7 +690,7 @@ impl<'a> Decider<'a> {
                 edges.entry(e.hi_vertex).or_default().push((e.lo_vertex, (i, Pos::Hi, Pos::Lo), d));
             }
         }
-        let mut parent: HashMap<usize, Option<(usize, (usize, Pos, Pos), f64)>> = HashMap::new();
+        let mut parent: HashMap<usize, Option<(usize, Trav, f64)>> = HashMap::new();
         let mut queue = VecDeque::new();
         let mut first: HashMap<usize, ((usize, Pos, Pos), f64)> = HashMap::new();
         for (v, t, d) in starts {

@@ -382,14 +382,6 @@ pub fn quadratic_roots<K: Radical>(c0: &K, c1: &K, c2: &K) -> Vec<(QuadraticExt<
 #[cfg(test)]
 mod doc_examples {
     #[test]
-    fn reversion_example() {
-        use crate::{poly::Poly, rat};
-        // u = t + t²: t = u − u² + 2u³ − 5u⁴ + … (Catalan numbers)
-        let p = Poly::new(vec![rat(0), rat(1), rat(1)]);
-        assert_eq!(p.reversion(4).to_string(), "t - t^2 + 2t^3 - 5t^4");
-    }
-
-    #[test]
     fn text_descending_example() {
         use crate::{poly::Poly, rat};
         let p = Poly::new(vec![rat(-2), rat(0), rat(3)]);
