@@ -80,21 +80,24 @@ fn enclose(t: &RealAlgebraic) -> (f64, f64) {
     }
 }
 
-/// A curve with certified evaluation: a segment, its control points as balls when polynomial.
+/// A curve with certified evaluation: a segment, its control points as balls when polynomial
+/// (and their midpoints, for searches).
 #[derive(Clone)]
 struct Curve {
     seg: Arc<Seg>,
     pts: Option<Vec<BallPoint>>,
+    mids: Vec<[f64; 2]>,
 }
 
 impl Curve {
     fn new(seg: Arc<Seg>) -> Self {
-        let pts = if seg.polynomial {
+        let pts: Option<Vec<BallPoint>> = if seg.polynomial {
             seg.hull.as_ref().map(|ps| ps.iter().map(|p| [Ball::of(&p.x), Ball::of(&p.y)]).collect())
         } else {
             None
         };
-        Curve { seg, pts }
+        let mids = pts.as_ref().map(|p| mids(p)).unwrap_or_default();
+        Curve { seg, pts, mids }
     }
 
     /// A certified point at `t`.
@@ -110,18 +113,68 @@ impl Curve {
 
     /// The point at `t`, binary64 (for searches).
     fn eval(&self, t: f64) -> [f64; 2] {
-        match &self.pts {
-            Some(p) => {
-                let c = BezierCurve::new(mids(p).iter().map(|q| Point::new(q.to_vec())).collect())
-                    .expect("a control point");
-                let q = c.eval(&t);
-                [q.coords[0], q.coords[1]]
+        if self.pts.is_some() {
+            let mut q = [[0.0; 2]; 8];
+            let n = self.mids.len();
+            if n <= 8 {
+                q[..n].copy_from_slice(&self.mids);
+                for level in 1..n {
+                    for i in 0..n - level {
+                        q[i] = [q[i][0] + t * (q[i + 1][0] - q[i][0]), q[i][1] + t * (q[i + 1][1] - q[i][1])];
+                    }
+                }
+                return q[0];
             }
-            None => {
-                let w = self.seg.w().eval_f64(t);
-                [self.seg.x().eval_f64(t) / w, self.seg.y().eval_f64(t) / w]
+            let c =
+                BezierCurve::new(self.mids.iter().map(|q| Point::new(q.to_vec())).collect()).expect("a control point");
+            let q = c.eval(&t);
+            return [q.coords[0], q.coords[1]];
+        }
+        let w = self.seg.w().eval_f64(t);
+        [self.seg.x().eval_f64(t) / w, self.seg.y().eval_f64(t) / w]
+    }
+
+    /// The parameter in `[lo, hi]` of the point nearest to `q` found by 17 samples and a golden
+    /// section search around the best (a search: nothing is certified by it; robust where the
+    /// curve is stationary, as at a control point doubling an end).
+    fn nearest(&self, q: [f64; 2], lo: f64, hi: f64) -> f64 {
+        let f = |t: f64| {
+            let p = self.eval(t);
+            (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
+        };
+        let mut best = (f64::INFINITY, lo);
+        for k in 0..=16 {
+            let t = lo + (hi - lo) * k as f64 / 16.0;
+            let d = f(t);
+            if d < best.0 {
+                best = (d, t);
             }
         }
+        let step = (hi - lo) / 16.0;
+        let (mut a, mut b) = ((best.1 - step).max(lo), (best.1 + step).min(hi));
+        const G: f64 = 0.618_033_988_749_894_8;
+        let (mut c, mut d) = (b - G * (b - a), a + G * (b - a));
+        let (mut fc, mut fd) = (f(c), f(d));
+        for _ in 0..60 {
+            if fc < fd {
+                b = d;
+                d = c;
+                fd = fc;
+                c = b - G * (b - a);
+                fc = f(c);
+            } else {
+                a = c;
+                c = d;
+                fc = fd;
+                d = a + G * (b - a);
+                fd = f(d);
+            }
+            if b - a <= 4.0 * f64::EPSILON * b.abs().max(1e-300) {
+                break;
+            }
+        }
+        let t = if fc < fd { c } else { d };
+        if f(t) <= best.0 { t } else { best.1 }
     }
 
     /// Control points whose hull holds the curve on `[a, b]` (`None`: a rational piece whose
@@ -142,39 +195,6 @@ impl Curve {
                 .collect(),
         )
     }
-
-    /// The parameter in `[lo, hi]` of the point nearest to `q` found by 33 samples and Newton
-    /// steps on the squared distance (a search: nothing is certified by it).
-    fn nearest(&self, q: [f64; 2], lo: f64, hi: f64) -> f64 {
-        let f = |t: f64| {
-            let p = self.eval(t);
-            (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
-        };
-        let mut best = (f64::INFINITY, lo);
-        for k in 0..=32 {
-            let t = lo + (hi - lo) * k as f64 / 32.0;
-            let d = f(t);
-            if d < best.0 {
-                best = (d, t);
-            }
-        }
-        let mut t = best.1;
-        for _ in 0..20 {
-            let h = 1e-6 * (hi - lo).max(1e-12);
-            let (f0, fp, fm) = (f(t), f(t + h), f(t - h));
-            let (d1, d2) = ((fp - fm) / (2.0 * h), (fp - 2.0 * f0 + fm) / (h * h));
-            if d2 <= 0.0 || !d1.is_finite() {
-                break;
-            }
-            let next = (t - d1 / d2).clamp(lo, hi);
-            let done = (next - t).abs() < 1e-16;
-            t = next;
-            if done {
-                break;
-            }
-        }
-        if f(t) <= best.0 { t } else { best.1 }
-    }
 }
 
 fn box_of(ps: &[BallPoint]) -> [f64; 4] {
@@ -188,11 +208,12 @@ fn box_of(ps: &[BallPoint]) -> [f64; 4] {
     b
 }
 
-/// A lower bound of the distance from `q` to the box `b`.
+/// A lower bound of the distance from `q` to the box `b` (the larger of the axis gaps: a search
+/// filter).
 fn box_distance(b: &[f64; 4], q: [f64; 2]) -> f64 {
     let dx = (b[0] - q[0]).max(q[0] - b[2]).max(0.0);
     let dy = (b[1] - q[1]).max(q[1] - b[3]).max(0.0);
-    dx.hypot(dy) * (1.0 - 1e-12)
+    dx.max(dy) * (1.0 - 1e-12)
 }
 
 /// One run of the exact boundary, with binary64 parameters just outside (`lo_out ≤ lo`,
@@ -237,6 +258,9 @@ impl Pos {
     }
 }
 
+/// A stretch of a run that `φ(∂F)` runs along: the run, from, to.
+type Trav = (usize, Pos, Pos);
+
 /// A part of a float segment matched with a piece of a run.
 #[derive(Clone, Debug)]
 struct Part {
@@ -271,6 +295,10 @@ pub(super) struct Decider<'a> {
     /// Per run, the places `φ(∂F)` runs along it.
     travs: Vec<Vec<(Pos, Pos)>>,
     bound: f64,
+    /// The run the last matched part followed.
+    hint: Option<usize>,
+    /// The exact vertices (the runs' ends, just inside), binary64.
+    vertices: Vec<[f64; 2]>,
 }
 
 impl<'a> Decider<'a> {
@@ -328,6 +356,11 @@ impl<'a> Decider<'a> {
             }
         }
         let travs = vec![vec![]; runs.len()];
+        let vertices = runs
+            .iter()
+            .flat_map(|e: &Run| [e.lo_in, e.hi_in].map(|t| e.curve.eval(t.clamp(0.0, 1.0))))
+            .filter(|v| v[0].is_finite() && v[1].is_finite())
+            .collect();
         Ok(Decider {
             runs,
             floats,
@@ -339,6 +372,8 @@ impl<'a> Decider<'a> {
             budget,
             travs,
             bound: 0.0,
+            hint: None,
+            vertices,
         })
     }
 
@@ -390,10 +425,10 @@ impl<'a> Decider<'a> {
         // the net counts, and the runs they leave uncovered
         let counts: Vec<Option<i64>> = (0..self.runs.len()).map(|i| self.count(i)).collect();
         for (i, c) in counts.iter().enumerate() {
-            if c.is_none_or(|c| c == 0) {
-                if let Some(o) = self.directed_exact(i)? {
-                    return Ok(o);
-                }
+            if c.is_none_or(|c| c == 0)
+                && let Some(o) = self.directed_exact(i)?
+            {
+                return Ok(o);
             }
         }
         let sign = counts.first().copied().flatten().unwrap_or(1);
@@ -409,17 +444,27 @@ impl<'a> Decider<'a> {
     /// Matches `[u0, u1]` of float segment `j`, cutting it until every part matches, or finds
     /// a point of it farther than `tol` from `∂E`.
     fn match_range(&mut self, j: usize, u0: f64, u1: f64, out: &mut Vec<Part>) -> Result<Option<Outcome>> {
+        self.match_at(j, u0, u1, out, 0)
+    }
+
+    fn match_at(&mut self, j: usize, u0: f64, u1: f64, out: &mut Vec<Part>, depth: usize) -> Result<Option<Outcome>> {
         self.charge(UNITS * (1 + self.runs.len() / 8) as f64)?;
         if let Some(p) = self.try_match(j, u0, u1) {
             out.push(p);
             return Ok(None);
         }
         let um = u0 + (u1 - u0) / 2.0;
-        if let Some(o) = self.float_point_far(j, um)? {
+        // a point far from ∂E ends the matching; looked for at every third level (a search)
+        if depth.is_multiple_of(3)
+            && let Some(o) = self.float_point_far(j, um)?
+        {
             return Ok(Some(o));
         }
         let cut = self.vertex_cut(j, u0, u1).unwrap_or(um);
         if !(cut > u0 && cut < u1) {
+            if let Some(o) = self.float_point_far(j, um)? {
+                return Ok(Some(o));
+            }
             let p = self.floats[j].curve.eval(u0);
             return Err(Error::InvalidArgument {
                 message: format!(
@@ -429,10 +474,10 @@ impl<'a> Decider<'a> {
                 ),
             });
         }
-        if let Some(o) = self.match_range(j, u0, cut, out)? {
+        if let Some(o) = self.match_at(j, u0, cut, out, depth + 1)? {
             return Ok(Some(o));
         }
-        self.match_range(j, cut, u1, out)
+        self.match_at(j, cut, u1, out, depth + 1)
     }
 
     /// The run piece nearest to part `[u0, u1]` of float segment `j` when their control points
@@ -441,7 +486,13 @@ impl<'a> Decider<'a> {
         let p = sub_points(self.floats[j].curve.pts.as_ref()?, u0, u1);
         let (p0, p1) = ([p[0][0].m, p[0][1].m], [p[p.len() - 1][0].m, p[p.len() - 1][1].m]);
         let mut best: Option<(f64, usize, f64, f64)> = None;
-        for (i, e) in self.runs.iter().enumerate() {
+        // the run the last part matched first; the first piece within tol is a proof
+        let order = self.hint.into_iter().chain((0..self.runs.len()).filter(|&i| Some(i) != self.hint));
+        for i in order {
+            if best.is_some_and(|b| b.0 <= self.tol_f) {
+                break;
+            }
+            let e = &self.runs[i];
             let Some(q) = &e.curve.pts else { continue };
             let slack = best.map_or(self.tol_f, |b| b.0.min(self.tol_f));
             if box_distance(&e.bbox, p0) > slack || box_distance(&e.bbox, p1) > slack || e.lo_in >= e.hi_in {
@@ -481,6 +532,7 @@ impl<'a> Decider<'a> {
         }
         let (d, run, a, b) = best.filter(|b| b.0 <= self.tol_f)?;
         self.bound = self.bound.max(d);
+        self.hint = Some(run);
         Some(Part { seg: j, u1, run, a, b })
     }
 
@@ -488,27 +540,22 @@ impl<'a> Decider<'a> {
     /// `2·tol`, the one nearest to the middle.
     fn vertex_cut(&self, j: usize, u0: f64, u1: f64) -> Option<f64> {
         let f = &self.floats[j].curve;
+        let part = box_of(&sub_points(f.pts.as_ref()?, u0, u1));
         let margin = (u1 - u0) * 1e-6;
         let mid = u0 + (u1 - u0) / 2.0;
         let mut best: Option<f64> = None;
-        for e in &self.runs {
-            for t in [e.lo_in, e.hi_in] {
-                if !(t.is_finite() && t >= 0.0 && t <= 1.0) {
-                    continue;
-                }
-                let v = e.curve.eval(t);
-                if box_distance(&self.floats[j].bbox, v) > 2.0 * self.tol_f {
-                    continue;
-                }
-                let u = f.nearest(v, u0, u1);
-                let q = f.eval(u);
-                if (q[0] - v[0]).hypot(q[1] - v[1]) <= 2.0 * self.tol_f + 1e-300
-                    && u > u0 + margin
-                    && u < u1 - margin
-                    && best.is_none_or(|b| (u - mid).abs() < (b - mid).abs())
-                {
-                    best = Some(u);
-                }
+        for &v in &self.vertices {
+            if box_distance(&part, v) > 2.0 * self.tol_f {
+                continue;
+            }
+            let u = f.nearest(v, u0, u1);
+            let q = f.eval(u);
+            if (q[0] - v[0]).hypot(q[1] - v[1]) <= 2.0 * self.tol_f + 1e-300
+                && u > u0 + margin
+                && u < u1 - margin
+                && best.is_none_or(|b| (u - mid).abs() < (b - mid).abs())
+            {
+                best = Some(u);
             }
         }
         best
@@ -519,7 +566,8 @@ impl<'a> Decider<'a> {
     fn nearest_exact(&self, q: BallPoint) -> (f64, f64) {
         let qm = [q[0].m, q[1].m];
         let (mut est, mut up) = (f64::INFINITY, f64::INFINITY);
-        for e in &self.runs {
+        let order = self.hint.into_iter().chain((0..self.runs.len()).filter(|&i| Some(i) != self.hint));
+        for e in order.map(|i| &self.runs[i]) {
             if e.lo_in >= e.hi_in || box_distance(&e.bbox, qm) > est {
                 continue;
             }
@@ -631,7 +679,7 @@ impl<'a> Decider<'a> {
             return None;
         }
         let pm = [p[0].m, p[1].m];
-        let mut edges: HashMap<usize, Vec<(usize, (usize, Pos, Pos), f64)>> = HashMap::new();
+        let mut edges: HashMap<usize, Vec<(usize, Trav, f64)>> = HashMap::new();
         for i in 0..self.runs.len() {
             let e = &self.runs[i];
             if box_distance(&e.bbox, pm) > self.tol_f {
@@ -642,7 +690,7 @@ impl<'a> Decider<'a> {
                 edges.entry(e.hi_vertex).or_default().push((e.lo_vertex, (i, Pos::Hi, Pos::Lo), d));
             }
         }
-        let mut parent: HashMap<usize, Option<(usize, (usize, Pos, Pos), f64)>> = HashMap::new();
+        let mut parent: HashMap<usize, Option<(usize, Trav, f64)>> = HashMap::new();
         let mut queue = VecDeque::new();
         let mut first: HashMap<usize, ((usize, Pos, Pos), f64)> = HashMap::new();
         for (v, t, d) in starts {
@@ -731,6 +779,10 @@ impl<'a> Decider<'a> {
             self.charge(UNITS * (1 + (self.floats.len() + self.runs.len()) / 8) as f64)?;
             let m = a + (b - a) / 2.0;
             let inside = m >= lo_in && m <= hi_in;
+            if exact_side && let Some(d) = self.try_cover(&curve, a, b) {
+                self.bound = self.bound.max(d);
+                continue;
+            }
             let hull = curve.hull(a, b);
             let c = curve.point(m);
             let (est, up) = if exact_side { self.nearest_float(c) } else { self.nearest_exact(c) };
@@ -763,6 +815,40 @@ impl<'a> Decider<'a> {
             stack.push((a, m));
         }
         Ok(None)
+    }
+}
+
+impl Decider<'_> {
+    /// The piece of a float segment nearest to `[a, b]` of the exact curve when their control
+    /// points pair within `tol`: its bound.
+    fn try_cover(&self, curve: &Curve, a: f64, b: f64) -> Option<f64> {
+        let q = sub_points(curve.pts.as_ref()?, a, b);
+        let (q0, q1) = ([q[0][0].m, q[0][1].m], [q[q.len() - 1][0].m, q[q.len() - 1][1].m]);
+        let mut best: Option<f64> = None;
+        for f in &self.floats {
+            let Some(p) = &f.curve.pts else { continue };
+            let slack = best.unwrap_or(self.tol_f).min(self.tol_f);
+            if box_distance(&f.bbox, q0) > slack || box_distance(&f.bbox, q1) > slack {
+                continue;
+            }
+            let (ta, tb) = (f.curve.nearest(q0, 0.0, 1.0), f.curve.nearest(q1, 0.0, 1.0));
+            if ta == tb {
+                continue;
+            }
+            let mut sub = sub_points(p, ta, tb);
+            let mut qq = q.clone();
+            while sub.len() < qq.len() {
+                sub = elevate(&sub);
+            }
+            while qq.len() < sub.len() {
+                qq = elevate(&qq);
+            }
+            let d = qq.iter().zip(&sub).map(|(x, y)| distance_up(*x, *y)).fold(0.0, f64::max);
+            if best.is_none_or(|b| d < b) {
+                best = Some(d);
+            }
+        }
+        best.filter(|d| *d <= self.tol_f)
     }
 }
 

@@ -87,8 +87,10 @@ pub struct Agreement {
 /// (see the module documentation).
 ///
 /// # Errors
-/// The errors of [`Arrangement::new`] on the inputs with `found`; [`Error::InvalidArgument`]
-/// for a negative `tol`.
+/// [`Error::InvalidArgument`] for a negative `tol`, or for a distance equal to `tol` to binary64
+/// resolution (undecided, never guessed); [`Error::WorkLimit`] when deciding the distance or
+/// looking for a witness needs more than `budget`; the errors of exact winding numbers at the
+/// witness candidates.
 ///
 /// # Example
 /// ```

@@ -123,8 +123,8 @@ pub(super) fn contour_area(arr: &Arrangement, runs: &[Run]) -> ContourArea {
         match piece_area(s, &r.from, &r.to) {
             PieceArea::Exact(a) => area.rational += a,
             PieceArea::Algebraic { from, to } => {
-                area.terms.push((true, to));
-                area.terms.push((false, from));
+                area.terms.push((true, *to));
+                area.terms.push((false, *from));
             }
             PieceArea::Approx(f) => *area.approx.get_or_insert(0.0) += f,
         }
@@ -250,7 +250,7 @@ fn area_antiderivative(s: &Seg) -> Option<Poly<BigRational>> {
 /// A piece's area: exact, `F(to) − F(from)` with an algebraic end, or a quadrature estimate.
 enum PieceArea {
     Exact(BigRational),
-    Algebraic { from: RealAlgebraic, to: RealAlgebraic },
+    Algebraic { from: Box<RealAlgebraic>, to: Box<RealAlgebraic> },
     Approx(f64),
 }
 
@@ -282,7 +282,7 @@ fn piece_area(s: &Seg, from: &RealAlgebraic, to: &RealAlgebraic) -> PieceArea {
         if let (Some(a), Some(b)) = (fa.to_rational(), fb.to_rational()) {
             return PieceArea::Exact(b - a);
         }
-        return PieceArea::Algebraic { from: fa, to: fb };
+        return PieceArea::Algebraic { from: Box::new(fa), to: Box::new(fb) };
     }
     // rational segment: Gauss–Legendre on the homogeneous form
     let (a, b) = (from.to_f64(), to.to_f64());

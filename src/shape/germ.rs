@@ -211,7 +211,7 @@ impl Branch {
 
     /// The index `k` of the coefficient of `u^(j/l)` (`None` when `j/l` is no exponent `k/m`).
     fn coefficient(&self, j: usize, l: usize) -> Option<usize> {
-        (j * self.m % l == 0).then_some(j * self.m / l)
+        (j * self.m).is_multiple_of(l).then_some(j * self.m / l)
     }
 
     fn sign_of(&mut self, k: usize) -> Ordering {

@@ -54,6 +54,8 @@ mod rational_cubic;
 #[cfg(feature = "cli")]
 mod readers;
 #[cfg(feature = "cli")]
+mod regions;
+#[cfg(feature = "cli")]
 mod remove_overlaps;
 #[cfg(feature = "cli")]
 mod robustness;
