@@ -17,7 +17,8 @@ use num_rational::BigRational;
 /// use casteljau::rat;
 /// use casteljau_dependant::within;
 /// // √2 is the root of t² − 2 in [1, 2]
-/// let sqrt2 = RealAlgebraic::roots_in(&[rat(-2), rat(0), rat(1)], &rat(1), &rat(2))[0].clone();
+/// let t2_minus_2 = casteljau::poly::Poly::new(vec![rat(-2), rat(0), rat(1)]);
+/// let sqrt2 = RealAlgebraic::roots_in(&t2_minus_2, &rat(1), &rat(2))[0].clone();
 /// assert!(within(&sqrt2, std::f64::consts::SQRT_2, 0.0) == false); // no f64 is √2
 /// assert!(within(&sqrt2, std::f64::consts::SQRT_2, 1e-15));
 /// ```
