@@ -360,6 +360,16 @@ impl<'a> Font<'a> {
         glyf_points(glyf, loca, gid, &mut std::collections::HashMap::new(), &label, parts)
     }
 
+    /// Whether glyph `gid` is a `glyf` composite (false for CFF and unreadable glyphs).
+    pub(crate) fn is_composite(&self, gid: u32) -> bool {
+        match &self.outlines {
+            Outlines::Glyf { glyf, loca } => {
+                matches!(loca.get_glyf(GlyphId::new(gid), glyf), Ok(Some(Glyph::Composite(_))))
+            }
+            Outlines::Cff(_) => false,
+        }
+    }
+
     /// The glyph's outline split by component, for overlap removal: a simple glyph (or a CFF
     /// glyph) is one part; a composite `glyf` glyph one part per component, each already placed
     /// in the glyph's space exactly (as [`Self::outline`] places it). Contours of one point

@@ -404,6 +404,12 @@ pub fn write_font(
                 Ok(parts) => parts,
                 Err(e) => return (gid, Err(e), vec![]),
             };
+            if components.len() == 1 && font.is_composite(gid) {
+                // one component: nothing of its own overlaps; its glyph's own rewrite reaches it
+                // through the reference (fontTools decomposes only composites whose components
+                // overlap)
+                return (gid, Ok(GlyphDecision::Unchanged), lone);
+            }
             let input = GlyphInput { glyph_id: gid, name: font.glyph_name(gid), components, flavour, orientation };
             let decision = decide(&input).unwrap_or_else(|e| GlyphDecision::Uncertified { reason: e.to_string() });
             if let GlyphDecision::Rewritten { contours, .. } = &decision {
