@@ -183,6 +183,7 @@ fn dot(p: &BigRational, q: &BigRational, r: &BigRational, s: &BigRational) -> Bi
 
 use crate::num::word::{add_ratio, mul_ratio};
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// Work units of one product or sum of exact rationals of `b1` and `b2` bits ([`mul_ratio`],
 /// [`add_ratio`]), with `L(b)` limbs: `300 + 60·(L(b1) + L(b2))` for the allocations and the
 /// remainders that bring a gcd down to the smaller size (a remainder by a word costs a 128-bit
@@ -196,6 +197,7 @@ pub(crate) fn rational_op_work(b1: u64, b2: u64) -> f64 {
     300.0 + 60.0 * (l1 + l2) + 2.0 * l1 * l2 + 26.0 * small * small
 }
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// The sizes of an affine map's entries, `[a b c d e f]`: 0 for a zero entry, else its bit
 /// length (numerator plus denominator). Known exactly for a computed map, or estimated for one
 /// that is not computed (each product's bits the sum of its factors', each sum's one more than
@@ -203,12 +205,14 @@ pub(crate) fn rational_op_work(b1: u64, b2: u64) -> f64 {
 pub(crate) type AffineSizes = [u64; 6];
 
 impl Affine {
+    #[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
     /// The sizes of the entries.
     pub(crate) fn sizes(&self) -> AffineSizes {
         self.0.each_ref().map(|x| if x.numer().bits() == 0 { 0 } else { crate::work::bits(x) })
     }
 }
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// The work and the bits of `x y + u v` of entries of the given sizes (a zero product costs
 /// nothing).
 fn dot_work(x: u64, y: u64, u: u64, v: u64) -> (f64, u64) {
@@ -216,6 +220,7 @@ fn dot_work(x: u64, y: u64, u: u64, v: u64) -> (f64, u64) {
     sum_work(term(x, y), term(u, v))
 }
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// The work and bits of the sum of two terms given as `(work, bits)` (`None`: a zero term).
 fn sum_work(s: Option<(f64, u64)>, t: Option<(f64, u64)>) -> (f64, u64) {
     match (s, t) {
@@ -227,11 +232,13 @@ fn sum_work(s: Option<(f64, u64)>, t: Option<(f64, u64)>) -> (f64, u64) {
     }
 }
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// `(work, bits)` of a term, `None` for size 0.
 fn nonzero(work: f64, bits: u64) -> Option<(f64, u64)> {
     (bits != 0).then_some((work, bits))
 }
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// The work units of [`Affine::compose`] of maps of the given sizes, and the sizes of the
 /// result (estimated).
 pub(crate) fn compose_work(outer: &AffineSizes, inner: &AffineSizes) -> (f64, AffineSizes) {
@@ -249,6 +256,7 @@ pub(crate) fn compose_work(outer: &AffineSizes, inner: &AffineSizes) -> (f64, Af
     (entries.iter().map(|x| x.0).sum(), entries.map(|x| x.1))
 }
 
+#[cfg_attr(not(feature = "svg"), allow(dead_code))] // the SVG reader's charges
 /// The work units of [`Affine::apply`], for a map of the given sizes, to a point whose
 /// coordinates have at most `point_bits` bits (neither of them zero).
 pub(crate) fn apply_work(m: &AffineSizes, point_bits: u64) -> f64 {
