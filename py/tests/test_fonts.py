@@ -14,11 +14,6 @@ import casteljau
 from casteljau import CasteljauError, Shape
 from casteljau.pens import ExactPen
 
-NEEDS_DECIDE_GLYPH = pytest.mark.xfail(
-    strict=False,
-    raises=CasteljauError,
-    reason="needs decide_glyph (casteljau::overlaps on branches fontwrite/glyphcert, not merged yet)",
-)
 
 
 def test_lint_findings_of_a_font(tuffy):
@@ -81,7 +76,6 @@ def test_fontbakery_runs_the_exact_checks(tuffy):
     assert "FAIL: 1" in out and "WARN: 1" in out and "ERROR: 0" in out
 
 
-@NEEDS_DECIDE_GLYPH
 def test_remove_overlaps_on_a_ttfont(tuffy):
     import casteljau.fonttools
 
@@ -142,7 +136,6 @@ def test_ufo2ft_selects_the_filter_by_its_lib_key():
     assert "square" in font.getGlyphOrder()
 
 
-@NEEDS_DECIDE_GLYPH
 def test_ufo2ft_filter_removes_the_overlap():
     from casteljau.filters.removeOverlaps import RemoveOverlapsFilter
 
@@ -154,7 +147,6 @@ def test_ufo2ft_filter_removes_the_overlap():
     assert not casteljau.lint({"square": ufo["square"]}, kinds=["overlap"])
 
 
-@NEEDS_DECIDE_GLYPH
 def test_fontmake_builds_a_font_lint_finds_clean(tmp_path):
     ufo = _overlapping_ufo()
     src = tmp_path / "Overlap.ufo"

@@ -57,8 +57,9 @@ pub struct GridPoint {
 }
 
 /// An output contour: its points in drawing order, closed, as a font stores them (TrueType:
-/// at most one control point between on-curve points, every on-curve point explicit; CFF: two
-/// control points per cubic). The first point is on-curve.
+/// two consecutive control points imply the on-curve point at their exact midpoint, kept only
+/// where the certified outline has it there; CFF: two control points per cubic). The first
+/// point is on-curve.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct GridContour {
     /// The points.
@@ -297,8 +298,8 @@ impl Written {
 }
 
 /// Whether the points of a decided contour can be stored in the font's format: the first
-/// point on-curve; TrueType: at most one control point between on-curve points; CFF: exactly
-/// two. A contour of one point is an anchor.
+/// point on-curve; TrueType: any run of control points (implied on-curve midpoints); CFF:
+/// exactly two. A contour of one point is an anchor.
 fn storable(c: &GridContour, flavour: Flavour) -> std::result::Result<(), String> {
     let Some(first) = c.points.first() else { return Ok(()) };
     if !first.on_curve {
@@ -308,7 +309,8 @@ fn storable(c: &GridContour, flavour: Flavour) -> std::result::Result<(), String
     for p in c.points.iter().skip(1).chain(std::iter::once(first)) {
         if p.on_curve {
             let ok = match flavour {
-                Flavour::Quadratic => run <= 1,
+                // consecutive control points imply the on-curve point between them (TrueType)
+                Flavour::Quadratic => true,
                 Flavour::Cubic => run == 0 || run == 2,
             };
             if !ok {
