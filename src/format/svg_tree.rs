@@ -47,8 +47,9 @@ pub(crate) const MAX_USE_SEGMENTS: usize = 200_000;
 /// a larger document is what these cost, a lower bound).
 const ESTIMATE_VISITS: usize = 1_000_000;
 
-/// Work units of one element visited in a copy drawn by `<use>`.
-const COPY_WORK: f64 = 1000.0;
+/// Work units of one element visited in a copy drawn by `<use>` (about 60 ns measured here on
+/// copies of copies of empty groups).
+const COPY_WORK: f64 = 100.0;
 
 /// Work units per point of a copied shape drawn without a transform (the copy).
 const COPY_POINT_WORK: f64 = 200.0;
