@@ -207,8 +207,8 @@ pub fn intersect(
 
 /// The estimated work of intersecting `a` with `b` ([`crate::work::intersection`]).
 fn estimate(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>) -> f64 {
-    let beta = |c: &RationalBezier<BigRational>| crate::work::max_bits(c.homogeneous().points());
-    crate::work::intersection(a.degree(), b.degree(), beta(a).max(beta(b)))
+    let sizes = |c: &RationalBezier<BigRational>| crate::work::Magnitudes::of(c.homogeneous().points());
+    crate::work::intersection(a.degree(), b.degree(), sizes(a).with(sizes(b)))
 }
 
 /// Every self-intersection `A(s) = A(t)`, `s < t`, with both parameters in the domain (a

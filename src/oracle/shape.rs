@@ -131,7 +131,7 @@ pub fn check_against(
     // the arrangement of the inputs and the float result: edges where the regions differ
     let mut all: Vec<Shape> = inputs.to_vec();
     all.push(found.clone());
-    let arr = Arrangement::new(&all, budget)?;
+    let arr = Arrangement::new_approximating(&all, budget, inputs.len())?;
     let k = inputs.len();
     let in_exact = |w: &[i64]| op.apply(fill.contains(w[0]), k > 1 && fill.contains(w[1]));
     let in_found = |w: &[i64]| fill.contains(w[k]);

@@ -13,6 +13,8 @@
 //!   fonts, SVG and batches, segment by segment; [`intersect`]: `intersect` and `winding`;
 //!   [`check`]: a float library's answers against the exact ones; [`shapes`]: `boolean` and
 //!   `arrange` on path data and SVG files, [`glyphs`]: `boolean simplify` on every glyph of fonts.
+//! * [`finite`]: no `inf` or `NaN` in any output (a refusal instead); [`files`]: output files,
+//!   all or nothing.
 
 mod answers;
 mod args;
@@ -21,6 +23,7 @@ mod check;
 mod commands;
 mod curves;
 mod files;
+mod finite;
 mod glyphs;
 mod input;
 mod intersect;
