@@ -13,7 +13,8 @@
 //! A *work unit* is about one nanosecond of this project's reference machine (2 cores, 2026):
 //! each formula below counts big-integer limb operations (64-bit words) of the dominant loop
 //! and carries a constant fitted to measured run times, so `1e10` units is about ten seconds.
-//! The estimates are for the typical case (they are not worst-case bounds); where the work
+//! The estimates are for the typical case (they are not worst-case bounds), and aim at the
+//! truth within a factor of 3 either way (measured cases in `benches/README.md`); where the work
 //! depends on the input beyond its sizes, the operation also counts its steps while running
 //! and stops with an error naming the limit: root isolation charges each subdivision against
 //! the budget ([`crate::poly::isolate_bernstein`]), and the expression language
@@ -33,8 +34,16 @@
 //! | the whole scheme (`triangle`) | subdivision `+ d·(n+1)(n+2)/2·G·L(g)²` |
 //! | power form, degree reduction | `8·d·n²·L(β + n)` |
 //! | derivative of order `k` | `100·d·n·k·L(β + k·log₂ n)` |
-//! | degree elevation by `r` | `3·d·(n + r)·n·L(β + n + r)` |
+//! | degree elevation by `r` (`m = n + r`, `g = β + m`) | `d·(m + 1)·(5000 + 12·L(g)² + 15·(n + 1)·L(g)·L(β))` |
 //! | denominator root isolation | `250·n²·L(β + n)` up front, then `n²·L(b)` per split (`b`: current bits) |
+//! | intersection of degrees `n`, `m` (`d = nm`), coordinates within `2^±500` | `2·10⁴ + (1.5·10⁴ + 9·d^3.6)·L(β)²` |
+//! | … beyond (the exact route; `s` the spread of the binary exponents) | `(3500 + 17·d⁴)·L(2·max(n, m)·(β + 4 + s/2))²` |
+//! | a power or product with a `b`-bit result (the expression language) | `2·L(b)^1.6` |
+//!
+//! An arrangement (`shape::Arrangement`) is priced stage by stage from its segments' counts,
+//! bit lengths and boxes before each stage starts: the candidate pairs counted from the boxes
+//! (nothing collected), the pairs the hull screen leaves (each an intersection above), one ray
+//! per chain of edges (see the private `shape::estimate` module).
 //!
 //! The estimates are the crate's own: an operation taking a [`Budget`] computes its estimate
 //! and checks it; users choose the budget.
@@ -96,6 +105,57 @@ impl Budget {
             Err(Error::WorkLimit { what: what.into(), estimate, limit: self.limit, option: self.option })
         }
     }
+}
+
+std::thread_local! {
+    /// The budget of the innermost [`metered`] run on this thread and the units charged so far.
+    static METER: std::cell::Cell<Option<(Budget, f64)>> = const { std::cell::Cell::new(None) };
+}
+
+/// Runs `f` under `budget`, `spent` units already estimated for it: the steps inside whose
+/// cost shows only once earlier steps have run (the exact images of a resultant's roots) are
+/// priced with [`charge`] before each starts, and refused when the total passes the limit.
+/// Outside any meter a charge is free (library calls without a budget).
+pub(crate) fn metered<T>(budget: &Budget, spent: f64, f: impl FnOnce() -> Result<T>) -> Result<T> {
+    let saved = METER.with(|m| m.replace(Some((*budget, spent))));
+    let out = f();
+    METER.with(|m| m.set(saved));
+    out
+}
+
+/// Charges `units` to the innermost [`metered`] run on this thread: [`Error::WorkLimit`] naming
+/// `what` (with everything charged so far) when the total passes its limit.
+pub(crate) fn charge(what: impl FnOnce() -> String, units: f64) -> Result<()> {
+    METER.with(|m| match m.get() {
+        None => Ok(()),
+        Some((budget, spent)) => {
+            let total = spent + units;
+            m.set(Some((budget, total)));
+            budget.check(what(), total)
+        }
+    })
+}
+
+/// The exact image of an algebraic number of degree `d` (a minimal polynomial with `bp`-bit
+/// coefficients) under a rational map of degree `n` (`bq`-bit coefficients): the Sylvester
+/// determinant of order `N = d + n` over `Z[v]` by Bareiss, whose step `k` updates `(N − k)²`
+/// entries, each products of polynomials of `v`-degree up to `min(k, d) + 1` with
+/// coefficients of about `(k + 1)·b` bits (`b = max(bp, bq)`):
+/// `0.075·Σ_k (N − k)²·(min(k, d) + 2)²·L((k + 1)·b)²`, plus the root's isolation. Fitted on
+/// the self-intersection points of integer curves of degree 8 and 9 (`d` = 42 and 56; one point
+/// is two images): 6.5 s measured, 5.4 s estimated; 11 s, 12 s; 70 s, 141 s; 76 s, 144 s.
+pub(crate) fn algebraic_image(d: usize, n: usize, bp: u64, bq: u64) -> f64 {
+    let order = d + n;
+    let b = bp.max(bq);
+    (0..order)
+        .map(|k| {
+            let rest = (order - k) as f64;
+            let degree = (k.min(d) + 2) as f64;
+            let l = limbs(((k + 1) as u64).saturating_mul(b));
+            0.075 * rest * rest * degree * degree * l * l
+        })
+        .sum::<f64>()
+        + root_isolation(d, bp)
 }
 
 /// Limbs of a `bits`-bit number: `bits/64 + 1`.
@@ -199,10 +259,16 @@ pub(crate) fn derivative(n: usize, k: usize, dim: usize, beta: u64) -> f64 {
     100.0 * dim as f64 * (n as f64 + 1.0) * (k as f64 + 1.0) * limbs(beta.saturating_add(growth))
 }
 
-/// Degree elevation of a degree-`n` curve by `r`.
+/// Degree elevation of a degree-`n` curve by `r`: each of the `d·(m + 1)` output coordinates
+/// (`m = n + r`) sums `n + 1` products of a `β`-bit coordinate and a binomial, and is reduced
+/// against `C(m, i)` (numbers of `g = β + m` bits; the gcd dominates):
+/// `d·(m + 1)·(5000 + 12·L(g)² + 15·(n + 1)·L(g)·L(β))` (a cubic by 9997 with 1000-digit
+/// coordinates: 11.6 s measured, 24 s estimated; with one-digit coordinates 3.1 s and 6.2 s; by
+/// 1000 with 1000-digit coordinates 0.46 s and 0.55 s).
 pub(crate) fn elevation(n: usize, r: usize, dim: usize, beta: u64) -> f64 {
     let m = n.saturating_add(r);
-    3.0 * dim as f64 * (m as f64 + 1.0) * (n as f64 + 1.0) * limbs(beta.saturating_add(m as u64))
+    let (g, b) = (limbs(beta.saturating_add(m as u64)), limbs(beta));
+    dim as f64 * (m as f64 + 1.0) * (5000.0 + 12.0 * g * g + 15.0 * (n as f64 + 1.0) * g * b)
 }
 
 /// The up-front part of isolating the roots of a degree-`n` polynomial with `beta`-bit
@@ -212,17 +278,79 @@ pub(crate) fn root_isolation(n: usize, beta: u64) -> f64 {
     250.0 * nf * nf * limbs(beta.saturating_add(n as u64))
 }
 
-/// Exact intersection of a degree-`n` and a degree-`m` planar curve with `beta`-bit
-/// coefficients: a Sylvester determinant of size `2m` over polynomials of degree up to `nm`,
-/// whose resultant (degree `d = nm`, about `2·max(n, m)·(beta + 4)` bits) is isolated and whose
-/// roots are mapped and compared: `1330·d⁴·limbs²`, on the safe side for font-like pairs
-/// (3 × 3: 4.8 ms measured, 35 ms estimated; 5 × 5: 3.3 s measured before the enclosure filter, 4.7 s
-/// estimated).
-pub(crate) fn intersection(n: usize, m: usize, beta: u64) -> f64 {
+/// The sizes of a curve's homogeneous coordinates that its intersection costs depend on: the
+/// largest bit length (numerator plus denominator) and the range of binary exponents
+/// (`⌊log₂ |x|⌋`, about) of the non-zero ones.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Magnitudes {
+    /// The largest [`bits`].
+    pub bits: u64,
+    /// The smallest binary exponent of a non-zero coordinate (0 when there is none).
+    pub min_exp: i64,
+    /// The largest binary exponent of a non-zero coordinate (0 when there is none).
+    pub max_exp: i64,
+}
+
+impl Magnitudes {
+    /// The sizes of `points`' coordinates.
+    pub(crate) fn of(points: &[Point<BigRational>]) -> Magnitudes {
+        let mut m = Magnitudes { bits: 0, min_exp: i64::MAX, max_exp: i64::MIN };
+        for x in points.iter().flat_map(|p| p.coords.iter()) {
+            m.bits = m.bits.max(bits(x));
+            if !num_traits::Zero::is_zero(x) {
+                let e = x.numer().bits() as i64 - x.denom().bits() as i64;
+                m.min_exp = m.min_exp.min(e);
+                m.max_exp = m.max_exp.max(e);
+            }
+        }
+        if m.min_exp > m.max_exp {
+            (m.min_exp, m.max_exp) = (0, 0);
+        }
+        m
+    }
+
+    /// The sizes of two curves together.
+    pub(crate) fn with(self, other: Magnitudes) -> Magnitudes {
+        Magnitudes {
+            bits: self.bits.max(other.bits),
+            min_exp: self.min_exp.min(other.min_exp),
+            max_exp: self.max_exp.max(other.max_exp),
+        }
+    }
+}
+
+/// The largest binary exponent (either way) of coordinates whose products the certified `f64`
+/// filters of [`crate::intersect`] still hold: beyond it the exact route decides.
+const FILTERED_EXPONENT: i64 = 500;
+
+/// Exact intersection of a degree-`n` and a degree-`m` planar curve (`d = nm`), for the typical
+/// pair that an arrangement cannot decide from hulls (the pair's coordinates `sizes`, `L` the
+/// limbs of their largest bit length `β`):
+///
+/// - coordinates within `2^±500` (the certified `f64` filters and the box solver decide):
+///   `2·10⁴ + (1.5·10⁴ + 9·d^3.6)·L²` (cubic pairs: 10-bit coordinates 45 µs measured per
+///   pair, 60 µs estimated; 500-bit 1.3 ms, 2.6 ms; degree 7, 300-bit: 0.3 s, 0.27 s);
+/// - beyond (the resultants' roots isolated and mapped exactly):
+///   `(3500 + 17·d⁴)·l²` with `l = L(2·max(n, m)·(β + 4 + s/2))` and `s` the spread of the
+///   binary exponents (cubic pairs with 1000-bit coordinates: 1.0 s measured per pair, 1.1 s
+///   estimated; a line with coordinates `±10³⁰⁰` and `10⁻³⁰⁰` against a cubic: 0.3 s, 0.17 s).
+pub(crate) fn intersection(n: usize, m: usize, sizes: Magnitudes) -> f64 {
     let d = (n.max(1) * m.max(1)) as f64;
-    let bits = 2 * n.max(m) as u64 * beta.saturating_add(4);
-    let l = limbs(bits);
-    1330.0 * d * d * d * d * l * l
+    let l = limbs(sizes.bits);
+    if sizes.max_exp <= FILTERED_EXPONENT && sizes.min_exp >= -FILTERED_EXPONENT {
+        return 2e4 + (1.5e4 + 9.0 * d.powf(3.6)) * l * l;
+    }
+    intersection_exact(n, m, sizes)
+}
+
+/// The exact route of [`intersection`] (its second case), which pairs within the filters'
+/// range also take when they cross at grazing angles.
+pub(crate) fn intersection_exact(n: usize, m: usize, sizes: Magnitudes) -> f64 {
+    let d = (n.max(1) * m.max(1)) as f64;
+    let spread = (sizes.max_exp - sizes.min_exp).max(0) as u64;
+    let grown = (2 * n.max(m) as u64).saturating_mul(sizes.bits.saturating_add(4).saturating_add(spread / 2));
+    let l = limbs(grown);
+    (3500.0 + 17.0 * d * d * d * d) * l * l
 }
 
 /// The exact bounding box of a degree-`n` (rational) curve with `beta`-bit homogeneous
@@ -244,6 +372,21 @@ pub(crate) fn winding_segment(n: usize, beta: u64) -> f64 {
     let nf = n as f64 + 1.0;
     let l = limbs(beta.saturating_add(n as u64));
     2e5 + 20.0 * nf * nf * nf * nf * l * l
+}
+
+/// One piece of a cycle crossing a ray's line in an arrangement's winding numbers (degree `n`,
+/// `β`-bit coordinates): the roots of the piece's coordinate along the line isolated, each
+/// crossing's side decided exactly: `3·10⁴ + 20·(n + 1)⁴·L(β + n)²`.
+pub(crate) fn winding_piece(n: usize, beta: u64) -> f64 {
+    let nf = n as f64 + 1.0;
+    let l = limbs(beta.saturating_add(n as u64));
+    3e4 + 20.0 * nf * nf * nf * nf * l * l
+}
+
+/// A power or product whose result has `bits` bits: `2·L(bits)^1.6` (Karatsuba's exponent;
+/// `(1 + s)^100000` at a 20-bit `s`: 8.5 ms measured, 8.9 ms estimated).
+pub(crate) fn power(bits: u64) -> f64 {
+    2.0 * limbs(bits).powf(1.6)
 }
 
 /// One subdivision step of root isolation (degree `n`, `beta`-bit coefficients).

@@ -367,7 +367,11 @@ fn identity_instance(diff: &Expr, vars: &[String], env: &Env) -> Result<Instance
     // the grid is known only now: charge its points (each an evaluation of the whole tree)
     // against the step budget before evaluating any of them
     let points = degrees.iter().fold(1u64, |p, &d| p.saturating_mul(d as u64 + 1));
-    crate::proof::expr::charge_steps(points.saturating_mul(1 + diff.size() as u64 / 8))
+    // each point's value is a polynomial of total degree D at grid values of about
+    // log₂(d + 1) + 4 bits: numbers of D times that many bits, whose products the tree pays
+    let value_bits: u64 = degrees.iter().map(|&d| d as u64 * (u64::from(usize::BITS - d.leading_zeros()) + 4)).sum();
+    let products = (crate::work::power(value_bits) / crate::work::UNITS_PER_STEP).min(u64::MAX as f64) as u64;
+    crate::proof::expr::charge_steps(points.saturating_mul((1 + diff.size() as u64 / 8).saturating_add(products)))
         .map_err(|e| bad(e.to_string()))?;
     let res = grid_prove(&degrees, |x| {
         let mut e = env.clone();

@@ -195,7 +195,17 @@ pub fn intersect(
 ) -> Result<Intersections> {
     check(a, domain)?;
     check(b, domain)?;
-    budget.check(format!("intersecting degree {} with degree {}", a.degree(), b.degree()), estimate(a, b))?;
+    let estimated = estimate(a, b);
+    budget.check(format!("intersecting degree {} with degree {}", a.degree(), b.degree()), estimated)?;
+    crate::work::metered(budget, estimated, || intersect_checked(a, b, domain))
+}
+
+/// [`intersect`] once the curves and the estimate are checked.
+fn intersect_checked(
+    a: &RationalBezier<BigRational>,
+    b: &RationalBezier<BigRational>,
+    domain: Domain,
+) -> Result<Intersections> {
     let words = |c: &RationalBezier<BigRational>| integer_points(c.homogeneous().points(), true);
     if let (Some(pa), Some(pb)) = (words(a), words(b))
         && let Some(found) = pairing::intersect_integer_points(&pa, &pb, domain)
@@ -207,8 +217,8 @@ pub fn intersect(
 
 /// The estimated work of intersecting `a` with `b` ([`crate::work::intersection`]).
 fn estimate(a: &RationalBezier<BigRational>, b: &RationalBezier<BigRational>) -> f64 {
-    let beta = |c: &RationalBezier<BigRational>| crate::work::max_bits(c.homogeneous().points());
-    crate::work::intersection(a.degree(), b.degree(), beta(a).max(beta(b)))
+    let sizes = |c: &RationalBezier<BigRational>| crate::work::Magnitudes::of(c.homogeneous().points());
+    crate::work::intersection(a.degree(), b.degree(), sizes(a).with(sizes(b)))
 }
 
 /// Every self-intersection `A(s) = A(t)`, `s < t`, with both parameters in the domain (a
@@ -225,6 +235,7 @@ pub fn self_intersect(
     budget: &crate::work::Budget,
 ) -> Result<Intersections> {
     check(a, domain)?;
-    budget.check(format!("self-intersecting degree {}", a.degree()), estimate(a, a))?;
-    overlap::self_intersections(&forms::integer_forms(a), domain)
+    let estimated = estimate(a, a);
+    budget.check(format!("self-intersecting degree {}", a.degree()), estimated)?;
+    crate::work::metered(budget, estimated, || overlap::self_intersections(&forms::integer_forms(a), domain))
 }

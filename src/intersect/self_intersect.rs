@@ -48,8 +48,14 @@ pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain)
             if apart(fa, si, fa, sj) {
                 continue;
             }
-            let p = pts[i].get_or_insert_with(|| point_at(fa, &ss[i])).clone();
-            let q = pts[j].get_or_insert_with(|| point_at(fa, &ss[j]));
+            for k in [i, j] {
+                if pts[k].is_none() {
+                    charge_point(fa, &ss[k])?;
+                    pts[k] = Some(point_at(fa, &ss[k]));
+                }
+            }
+            let (Some(p), Some(q)) = (&pts[i], &pts[j]) else { continue };
+            let p = p.clone();
             if p[0] == q[0] && p[1] == q[1] {
                 let order = if simple { 1 } else { multiplicity(&rr, &ss[i]).min(multiplicity(&rr, &ss[j])).max(1) };
                 let (Some((si, s_float)), Some((_, t_float))) = (&narrow[i], &narrow[j]) else { continue };
@@ -67,4 +73,21 @@ pub(super) fn self_intersections_of_forms(fa: &[Vec<BigInt>; 3], domain: Domain)
         }
     }
     Ok(Some(Intersections { intersections: out, overlaps: vec![] }))
+}
+
+/// Charges the exact point of the curve at `s` ([`crate::work::algebraic_image`], once per
+/// coordinate) to the budget of the running operation.
+fn charge_point(fa: &[Vec<BigInt>; 3], s: &RealAlgebraic) -> Result<()> {
+    if s.to_rational().is_some() {
+        return Ok(());
+    }
+    let p = s.polynomial();
+    let bits = |c: &[BigInt]| c.iter().map(num_bigint::BigInt::bits).max().unwrap_or(0);
+    let bq = fa.iter().map(|f| bits(f)).max().unwrap_or(0);
+    let n = fa.iter().map(Vec::len).max().unwrap_or(1).saturating_sub(1);
+    let units = 2.0 * crate::work::algebraic_image(p.len().saturating_sub(1), n, bits(&p), bq);
+    crate::work::charge(
+        || format!("the exact point of a self-intersection of degree {n} (a parameter of degree {})", p.len() - 1),
+        units,
+    )
 }

@@ -52,6 +52,12 @@ impl Fraction {
         Fraction { num, den: None }
     }
 
+    /// Bits of the numerator plus the denominator (as stored, unreduced): the size the cost
+    /// of an operation on it grows with.
+    pub(crate) fn bits(&self) -> u64 {
+        self.num.bits() + self.den.as_ref().map_or(0, BigInt::bits)
+    }
+
     /// The same number with `gcd(num, den) = 1`.
     pub fn reduced(&self) -> Self {
         let Some(d) = &self.den else { return self.clone() };

@@ -55,7 +55,7 @@ pub struct Witness {
 /// The verdict on a float result. JSON: `agree`, `contours`, `contours_found`, `depths`,
 /// `depths_found`, `witness` (or null), `distance_bound` (a proved upper bound on the distance
 /// between the boundaries, rounded up; null when the distance is proved over the tolerance),
-/// `distance_at_least` (a proved lower bound when it is over, else null), `problems` (what
+/// `distance_at_least` (a proved lower bound when it is over and finite, else null), `problems` (what
 /// disagrees, one sentence each), `notes` (differences of representation that are no
 /// disagreement).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -72,10 +72,11 @@ pub struct Agreement {
     pub depths_found: Vec<usize>,
     /// A point where the regions differ, farther than `tol` from the exact boundary.
     pub witness: Option<Witness>,
-    /// A proved upper bound on the distance between the two boundaries (infinite when the
+    /// A proved upper bound on the distance between the two boundaries (`None` when the
     /// distance is over the tolerance).
-    pub distance_bound: f64,
-    /// A proved lower bound on that distance when it is over the tolerance.
+    pub distance_bound: Option<f64>,
+    /// A proved lower bound on that distance when it is over the tolerance (`None` when it is
+    /// not, or when one result has a boundary and the other none: no finite bound).
     pub distance_at_least: Option<f64>,
     /// What disagrees, in words.
     pub problems: Vec<String>,
@@ -142,7 +143,7 @@ pub fn check_against(
             if *reversed {
                 notes.push("the float result runs the other way".into());
             }
-            (*bound, None, *regions)
+            (Some(*bound), None, *regions)
         }
         Outcome::Over { point, on_found, at_least } => {
             let (this, other) = if *on_found { ("float", "exact") } else { ("exact", "float") };
@@ -156,7 +157,7 @@ pub fn check_against(
                     ratio_to_f64(&point.y)
                 )
             });
-            (f64::INFINITY, Some(*at_least), false)
+            (None, at_least.is_finite().then_some(*at_least), false)
         }
     };
     // where the matching proved the regions equal away from the boundary, no witness exists

@@ -642,11 +642,15 @@ impl Expr {
             }
             Expr::Pow(a, k) => {
                 let k = int_arg(k, env, "exponent")?;
+                let base = a.eval(env)?;
                 if k.unsigned_abs() >= 64 {
-                    // small powers are paid for by the fold term or the text around them
-                    step_n(1 + k.unsigned_abs() / 4)?;
+                    // small powers are paid for by the fold term or the text around them; a
+                    // large one by its squarings too, which grow with the result's size
+                    let bits = base.bits().saturating_mul(k.unsigned_abs());
+                    let products = crate::work::power(bits) / crate::work::UNITS_PER_STEP;
+                    step_n((1 + k.unsigned_abs() / 4).saturating_add(products.min(u64::MAX as f64) as u64))?;
                 }
-                pow(&a.eval(env)?, k)?
+                pow(&base, k)?
             }
             Expr::Binom(n, k) => {
                 let (n, k) = (int_arg(n, env, "C's n")?, int_arg(k, env, "C's k")?);

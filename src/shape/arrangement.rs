@@ -25,9 +25,10 @@
 //!    left side has winding number 1 around itself is the outer boundary of a bounded face,
 //!    the others are inner boundaries, given to the innermost outer boundary around them.
 
+use super::build::{Link, build, chain_starts, sides};
 use super::germ::{Angle, Germ, compare_tangent};
-use super::pairs::{candidate_pairs, easy_pair, injective};
-use super::ray::{Axis, Origin, Piece, RayWinding, whole, winding};
+use super::pairs::{Visit, easy_pair, injective, sweep_pairs};
+use super::ray::{Axis, Origin, Piece, RayWinding, winding};
 use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::intersect::Domain;
@@ -198,54 +199,7 @@ pub struct Arrangement {
     pub(crate) vertex_at: Vec<(usize, RealAlgebraic)>,
     pub(crate) degree: Vec<usize>,
     /// The faces and, per bounded face, how many outer boundaries enclose it, once computed.
-    faces: std::sync::OnceLock<(Vec<Face>, Vec<usize>)>,
-}
-
-/// What two segments share, as found.
-#[allow(clippy::large_enum_variant)] // short-lived, one per contact
-enum Link {
-    Point(usize, RealAlgebraic, usize, RealAlgebraic),
-    Arc(usize, [RealAlgebraic; 2], usize, [RealAlgebraic; 2]),
-}
-
-/// Union–find with parity.
-struct Union {
-    parent: Vec<usize>,
-    parity: Vec<bool>,
-}
-
-impl Union {
-    fn new(n: usize) -> Self {
-        Union { parent: (0..n).collect(), parity: vec![false; n] }
-    }
-    fn find(&mut self, x: usize) -> (usize, bool) {
-        let mut path = vec![];
-        let mut r = x;
-        while self.parent[r] != r {
-            path.push(r);
-            r = self.parent[r];
-        }
-        // compress, accumulating parity from the top
-        let mut acc = false;
-        for &n in path.iter().rev() {
-            acc ^= self.parity[n];
-            self.parity[n] = acc;
-            self.parent[n] = r;
-        }
-        (r, if path.is_empty() { false } else { self.parity[x] })
-    }
-    /// Joins `a` and `b` with `parity(a) ^ parity(b) = p`; false on a contradiction.
-    fn union(&mut self, a: usize, b: usize, p: bool) -> bool {
-        let (ra, pa) = self.find(a);
-        let (rb, pb) = self.find(b);
-        if ra == rb {
-            return pa ^ pb == p;
-        }
-        let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-        self.parent[hi] = lo;
-        self.parity[hi] = pa ^ pb ^ p;
-        true
-    }
+    pub(super) faces: std::sync::OnceLock<(Vec<Face>, Vec<usize>)>,
 }
 
 /// A rational strictly inside `(lo, hi)` where the segment's tangent does not vanish.
@@ -273,6 +227,10 @@ impl Arrangement {
     /// a curve more than once off a line); [`Error::InvalidArgument`] when two overlapping
     /// segments are split inconsistently (a defect, reported rather than answered wrongly).
     pub fn new(inputs: &[super::Shape], budget: &Budget) -> Result<Self> {
+        Self::priced(inputs, budget)
+    }
+
+    fn priced(inputs: &[super::Shape], budget: &Budget) -> Result<Self> {
         let paths: Vec<&ClosedPath> = inputs.iter().map(|s| s.path()).collect();
         let total: usize = paths.iter().map(|p| p.segments()).sum();
         if total > MAX_ARRANGEMENT_SEGMENTS {
@@ -296,7 +254,8 @@ impl Arrangement {
             }
             contours.push(cs);
         }
-        let pairs = candidate_pairs(&segs);
+        // 1. the candidate pairs, counted from the boxes before any is collected
+        let screening = super::estimate::survey(&segs, budget)?;
         // the next live segment of each segment in its contour: their joint needs no link
         let mut next_live = vec![usize::MAX; segs.len()];
         for cs in &contours {
@@ -307,10 +266,14 @@ impl Arrangement {
                 }
             }
         }
-        // decide the easy pairs, estimate the rest
-        let mut links = vec![];
+        // 2. decide the easy pairs, price the rest as they are found
+        let mut easy: Vec<((usize, usize), Link)> = vec![];
         let mut general = vec![];
-        for (a, b) in pairs {
+        let mut estimate = screening;
+        // pairs that share no end point: each crossing splits chains of edges (rays below)
+        let mut crossing = 0usize;
+        sweep_pairs(&segs, &mut |v| {
+            let Visit::Pair(a, b) = v else { return true };
             match easy_pair(&segs[a], &segs[b]) {
                 Some(found) => {
                     let joint = |s: &RealAlgebraic, t: &RealAlgebraic| {
@@ -318,31 +281,35 @@ impl Arrangement {
                         (next_live[a] == b && s.to_rational() == Some(&one) && t.to_rational() == Some(&zero))
                             || (next_live[b] == a && s.to_rational() == Some(&zero) && t.to_rational() == Some(&one))
                     };
-                    links.extend(found.into_iter().filter(|(s, t)| !joint(s, t)).map(|(s, t)| Link::Point(a, s, b, t)))
+                    easy.extend(
+                        found.into_iter().filter(|(s, t)| !joint(s, t)).map(|(s, t)| ((a, b), Link::Point(a, s, b, t))),
+                    )
                 }
-                None => general.push((a, b)),
+                None => {
+                    general.push((a, b));
+                    estimate += super::estimate::pair(&segs[a], &segs[b]);
+                    let (sa, sb) = (&segs[a], &segs[b]);
+                    let neighbours =
+                        sa.end == sb.start || sa.start == sb.end || sa.start == sb.start || sa.end == sb.end;
+                    crossing += usize::from(!neighbours);
+                }
             }
-        }
+            // past the budget, the rest of the pairs need not be looked at
+            estimate <= super::estimate::counted_up_to(budget)
+        });
+        general.sort_unstable();
+        easy.sort_by_key(|(key, _)| *key);
+        let mut links: Vec<Link> = easy.into_iter().map(|(_, l)| l).collect();
         let selfs: Vec<usize> = (0..segs.len()).filter(|&k| !segs[k].degenerate && !injective(&segs[k])).collect();
-        let est = |s: &Seg| crate::work::max_bits(s.curve.homogeneous().points());
-        let mut estimate: f64 = general
-            .iter()
-            .map(|&(a, b)| {
-                crate::work::intersection(segs[a].degree(), segs[b].degree(), est(&segs[a]).max(est(&segs[b])))
-            })
-            .sum();
-        estimate += selfs
-            .iter()
-            .map(|&k| crate::work::intersection(segs[k].degree(), segs[k].degree(), est(&segs[k])))
-            .sum::<f64>();
-        // one ray per edge at most, each over every segment (each input's winding number from
-        // its own segments: the inputs share the ray, they do not multiply it)
-        let rays: f64 = segs.iter().map(|s| crate::work::winding_segment(s.degree(), est(s))).sum();
-        estimate += rays * (segs.len() + 2 * general.len()) as f64 / 8.0;
-        budget.check(
-            format!("the arrangement of {} segments ({} pairs to solve)", segs.len(), general.len()),
-            estimate,
-        )?;
+        estimate += selfs.iter().map(|&k| super::estimate::own(&segs[k])).sum::<f64>();
+        // a ray per chain of edges: one per contour, and about three more per two crossing pairs
+        let ray = super::estimate::ray(&segs);
+        let contours_live = contours.iter().flatten().filter(|c| c.iter().any(|&k| !segs[k].degenerate)).count();
+        let rays = contours_live + crossing * 3 / 2;
+        estimate += rays as f64 * ray;
+        let count = segs.len();
+        let what = |pairs: usize| format!("the arrangement of {count} segments ({pairs} pairs to solve)");
+        budget.check(what(general.len()), estimate)?;
         let unlimited = Budget::unlimited();
         for &(a, b) in &general {
             let r = crate::intersect::intersect(&segs[a].curve, &segs[b].curve, Domain::Unit, &unlimited)
@@ -364,7 +331,12 @@ impl Arrangement {
                 links.push(Link::Arc(k, o.s, k, o.t));
             }
         }
-        build(segs, inputs.len(), contours, links)
+        let mut arr = build(segs, inputs.len(), contours, links)?;
+        // 3. the sides: one ray per chain of edges, priced now that the chains are known
+        let chains = chain_starts(&arr).len();
+        budget.check(what(general.len()), estimate + (chains.saturating_sub(rays)) as f64 * ray)?;
+        sides(&mut arr)?;
+        Ok(arr)
     }
 
     /// The vertices, in order of first appearance along the inputs' segments. Each point is
@@ -626,7 +598,8 @@ impl Arrangement {
                 inner.push(c);
             }
         }
-        let depth = self.depths(&outer)?;
+        let boxes: Vec<[f64; 4]> = outer.iter().map(|c| self.cycle_box(c)).collect();
+        let depth = self.depths(&outer, &boxes)?;
         let mut faces: Vec<Face> = outer
             .iter()
             .map(|c| Face { bounded: true, outer: c.clone(), inner: vec![], winding: self.side(c[0]).to_vec() })
@@ -634,7 +607,11 @@ impl Arrangement {
         let mut unbounded = Face { bounded: false, outer: vec![], inner: vec![], winding: vec![0; self.inputs] };
         for c in inner {
             let mut best: Option<usize> = None;
+            let probe = self.probe(c[0]);
             for (i, o) in outer.iter().enumerate() {
+                if outside(probe, &boxes[i]) {
+                    continue; // a point outside a cycle's box has winding number 0 around it
+                }
                 if self.beside(std::slice::from_ref(o), c[0])? != 0 && best.is_none_or(|b| depth[i] > depth[b]) {
                     best = Some(i);
                 }
@@ -648,17 +625,38 @@ impl Arrangement {
         Ok((faces, depth))
     }
 
-    /// For each outer cycle, how many other outer cycles enclose its face.
-    fn depths(&self, outer: &[Vec<HalfEdge>]) -> Result<Vec<usize>> {
+    /// For each outer cycle, how many other outer cycles enclose its face (`boxes`: the
+    /// cycles' boxes, which rule out most pairs without a ray).
+    fn depths(&self, outer: &[Vec<HalfEdge>], boxes: &[[f64; 4]]) -> Result<Vec<usize>> {
         let mut depth = vec![0; outer.len()];
         for (i, c) in outer.iter().enumerate() {
+            let probe = self.probe(c[0]);
             for (j, o) in outer.iter().enumerate() {
-                if i != j && self.beside(std::slice::from_ref(o), c[0])? != 0 {
+                if i != j && !outside(probe, &boxes[j]) && self.beside(std::slice::from_ref(o), c[0])? != 0 {
                     depth[i] += 1;
                 }
             }
         }
         Ok(depth)
+    }
+
+    /// The point [`Self::beside`] casts its ray from, rounded to `f64`.
+    fn probe(&self, h: HalfEdge) -> [f64; 2] {
+        let (p, _) = self.beside_point(h);
+        [crate::num::scalar::ratio_to_f64(&p.x), crate::num::scalar::ratio_to_f64(&p.y)]
+    }
+
+    /// The union of the outward-rounded boxes of a cycle's segments (unbounded when one has
+    /// none).
+    fn cycle_box(&self, c: &[HalfEdge]) -> [f64; 4] {
+        let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+        for h in c {
+            match self.segs[self.edges[h.edge].seg].bbox {
+                Some(s) => b = [b[0].min(s[0]), b[1].min(s[1]), b[2].max(s[2]), b[3].max(s[3])],
+                None => return [f64::NEG_INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY],
+            }
+        }
+        b
     }
 
     /// The per-input winding numbers on the left of a half-edge.
@@ -715,6 +713,12 @@ impl Arrangement {
     }
 }
 
+/// Whether a rounded point lies strictly outside an outward-rounded box (then so does the exact
+/// point: rounding is monotonic).
+fn outside(q: [f64; 2], b: &[f64; 4]) -> bool {
+    q[0] < b[0] || q[0] > b[2] || q[1] < b[1] || q[1] > b[3]
+}
+
 /// An error from one pair or segment, naming where it is.
 fn located(e: Error, a: &Seg, b: Option<&Seg>) -> Error {
     let name = |s: &Seg| format!("input {} contour {} segment {}", s.input, s.contour, s.index);
@@ -727,213 +731,4 @@ fn located(e: Error, a: &Seg, b: Option<&Seg>) -> Error {
         },
         other => other,
     }
-}
-
-/// Splits, identifies, merges and sides (steps 2–4 of the module documentation).
-fn build(
-    segs: Vec<std::sync::Arc<Seg>>,
-    inputs: usize,
-    contours: Vec<Vec<Vec<usize>>>,
-    links: Vec<Link>,
-) -> Result<Arrangement> {
-    let n = segs.len();
-    let mut params: Vec<Vec<RealAlgebraic>> = vec![vec![rat(0).into(), rat(1).into()]; n];
-    for l in &links {
-        match l {
-            Link::Point(a, s, b, t) => {
-                params[*a].push(s.clone());
-                params[*b].push(t.clone());
-            }
-            Link::Arc(a, s, b, t) => {
-                params[*a].extend(s.iter().cloned());
-                params[*b].extend(t.iter().cloned());
-            }
-        }
-    }
-    for p in &mut params {
-        p.sort();
-        p.dedup();
-    }
-    let mut base = vec![0usize; n + 1];
-    for k in 0..n {
-        base[k + 1] = base[k] + params[k].len();
-    }
-    let node = |k: usize, t: &RealAlgebraic, params: &Vec<Vec<RealAlgebraic>>| -> usize {
-        base[k] + params[k].binary_search(t).expect("every linked parameter is a cut")
-    };
-    let mut nodes = Union::new(base[n]);
-    for input in &contours {
-        for c in input {
-            let live: Vec<usize> = c.iter().copied().filter(|&k| !segs[k].degenerate).collect();
-            for (i, &k) in live.iter().enumerate() {
-                let next = live[(i + 1) % live.len()];
-                let last = params[k].len() - 1;
-                nodes.union(base[k] + last, base[next], false);
-            }
-        }
-    }
-    for l in &links {
-        match l {
-            Link::Point(a, s, b, t) => {
-                nodes.union(node(*a, s, &params), node(*b, t, &params), false);
-            }
-            Link::Arc(a, s, b, t) => {
-                nodes.union(node(*a, &s[0], &params), node(*b, &t[0], &params), false);
-                nodes.union(node(*a, &s[1], &params), node(*b, &t[1], &params), false);
-            }
-        }
-    }
-    // raw edges, numbered by segment then parameter
-    let mut edge_base = vec![0usize; n + 1];
-    for k in 0..n {
-        edge_base[k + 1] = edge_base[k] + if segs[k].degenerate { 0 } else { params[k].len() - 1 };
-    }
-    let mut merge = Union::new(edge_base[n]);
-    let bad = |m: &str| Error::InvalidArgument { message: format!("internal: {m}") };
-    for l in &links {
-        let Link::Arc(a, s, b, t) = l else { continue };
-        if s[0] == s[1] {
-            continue;
-        }
-        let idx = |k: usize, x: &RealAlgebraic| params[k].binary_search(x).expect("a cut");
-        let (a0, a1) = (idx(*a, &s[0]), idx(*a, &s[1]));
-        let (ta, tb) = (idx(*b, &t[0]), idx(*b, &t[1]));
-        let (b0, b1, reversed) = if ta < tb { (ta, tb, false) } else { (tb, ta, true) };
-        if a1 - a0 != b1 - b0 {
-            return Err(bad("the pieces of an overlap do not match"));
-        }
-        for i in 0..a1 - a0 {
-            let ea = edge_base[*a] + a0 + i;
-            let eb = if reversed { edge_base[*b] + b1 - 1 - i } else { edge_base[*b] + b0 + i };
-            if !merge.union(ea, eb, reversed) {
-                return Err(bad("an overlap runs both ways"));
-            }
-        }
-    }
-    // vertices in order of first appearance
-    let mut vertex_of_root: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
-    let mut vertex_at = vec![];
-    let mut vertex = |nodes: &mut Union, k: usize, i: usize, params: &Vec<Vec<RealAlgebraic>>| -> usize {
-        let (r, _) = nodes.find(base[k] + i);
-        *vertex_of_root.entry(r).or_insert_with(|| {
-            vertex_at.push((k, params[k][i].clone()));
-            vertex_at.len() - 1
-        })
-    };
-    let mut edges: Vec<EdgeData> = vec![];
-    let mut edge_of_root: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
-    for k in 0..n {
-        if segs[k].degenerate {
-            continue;
-        }
-        for i in 0..params[k].len() - 1 {
-            let raw = edge_base[k] + i;
-            let (root, flip) = merge.find(raw);
-            let (lo, hi) = (params[k][i].clone(), params[k][i + 1].clone());
-            let (from, to) = (vertex(&mut nodes, k, i, &params), vertex(&mut nodes, k, i + 1, &params));
-            match edge_of_root.get(&root) {
-                None => {
-                    edge_of_root.insert(root, edges.len());
-                    // the first raw edge of a class is its root (unions keep the smaller index)
-                    debug_assert!(!flip);
-                    edges.push(EdgeData {
-                        seg: k,
-                        lo: lo.clone(),
-                        hi: hi.clone(),
-                        from,
-                        to,
-                        carriers: vec![(k, lo, hi, true)],
-                        left: vec![],
-                        right: vec![],
-                    });
-                }
-                Some(&e) => {
-                    let ed = &mut edges[e];
-                    let ok = if flip { ed.from == to && ed.to == from } else { ed.from == from && ed.to == to };
-                    if !ok {
-                        return Err(bad("an overlap joins pieces with different ends"));
-                    }
-                    ed.carriers.push((k, lo, hi, !flip));
-                }
-            }
-        }
-    }
-    let mut degree = vec![0usize; vertex_at.len()];
-    for e in &edges {
-        degree[e.from] += 1;
-        degree[e.to] += 1;
-    }
-    let mut arr = Arrangement { segs, inputs, contours, edges, vertex_at, degree, faces: std::sync::OnceLock::new() };
-    sides(&mut arr)?;
-    Ok(arr)
-}
-
-/// Step 4: the winding numbers on both sides of every edge, one ray per chain of edges joined
-/// at vertices of degree 2.
-fn sides(arr: &mut Arrangement) -> Result<()> {
-    let m = arr.edges.len();
-    let mut at: Vec<Vec<usize>> = vec![vec![]; arr.vertex_at.len()];
-    for (i, e) in arr.edges.iter().enumerate() {
-        at[e.from].push(i);
-        at[e.to].push(i);
-    }
-    let input_cycles: Vec<Vec<Vec<Piece<'_>>>> = arr
-        .contours
-        .iter()
-        .map(|cs| {
-            cs.iter()
-                .map(|c| {
-                    c.iter().filter(|&&k| !arr.segs[k].degenerate).map(|&k| whole(&arr.segs[k])).collect::<Vec<_>>()
-                })
-                .filter(|c: &Vec<Piece<'_>>| !c.is_empty())
-                .collect()
-        })
-        .collect();
-    let mut done: Vec<Option<(Vec<i64>, Vec<i64>)>> = vec![None; m];
-    for start in 0..m {
-        if done[start].is_some() {
-            continue;
-        }
-        let e = &arr.edges[start];
-        let (p, axis) = arr.beside_point(HalfEdge { edge: start, forward: true });
-        let mut left = vec![0i64; arr.inputs];
-        for (i, cycles) in input_cycles.iter().enumerate() {
-            left[i] = match winding(cycles, &p, axis, Origin::Excluded)? {
-                RayWinding::Off(w) => w,
-                RayWinding::On { .. } => unreachable!("an excluded origin is never reported"),
-            };
-        }
-        let mut right = left.clone();
-        for (k, _, _, fwd) in &e.carriers {
-            right[arr.segs[*k].input] -= if *fwd { 1 } else { -1 };
-        }
-        // propagate along the chain through vertices of degree 2
-        let mut stack = vec![(start, left, right)];
-        while let Some((i, l, r)) = stack.pop() {
-            if done[i].is_some() {
-                continue;
-            }
-            let (from, to) = (arr.edges[i].from, arr.edges[i].to);
-            for (v, leaving) in [(to, true), (from, false)] {
-                if at[v].len() != 2 {
-                    continue;
-                }
-                let j = if at[v][0] == i { at[v][1] } else { at[v][0] };
-                if j == i || done[j].is_some() {
-                    continue;
-                }
-                // the chain continues through v: j keeps the sides when it runs on from v
-                let ej = &arr.edges[j];
-                let same = if leaving { ej.from == v } else { ej.to == v };
-                if same { stack.push((j, l.clone(), r.clone())) } else { stack.push((j, r.clone(), l.clone())) }
-            }
-            done[i] = Some((l, r));
-        }
-    }
-    for (e, d) in arr.edges.iter_mut().zip(done) {
-        let (l, r) = d.expect("every edge is sided");
-        e.left = l;
-        e.right = r;
-    }
-    Ok(())
 }

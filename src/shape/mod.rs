@@ -26,7 +26,9 @@
 mod area;
 pub(crate) mod arrangement;
 mod boolean;
+mod build;
 mod changed;
+mod estimate;
 mod germ;
 mod hermite;
 pub(crate) mod pairs;

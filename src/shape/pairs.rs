@@ -114,6 +114,90 @@ fn hulls_separated(a: &[Point2<BigRational>], b: &[Point2<BigRational>]) -> bool
     false
 }
 
+/// What a certified `f64` filter decided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Filtered {
+    Yes,
+    No,
+    Unsure,
+}
+
+/// A bound on the error of every projection `q·n` computed in `f64` from the rounded points,
+/// `n` the rounded normal of a chord, against the exact projection on the exact chord's normal:
+/// with `M` the largest coordinate, each coordinate is off by at most `uM`, a normal's
+/// component by `4uM`, and a projection (two products and a sum of terms below `2M²`) by
+/// less than `64uM²`, plus a few subnormal spacings (`u = 2⁻⁵³`).
+fn projection_error(a: &[[f64; 2]], b: &[[f64; 2]]) -> f64 {
+    let m = a.iter().chain(b).flat_map(|p| p.iter()).fold(0f64, |m, c| m.max(c.abs()));
+    64.0 * f64::EPSILON / 2.0 * m * m + 1e-300
+}
+
+/// [`hulls_separated`] decided in `f64` when the rounding cannot change the answer: some chord
+/// separates the projections by more than twice the error bound (`Yes`: the rounded normal
+/// itself separates the exact points), or every chord's projections overlap by more than that
+/// (`No`: so do the exact chords' projections). Chords of points equal in `f64` are
+/// `Unsure` unless the points are equal exactly (the exact test skips them).
+fn hulls_separated_f64(a: (&[[f64; 2]], &[Point2<BigRational>]), b: (&[[f64; 2]], &[Point2<BigRational>])) -> Filtered {
+    let err = projection_error(a.0, b.0);
+    let proj = |n: [f64; 2], ps: &[[f64; 2]]| {
+        ps.iter()
+            .map(|q| q[0] * n[0] + q[1] * n[1])
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+    };
+    let mut all_overlap = true;
+    for (set, exact) in [a, b] {
+        for i in 0..set.len() {
+            for j in i + 1..set.len() {
+                let n = [set[i][1] - set[j][1], set[j][0] - set[i][0]];
+                if n == [0.0, 0.0] {
+                    if exact[i] != exact[j] {
+                        all_overlap = false; // a tiny exact chord: left to the exact test
+                    }
+                    continue;
+                }
+                let ((alo, ahi), (blo, bhi)) = (proj(n, a.0), proj(n, b.0));
+                if ahi + 2.0 * err < blo || bhi + 2.0 * err < alo {
+                    return Filtered::Yes;
+                }
+                if !(ahi - 2.0 * err > blo && bhi - 2.0 * err > alo) {
+                    all_overlap = false;
+                }
+            }
+        }
+    }
+    if all_overlap { Filtered::No } else { Filtered::Unsure }
+}
+
+/// [`split_at_common_point`] proved in `f64` (`true`) when a candidate normal `n`, rounded,
+/// has the other control points of each segment strictly on its side of the line through `p`,
+/// each `(q − p)·n` farther from 0 than its rounding error (`16uM·|n|₁`, `M` the largest
+/// coordinate: the rounded normal is a normal like any other, only the points are rounded);
+/// `false` when that does not settle (the exact test decides). A point equal to `p` in `f64`
+/// must equal it exactly.
+fn split_at_common_point_f64(
+    (pf, pe): ([f64; 2], &Point2<BigRational>),
+    a: (&[[f64; 2]], &[Point2<BigRational>]),
+    b: (&[[f64; 2]], &[Point2<BigRational>]),
+) -> bool {
+    let m = a.0.iter().chain(b.0).flat_map(|q| q.iter()).fold(0f64, |m, c| m.max(c.abs()));
+    let away = |ps: &[[f64; 2]]| -> Option<[f64; 2]> {
+        let first = if ps[0] == pf { ps.iter().find(|q| **q != pf) } else { ps.iter().rev().find(|q| **q != pf) };
+        first.map(|q| [q[0] - pf[0], q[1] - pf[1]])
+    };
+    let (Some(da), Some(db)) = (away(a.0), away(b.0)) else { return false };
+    let (na, nb) = (da[0].abs() + da[1].abs(), db[0].abs() + db[1].abs());
+    let candidates = [[db[0] * na - da[0] * nb, db[1] * na - da[1] * nb], db, [-da[0], -da[1]]];
+    let side = |(ps, exact): (&[[f64; 2]], &[Point2<BigRational>]), n: &[f64; 2], sign: f64| {
+        let margin = 8.0 * f64::EPSILON * m * (n[0].abs() + n[1].abs()) + 1e-300;
+        ps.iter().zip(exact).all(|(q, e)| {
+            if *q == pf { e == pe } else { sign * ((q[0] - pf[0]) * n[0] + (q[1] - pf[1]) * n[1]) > margin }
+        })
+    };
+    candidates
+        .iter()
+        .any(|n| n.iter().all(|c| c.is_finite()) && *n != [0.0, 0.0] && side(a, n, -1.0) && side(b, n, 1.0))
+}
+
 /// A polynomial segment monotone in some direction (its hodograph in a closed half-plane with a
 /// vector strictly inside), hence injective; or a rational quadratic with positive weights
 /// whose control points are not collinear (an arc of a proper conic).
@@ -158,8 +242,20 @@ pub(crate) fn injective_small(ps: &[[i64; 2]]) -> bool {
     })
 }
 
-/// The pairs of non-degenerate segments whose boxes meet (a sweep over `x`), or that have no box.
-pub(crate) fn candidate_pairs(segs: &[std::sync::Arc<Seg>]) -> Vec<(usize, usize)> {
+/// What [`sweep_pairs`] reports: a pair of segments to decide, or the box comparisons made
+/// while the sweep has handled `done` of its `of` steps.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Visit {
+    /// Segments `a < b` whose boxes meet (or one of which has no box).
+    Pair(usize, usize),
+    /// Comparisons of boxes, and the sweep's progress.
+    Scanned { comparisons: u64, done: usize, of: usize },
+}
+
+/// Visits every pair of non-degenerate segments whose boxes meet (a sweep over `x`), or that
+/// have no box, each once, without collecting them; stops (returning `false`) when `visit`
+/// returns `false`.
+pub(crate) fn sweep_pairs(segs: &[std::sync::Arc<Seg>], visit: &mut dyn FnMut(Visit) -> bool) -> bool {
     let mut boxed: Vec<usize> = vec![];
     let mut unboxed: Vec<usize> = vec![];
     for (k, s) in segs.iter().enumerate() {
@@ -170,29 +266,37 @@ pub(crate) fn candidate_pairs(segs: &[std::sync::Arc<Seg>]) -> Vec<(usize, usize
     }
     let bx = |k: usize| segs[k].bbox.expect("boxed");
     boxed.sort_by(|&a, &b| bx(a)[0].total_cmp(&bx(b)[0]));
-    let mut pairs = vec![];
+    let of = boxed.len() + unboxed.len();
     let mut active: Vec<usize> = vec![];
-    for &k in &boxed {
+    for (done, &k) in boxed.iter().enumerate() {
         let b = bx(k);
+        if !visit(Visit::Scanned { comparisons: 2 * active.len() as u64 + 1, done, of }) {
+            return false;
+        }
         active.retain(|&j| bx(j)[2] >= b[0]);
         for &j in &active {
             let c = bx(j);
-            if c[1] <= b[3] && b[1] <= c[3] {
-                pairs.push((j.min(k), j.max(k)));
+            if c[1] <= b[3] && b[1] <= c[3] && !visit(Visit::Pair(j.min(k), j.max(k))) {
+                return false;
             }
         }
         active.push(k);
     }
-    for &u in &unboxed {
+    for (i, &u) in unboxed.iter().enumerate() {
+        if !visit(Visit::Scanned { comparisons: segs.len() as u64, done: boxed.len() + i, of }) {
+            return false;
+        }
         for k in 0..segs.len() {
-            if k != u && !segs[k].degenerate && (segs[k].bbox.is_some() || k > u) {
-                pairs.push((u.min(k), u.max(k)));
+            if k != u
+                && !segs[k].degenerate
+                && (segs[k].bbox.is_some() || k > u)
+                && !visit(Visit::Pair(u.min(k), u.max(k)))
+            {
+                return false;
             }
         }
     }
-    pairs.sort_unstable();
-    pairs.dedup();
-    pairs
+    true
 }
 
 /// Pairs decided without a resultant: the common points found (possibly none), or `None`.
@@ -213,11 +317,26 @@ pub(crate) fn easy_pair(a: &Seg, b: &Seg) -> Option<Vec<(RealAlgebraic, RealAlge
     }
     let ends = [(&a.end, &b.start, 1, 0), (&a.start, &b.end, 0, 1), (&a.start, &b.start, 0, 0), (&a.end, &b.end, 1, 1)];
     let shared: Vec<_> = ends.iter().filter(|(p, q, _, _)| p == q).collect();
+    // certified f64 first: the exact tests take a few hundred reduced products per pair
+    let floats = a.approx.as_deref().zip(b.approx.as_deref());
+    let (ha, hb) = (ha.as_slice(), hb.as_slice());
     match shared.len() {
-        0 => hulls_separated(ha, hb).then(Vec::new),
+        0 => {
+            let decided = floats.map_or(Filtered::Unsure, |(fa, fb)| hulls_separated_f64((fa, ha), (fb, hb)));
+            match decided {
+                Filtered::Yes => Some(vec![]),
+                Filtered::No => None,
+                Filtered::Unsure => hulls_separated(ha, hb).then(Vec::new),
+            }
+        }
         1 => {
             let (p, _, s, t) = shared[0];
-            split_at_common_point(p, ha, hb).then(|| vec![(rat(*s).into(), rat(*t).into())])
+            let at = if *s == 1 { a.approx.as_ref().map(|f| f[f.len() - 1]) } else { a.approx.as_ref().map(|f| f[0]) };
+            let proved = match (floats, at) {
+                (Some((fa, fb)), Some(pf)) => split_at_common_point_f64((pf, *p), (fa, ha), (fb, hb)),
+                _ => false,
+            };
+            (proved || split_at_common_point(p, ha, hb)).then(|| vec![(rat(*s).into(), rat(*t).into())])
         }
         _ => None,
     }

@@ -6,6 +6,7 @@ use crate::num::scalar::rat;
 use crate::poly::Poly;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::rational::RationalBezier;
+use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
@@ -62,6 +63,8 @@ pub(crate) struct Seg {
     pub curve: RationalBezier<BigRational>,
     /// The power forms, computed when first needed (most segments of a glyph never are).
     forms: std::sync::OnceLock<Forms>,
+    /// `X`, `Y`, `W` with integer coefficients and one common scale, when first needed.
+    integer_forms: std::sync::OnceLock<[Vec<BigInt>; 3]>,
     /// Every weight equal: `W = 1` after scaling.
     pub polynomial: bool,
     /// The outward-rounded box `[x_min, y_min, x_max, y_max]` of the control points, when the
@@ -78,6 +81,11 @@ pub(crate) struct Seg {
     /// with TrueType's implied on-curve points at half-integers): then the hull tests and the
     /// areas run in `i64`/`i128`, exactly.
     pub small: Option<Vec<[i64; 2]>>,
+    /// The sizes of the homogeneous coordinates, for the cost estimates.
+    pub sizes: crate::work::Magnitudes,
+    /// The hull's points rounded to `f64`, when every coordinate is within `10^±150` or zero
+    /// (their squares and products stay normal): the certified filters of the pair tests.
+    pub approx: Option<Vec<[f64; 2]>>,
 }
 
 /// The outward-rounded box of points.
@@ -91,6 +99,15 @@ fn boxed(ps: &[Point2<BigRational>]) -> [f64; 4] {
         }
     }
     b
+}
+
+/// The points rounded to `f64`, when every coordinate is 0 or within `10^±150`.
+fn rounded(ps: &[Point2<BigRational>]) -> Option<Vec<[f64; 2]>> {
+    let round = |c: &BigRational| -> Option<f64> {
+        let f = crate::num::scalar::ratio_to_f64(c);
+        (f == 0.0 && c.is_zero() || (1e-150..=1e150).contains(&f.abs())).then_some(f)
+    };
+    ps.iter().map(|p| Some([round(&p.x)?, round(&p.y)?])).collect()
 }
 
 /// Twice the points as small integers (`|2c| < 2²⁴`), when they are (read off the reduced
@@ -155,7 +172,26 @@ impl Seg {
                 d
             }
         };
-        Ok(Seg { input, contour, index, curve, forms, polynomial, bbox, hull, degenerate, start, end, small })
+        let integer_forms = std::sync::OnceLock::new();
+        let sizes = crate::work::Magnitudes::of(h);
+        let approx = hull.as_ref().and_then(|ps| rounded(ps));
+        Ok(Seg {
+            input,
+            contour,
+            index,
+            curve,
+            forms,
+            integer_forms,
+            polynomial,
+            bbox,
+            hull,
+            degenerate,
+            start,
+            end,
+            small,
+            sizes,
+            approx,
+        })
     }
 
     fn forms(&self) -> &Forms {
@@ -217,8 +253,17 @@ impl Seg {
                 [crate::num::scalar::ratio_to_f64(&p.x), crate::num::scalar::ratio_to_f64(&p.y)]
             }
             None => {
-                let [x, y] = self.point_at_algebraic(t);
-                [x.to_f64(), y.to_f64()]
+                // the ratios rounded from enclosures (no exact image: mapping a root through
+                // a resultant is the costly step)
+                let [x, y, w] = self.integer_forms.get_or_init(|| {
+                    let all: Vec<BigRational> =
+                        [self.x(), self.y(), self.w()].iter().flat_map(|p| p.coeffs().iter().cloned()).collect();
+                    let scaled = crate::poly::integer::to_integer(&all);
+                    let (nx, ny) = (self.x().coeffs().len(), self.y().coeffs().len());
+                    [scaled[..nx].to_vec(), scaled[nx..nx + ny].to_vec(), scaled[nx + ny..].to_vec()]
+                });
+                let t = t.narrowed(60);
+                [t.map_rational_to_f64(x, w), t.map_rational_to_f64(y, w)]
             }
         }
     }

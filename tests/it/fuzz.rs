@@ -64,7 +64,8 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
     let c = |r: &mut Rng| curve(r, pts, 2);
     let mut a: Vec<String> = Vec::new();
     let s = |x: &str| x.to_string();
-    match r.below(18) {
+    match r.below(22) {
+        18..=21 => return shapes(r),
         0 => a.extend([s("eval"), s("--t"), number(r), c(r)]),
         1 => {
             a.extend([s("subdivide"), s("--t"), number(r)]);
@@ -176,6 +177,131 @@ fn case(r: &mut Rng) -> (Vec<String>, Option<String>) {
         }
     }
     (a, None)
+}
+
+/// Numbers of shapes: small, fractional, and of very different magnitudes (past the `f64`
+/// range too).
+const SHAPE_NUMBERS: &[&str] = &[
+    "0",
+    "1",
+    "2",
+    "3",
+    "-1",
+    "0.5",
+    "7",
+    "10",
+    "1e300",
+    "-1e300",
+    "1e-300",
+    "1e400",
+    "12345678901234567890",
+    "1e-20",
+];
+
+/// SVG path data: a few closed contours of lines, quadratics and cubics.
+fn path_data(r: &mut Rng) -> String {
+    let mut d = String::new();
+    for _ in 0..r.below(2) + 1 {
+        let n = |r: &mut Rng| -> String {
+            if r.chance(80) {
+                r.pick(&["0", "1", "2", "3", "5", "0.5"]).to_string()
+            } else {
+                r.pick(SHAPE_NUMBERS).to_string()
+            }
+        };
+        let ns = |r: &mut Rng, k: usize| (0..k).map(|_| n(r)).collect::<Vec<_>>().join(" ");
+        d += &format!("M{}", ns(r, 2));
+        for _ in 0..r.below(4) + 1 {
+            let seg = match r.below(5) {
+                0 => format!(" L{}", ns(r, 2)),
+                1 => format!(" Q{}", ns(r, 4)),
+                2 => format!(" C{}", ns(r, 6)),
+                3 => format!(" H{}", n(r)),
+                _ => format!(" V{}", n(r)),
+            };
+            d += &seg;
+        }
+        d += " Z ";
+    }
+    d
+}
+
+/// `boolean`, `arrange`, `lint` and `scan` on path data and SVG documents: magnitudes past the
+/// `f64` range, nested and huge transforms, tight budgets, absurd thread counts.
+fn shapes(r: &mut Rng) -> (Vec<String>, Option<String>) {
+    let s = |x: &str| x.to_string();
+    let mut a: Vec<String> = match r.below(6) {
+        0 => {
+            let op = r.pick(&["union", "intersection", "difference", "xor"]);
+            vec![s("boolean"), s(op), path_data(r), path_data(r)]
+        }
+        1 => vec![s("boolean"), s("simplify"), path_data(r)],
+        2 => vec![s("arrange"), path_data(r), path_data(r)],
+        3 => vec![s("lint"), s("--path"), path_data(r)],
+        _ => {
+            // an SVG document on disk: nested or huge transforms around a path
+            static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+            let k = COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            let dir = std::env::temp_dir().join(format!("casteljau-fuzz-svg-{}-{k}", std::process::id()));
+            std::fs::create_dir_all(&dir).unwrap();
+            // (deep nests of transforms whose numbers grow fast are the readers' own cases)
+            let (depth, t) = match r.below(3) {
+                0 => (1000, "scale(3)"),
+                1 => (
+                    *[1usize, 2, 10].get(r.below(3)).unwrap(),
+                    r.pick(&["scale(1e300)", "translate(1e300 0)", "scale(1e-300)"]),
+                ),
+                _ => (
+                    *[1usize, 10].get(r.below(2)).unwrap(),
+                    r.pick(&["scale(1.0001)", "rotate(45)", "matrix(0 1 1 0 0 0)"]),
+                ),
+            };
+            let svg = format!(
+                "<svg xmlns=\"http://www.w3.org/2000/svg\">{}<path d=\"{}\"/>{}</svg>",
+                format!("<g transform=\"{t}\">").repeat(depth),
+                path_data(r),
+                "</g>".repeat(depth)
+            );
+            let file = dir.join("s.svg");
+            std::fs::write(&file, svg).unwrap();
+            let f = file.to_string_lossy().into_owned();
+            match r.below(4) {
+                0 => vec![s("boolean"), s("simplify"), f],
+                1 => vec![s("arrange"), f],
+                2 => vec![s("lint"), f],
+                _ => vec![s("scan"), f],
+            }
+        }
+    };
+    if r.chance(40) {
+        a.push(s("--json"));
+    }
+    // within the 10 s cap whatever the machine's load: a budget of about a second at most
+    if a[0] != "scan" {
+        a.extend([s("--max-work"), s(r.pick(&["1", "1e6", "1e8", "1e9", "1e9"]))]);
+    }
+    if a[0] == "lint" && r.chance(20) {
+        a.extend([s("--threads"), s("100000")]);
+    }
+    (a, None)
+}
+
+/// Whether the output has a float that is not finite as Rust writes it (`inf`, `NaN`), in
+/// words or path data (`Linf`), not inside a word (`inflection`).
+fn has_non_finite(text: &str) -> bool {
+    // error lines quote the input's token (`bad number "inf"`): only answers count
+    text.lines().filter(|l| !l.contains("\"error\"") && !l.contains("error:")).any(non_finite_in_line)
+}
+
+fn non_finite_in_line(text: &str) -> bool {
+    let b = text.as_bytes();
+    ["inf", "NaN"].iter().any(|w| {
+        text.match_indices(w).any(|(i, _)| {
+            let before = i.checked_sub(1).map(|j| b[j]);
+            let after = b.get(i + w.len()).copied();
+            !before.is_some_and(|c| c.is_ascii_lowercase()) && !after.is_some_and(|c| c.is_ascii_alphanumeric())
+        })
+    })
 }
 
 /// Inputs at and past the documented sizes (degree 10,000, 1000-character parameters, nested
@@ -319,8 +445,17 @@ pub(crate) fn check(args: &[String], stdin: Option<&str>, cap: Duration) -> Opti
             return Some(format!("a weight message that does not say which: {stderr}"));
         }
     }
+    // finite output or a refusal (a number that is not finite never printed)
+    if has_non_finite(&stdout) {
+        return Some(format!(
+            "a number that is not finite in the output: {}",
+            &stdout[..stdout.floor_char_boundary(300)]
+        ));
+    }
     let json = args.iter().any(|a| a == "--json");
-    if code == 2 && stderr.trim().is_empty() && !(json && stdout.contains("\"error\"")) {
+    // lint reports a glyph it could not check on its own line of the report
+    let lint_error = args.first().is_some_and(|a| a == "lint") && stdout.contains(": error: ");
+    if code == 2 && stderr.trim().is_empty() && !(json && stdout.contains("\"error\"")) && !lint_error {
         return Some("exit 2 without a message".into());
     }
     if json && !args.iter().any(|a| a == "plot") {
@@ -344,6 +479,11 @@ fn run_cases(count: usize, seed: u64) {
             && args.get(1).is_some_and(|p| p.contains("casteljau-fuzz-claims"))
         {
             let _ = std::fs::remove_dir_all(&args[1]);
+        }
+        if let Some(svg) = args.iter().find(|a| a.contains("casteljau-fuzz-svg-"))
+            && let Some(dir) = std::path::Path::new(svg).parent()
+        {
+            let _ = std::fs::remove_dir_all(dir);
         }
         if let Some(why) = why {
             let shown = |x: &str| {

@@ -8,6 +8,8 @@ mod common;
 
 #[cfg(feature = "cli")]
 mod algebraic;
+#[cfg(feature = "cli")]
+mod budgets;
 #[cfg(feature = "catalogue")]
 mod catalogue;
 mod classify;

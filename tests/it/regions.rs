@@ -191,7 +191,7 @@ proptest! {
             let found = Shape::from_contours(s).unwrap();
             let v = check_against(op, &inputs, o, &r, &found, &ratio(1, 1000), &Budget::unlimited()).unwrap();
             prop_assert!(v.agree, "{:?} {} / {}: {:?}", op, a.join(" "), b.join(" "), v.problems);
-            prop_assert!(v.witness.is_none() && v.distance_bound <= 1e-3);
+            prop_assert!(v.witness.is_none() && v.distance_bound.is_some_and(|d| d <= 1e-3));
         }
         // and a wrong region is caught: a unit square moved into the answer's complement
         let far: Shape = format!("{} M20 20 H21 V21 H20 Z", r.path).parse().unwrap();

@@ -116,6 +116,9 @@ pub(crate) fn classified(c: &Classified, float: bool, json: bool) -> Answer {
 /// The text or JSON (written out in the report's field order) of a classification.
 fn classification<K: Radical>(r: &ClassifyReport<K>, float: bool, json: bool) -> Answer {
     if json {
+        if let Some(field) = crate::finite::first_non_finite(r) {
+            return Answer { text: String::new(), json: Json::Overflow(field), failed: false };
+        }
         let s = serde_json::to_string(r).expect("exact strings and finite floats serialize");
         return Answer { text: String::new(), json: Json::Object(s), failed: false };
     }

@@ -527,7 +527,8 @@ pub struct ProveArgs {
     /// Regenerate the catalogue's README (default proofs/README.md) from this run.
     #[arg(long, num_args = 0..=1, default_missing_value = "proofs/README.md")]
     pub write_readme: Option<std::path::PathBuf>,
-    /// Threads checking claims (0: all cores); the report keeps the catalogue's order.
+    /// Threads checking claims (0: all cores; never more than the cores or the claims); the
+    /// report keeps the catalogue's order.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// No progress line on a terminal.
@@ -580,7 +581,8 @@ pub struct CurveArgs {
     /// JSON Lines output with exact strings.
     #[arg(long)]
     pub json: bool,
-    /// Threads answering a batch (0: all cores). Output stays in input order.
+    /// Threads answering a batch (0: all cores; never more than the cores, one for a single
+    /// curve). Output stays in input order.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// No progress line on a terminal.
@@ -633,7 +635,7 @@ pub struct ScanArgs {
     /// to it, exactly). Font coordinates are always the font's exact values.
     #[arg(long, value_enum, default_value_t = Numbers::Exact)]
     pub numbers: Numbers,
-    /// Threads (0: all cores). Output stays in file order.
+    /// Threads (0: all cores; never more than the cores). Output stays in file order.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// Work budget of reading an SVG file, in work units (about 1 ns each): the exact products
@@ -708,7 +710,8 @@ pub struct LintArgs {
     /// against it as a whole.
     #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = parse_work)]
     pub max_work: f64,
-    /// Threads (0: all cores). Output stays in glyph order.
+    /// Threads (0: all cores; never more than the cores, one for --path). Output stays in glyph
+    /// order.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// No summary and no progress on stderr (text mode keeps its summary on stdout).
@@ -790,7 +793,7 @@ pub struct BatchOptions {
     /// JSON Lines output with exact strings.
     #[arg(long)]
     pub json: bool,
-    /// Threads answering a batch (0: all cores).
+    /// Threads answering a batch (0: all cores; never more than the cores).
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// No progress line on a terminal.

@@ -91,7 +91,7 @@ pub fn batch_lines_with(
         eprintln!("casteljau: --dim must be between 1 and {MAX_DIM}");
         return 2;
     }
-    let Some(pool) = thread_pool(args.threads) else { return 2 };
+    let Some(pool) = thread_pool(args.threads, args.curve.as_ref().map(|_| 1)) else { return 2 };
     let json = args.json;
     let mut blocks = match (&args.curve, &args.input) {
         (Some(_), Some(_)) => {

@@ -175,13 +175,7 @@ pub(crate) fn prove(args: &ProveArgs, out: &mut dyn Write) -> i32 {
     let (mut passed, mut failed, mut malformed) = (0, 0, 0);
     // claims are independent: check them on all cores, report in catalogue order
     let finished = std::sync::atomic::AtomicUsize::new(0);
-    let pool = match rayon::ThreadPoolBuilder::new().num_threads(args.threads).build() {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("casteljau: cannot start {} threads: {e}", args.threads);
-            return 2;
-        }
-    };
+    let Some(pool) = crate::pipeline::thread_pool(args.threads, Some(claims.len())) else { return 2 };
     let checked: Vec<_> = pool.install(|| {
         use rayon::prelude::*;
         claims

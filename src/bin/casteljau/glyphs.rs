@@ -253,7 +253,7 @@ pub fn run(args: &BooleanArgs, out: &mut dyn Write) -> i32 {
             return 2;
         }
     };
-    let Some(pool) = crate::batch::thread_pool(args.batch.threads) else { return 2 };
+    let Some(pool) = crate::batch::thread_pool(args.batch.threads, None) else { return 2 };
     // every file is read and every --glyphs name checked before any work
     let mut fonts: Vec<(String, Vec<u8>, u32)> = vec![];
     for file in &args.operands {

@@ -106,6 +106,7 @@ pub fn run(args: &IntersectArgs, out: &mut dyn Write) -> i32 {
         };
         // only the output asked for is rendered (an algebraic number's spelling has a cost)
         Ok(if json_out {
+            crate::finite::check("the intersections", &r)?;
             let json = serde_json::to_string(&r).expect("exact strings and finite floats serialize");
             Answer { text: String::new(), json: Json::Object(json), failed: false }
         } else {

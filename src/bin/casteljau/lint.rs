@@ -47,7 +47,19 @@ impl Linter {
     }
 
     fn check(&self, at: Source<'static>, label: String, glyph: Glyph, outer: Orientation) -> Unit {
-        match lint(&glyph, &self.options(outer)) {
+        // finite output or a refusal: an outline beyond the f64 range has no drawing, and its
+        // findings' float fields would overflow
+        let finite = |findings: &[casteljau::lint::Finding]| -> casteljau::error::Result<()> {
+            for f in findings {
+                crate::finite::check(&format!("the {} finding", f.kind()), f)?;
+                crate::finite::check_text(&format!("the {} finding", f.kind()), &f.message)?;
+            }
+            Ok(())
+        };
+        let checked = crate::finite::check_contours(&glyph.contours)
+            .and_then(|()| lint(&glyph, &self.options(outer)))
+            .and_then(|findings| finite(&findings).map(|()| findings));
+        match checked {
             Ok(findings) => Unit { at, label, glyph, findings, error: None, skipped: None },
             Err(e) => Unit { at, label, glyph, findings: vec![], error: Some(e.to_string()), skipped: None },
         }
@@ -182,7 +194,7 @@ fn run_checked(args: &LintArgs, out: &mut dyn Write) -> Result<i32, String> {
         mode: args.numbers.into(),
         json: args.json,
     };
-    let Some(pool) = crate::batch::thread_pool(args.threads) else { return Ok(2) };
+    let Some(pool) = crate::batch::thread_pool(args.threads, args.path.as_ref().map(|_| 1)) else { return Ok(2) };
     // every file is read before any work
     let mut sources: Vec<(String, Vec<u8>)> = vec![];
     for file in &args.files {

@@ -372,6 +372,11 @@ pub(crate) fn drawing(u: &Unit, marked: &[(usize, &Finding)]) -> Option<String> 
         s.push_str("</g>");
     }
     s.push_str("</svg>");
+    // finite output: a drawing with a number beyond the f64 range is left out (the glyph's
+    // error says why)
+    if crate::finite::non_finite_token(&s.replace(&esc(&u.label), "")).is_some() {
+        return None;
+    }
     Some(s)
 }
 

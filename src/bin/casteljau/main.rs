@@ -14,6 +14,8 @@
 //!   [`check`]: a float library's answers against the exact ones; [`shapes`]: `boolean` and
 //!   `arrange` on path data and SVG files, [`glyphs`]: `boolean simplify` on every glyph of fonts;
 //!   [`remove_overlaps`]: overlap removal that writes the font.
+//! * [`finite`]: no `inf` or `NaN` in any output (a refusal instead); [`files`]: output files,
+//!   all or nothing.
 
 mod answers;
 mod args;
@@ -22,6 +24,7 @@ mod check;
 mod commands;
 mod curves;
 mod files;
+mod finite;
 mod glyphs;
 mod input;
 mod intersect;

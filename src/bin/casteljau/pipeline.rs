@@ -69,12 +69,23 @@ pub(crate) fn ordered_parallel(
     })
 }
 
-/// The worker pool of `--threads N` (0: all cores); `None` after saying why on stderr.
-pub fn thread_pool(threads: usize) -> Option<rayon::ThreadPool> {
-    match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+/// The workers of `--threads N`: `N` (0: every core), but never more than the machine's cores
+/// nor more than `items`, the pieces of work there are when they are known (one curve, one
+/// path): more threads would only be started to wait.
+pub fn worker_count(requested: usize, items: Option<usize>) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+    let wanted = if requested == 0 { cores } else { requested.min(cores) };
+    items.map_or(wanted, |n| wanted.min(n.max(1)))
+}
+
+/// The worker pool of `--threads N` ([`worker_count`] threads for `items` pieces of work, when
+/// known); `None` after saying why on stderr.
+pub fn thread_pool(threads: usize, items: Option<usize>) -> Option<rayon::ThreadPool> {
+    let n = worker_count(threads, items);
+    match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
         Ok(p) => Some(p),
         Err(e) => {
-            eprintln!("casteljau: cannot start {threads} threads: {e}");
+            eprintln!("casteljau: cannot start {n} threads: {e}");
             None
         }
     }

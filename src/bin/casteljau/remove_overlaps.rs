@@ -126,7 +126,7 @@ fn run_checked(args: &RemoveOverlapsArgs, out: &mut dyn Write) -> Result<i32, St
     };
     let total = glyphs.as_ref().map_or(font.num_glyphs() as usize, Vec::len);
     let options = WriteOptions { keep_hinting: args.keep_hinting, glyphs };
-    let pool = crate::pipeline::thread_pool(args.threads).ok_or("cannot start the threads")?;
+    let pool = crate::pipeline::thread_pool(args.threads, Some(total)).ok_or("cannot start the threads")?;
     let progress = !args.quiet && std::io::stderr().is_terminal();
     let done = AtomicUsize::new(0);
     let max_work = args.max_work;

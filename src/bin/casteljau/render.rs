@@ -23,6 +23,9 @@ pub enum Json {
     Value(Value),
     /// A serialized object (`{…}`); `"line"` is written first.
     Object(String),
+    /// A result whose float field (named) is not finite: refused in JSON mode
+    /// ([`crate::finite`]).
+    Overflow(String),
 }
 
 impl From<(String, Value)> for Answer {
@@ -34,7 +37,11 @@ impl From<(String, Value)> for Answer {
 impl Answer {
     /// An answer whose JSON is `value`'s `Serialize` (as a [`Json::Value`]: keys in sorted order).
     pub fn typed(text: String, value: &impl serde::Serialize) -> Self {
-        Answer { text, json: Json::Value(typed_json(value)), failed: false }
+        let json = match crate::finite::first_non_finite(value) {
+            Some(field) => Json::Overflow(field),
+            None => Json::Value(typed_json(value)),
+        };
+        Answer { text, json, failed: false }
     }
 
     /// A failed check (exit code 1) when `failed`.
@@ -97,6 +104,17 @@ impl Rendered {
     /// Renders the answer of `line` (`None`: a single curve from the command line).
     pub(crate) fn add(&mut self, json: bool, line: Option<usize>, result: Result<Answer>) {
         self.last_line = line.unwrap_or(0);
+        // finite output or a refusal: the float fields in JSON, the numbers of the text
+        let result = result.and_then(|a| {
+            match &a.json {
+                Json::Overflow(field) if json => {
+                    return Err(crate::finite::overflow("the answer", &format!("the float field {field}")));
+                }
+                _ if !json => crate::finite::check_text("the answer", &a.text)?,
+                _ => {}
+            }
+            Ok(a)
+        });
         let out = &mut self.out;
         // writing to a Vec cannot fail
         let _ = match result {
@@ -123,6 +141,7 @@ impl Rendered {
                             Ok(())
                         }
                         (Json::Object(s), None) => writeln!(out, "{s}"),
+                        (Json::Overflow(_), _) => Ok(()), // refused above
                     }
                 } else if let Some(l) = line {
                     // batch input: every answer names its line, like every error

@@ -121,6 +121,12 @@ impl Scanner {
                             continue;
                         }
                         let r = ScanRecord::Segment { at: &at, index, classification: &k, points: ps, flags };
+                        // finite output or a refusal (the float fields of a huge segment)
+                        if let Some(field) = crate::finite::first_non_finite(&r) {
+                            let e = crate::finite::overflow("the segment", &format!("the float field {field}"));
+                            self.error_line(&mut out, &at, Some(index), e.to_string());
+                            continue;
+                        }
                         write_record(&mut out.lines, &r);
                     }
                     Segment::Skipped { from, to, reason } => {
@@ -175,7 +181,7 @@ pub fn run(args: &ScanArgs, out: &mut dyn Write) -> i32 {
         eprintln!("casteljau: scan needs FILE arguments or --path");
         return 2;
     }
-    let Some(pool) = crate::batch::thread_pool(args.threads) else { return 2 };
+    let Some(pool) = crate::batch::thread_pool(args.threads, None) else { return 2 };
     let variation = match args.variation.as_deref().map(parse_variation).transpose() {
         Ok(v) => v,
         Err(e) => {

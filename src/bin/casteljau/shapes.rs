@@ -218,8 +218,11 @@ fn run_shapes(args: &BooleanArgs, op: BooleanOp, out: &mut dyn Write) -> Result<
         }
         let failed = verdict.as_ref().is_some_and(|v| !v.agree);
         // only the output asked for is rendered
+        // finite output or a refusal: the rounded path and the float fields
+        crate::finite::check_text("the result's path", &result.path)?;
         Ok(if json {
             let j = ResultJson { op, fill: options.fill, result: &result, verdict: verdict.as_ref() };
+            crate::finite::check("the result", &j)?;
             let s = serde_json::to_string(&j).expect("exact strings and finite floats serialize");
             Answer { text: String::new(), json: Json::Object(s), failed }
         } else {
@@ -334,6 +337,7 @@ fn run_arrange(args: &ArrangeArgs, out: &mut dyn Write) -> Result<()> {
     let written = if args.json {
         let located = points.iter().zip(&locations).map(|(q, at)| Located { point: q, at }).collect();
         let j = ArrangementJson { inputs: arr.inputs(), vertices, edges, faces: &faces, locations: located };
+        crate::finite::check("the arrangement", &j)?;
         writeln!(out, "{}", serde_json::to_string(&j).expect("exact strings and finite floats serialize"))
     } else {
         let mut text = format!(

@@ -85,7 +85,11 @@ impl RealAlgebraic {
     fn canonical_interval(&self) -> Option<(BigRational, BigRational)> {
         let Repr::Root { poly, .. } = &self.0 else { return None };
         let mut x = self.clone();
-        for j in 4u64.. {
+        // the cell of level j holding x, and whether it holds no other root inside; a cell that
+        // isolates x contains the finer cells holding x, so isolation is monotone in j: a
+        // galloping search then a bisection find the coarsest level in O(log j) isolations
+        // (numbers of very different magnitudes need levels in the thousands)
+        let mut cell_at = |j: u64| -> Option<(BigRational, BigRational, bool)> {
             let cell = BigRational::new(BigInt::one(), BigInt::one() << j);
             x.refine(&cell);
             let Repr::Root { lo, hi, .. } = &x.0 else { return None };
@@ -102,11 +106,29 @@ impl RealAlgebraic {
                 .iter()
                 .filter(|r| !matches!(r, Root::Exact(e) if *e == a || *e == b))
                 .count();
-            if inside == 1 {
-                return Some((a, b));
+            Some((a, b, inside == 1))
+        };
+        let (mut coarse, mut fine) = (3u64, 4u64);
+        let mut found = loop {
+            let (a, b, isolated) = cell_at(fine)?;
+            if isolated {
+                break (a, b);
+            }
+            coarse = fine;
+            fine = fine.checked_mul(2)?;
+        };
+        // the coarsest isolating level lies in (coarse, fine]
+        while fine - coarse > 1 {
+            let mid = coarse + (fine - coarse) / 2;
+            let (a, b, isolated) = cell_at(mid)?;
+            if isolated {
+                fine = mid;
+                found = (a, b);
+            } else {
+                coarse = mid;
             }
         }
-        None
+        Some(found)
     }
 }
 
@@ -115,8 +137,12 @@ impl fmt::Display for RealAlgebraic {
     /// coarsest dyadic interval `[k/2^j, (k+1)/2^j]`, `j ≥ 4`, that holds no other root of the
     /// polynomial inside (the same string for the same number, whatever interval it carries).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // a quadratic's root is written from its own isolating interval (any one picks the same
+        // root); the canonical interval only for the other roots
+        let quadratic = matches!(&self.0, Repr::Root { poly, .. } if poly.len() == 3);
         let mut shown = self.clone();
-        if let Some((lo, hi)) = self.canonical_interval()
+        if !quadratic
+            && let Some((lo, hi)) = self.canonical_interval()
             && let Repr::Root { poly, .. } = &self.0
         {
             shown = RealAlgebraic(Repr::Root { poly: poly.clone(), lo, hi });
@@ -131,7 +157,10 @@ impl fmt::Display for RealAlgebraic {
                 };
                 match quadratic_roots(&c[0], &c[1], &c[2]).into_iter().map(|(x, _)| x).find(inside) {
                     Some(x) => write!(f, "{x}"),
-                    None => write!(f, "root {} of {} in [{lo}, {hi}]", shown.root_index(), poly_text(poly)),
+                    None => {
+                        let (lo, hi) = self.canonical_interval().unwrap_or((lo.clone(), hi.clone()));
+                        write!(f, "root {} of {} in [{lo}, {hi}]", shown.root_index(), poly_text(poly))
+                    }
                 }
             }
             Repr::Root { poly, lo, hi } => {

@@ -45,6 +45,28 @@ fn bernstein_on(p: &[BigRational], lo: &BigRational, hi: &BigRational) -> Vec<Bi
 }
 
 impl RealAlgebraic {
+    /// One round of a refinement loop whose rounds each cost a root isolation: narrows to
+    /// `steps` more bits (Newton steps proved by exact signs, or `steps` bisections where
+    /// those do not apply), then doubles `steps`, so the rounds grow with the logarithm of the
+    /// bits a decision needs rather than with the bits (numbers of very different magnitudes
+    /// need thousands).
+    fn refine_faster(&mut self, steps: &mut usize) {
+        let (lo, hi) = self.interval();
+        let width = hi.clone() - &lo;
+        // bits below the binary point of the width, and above it of the magnitude: the
+        // precision relative to the number that narrows by `steps` more bits
+        let (below, above) = (width.recip().to_integer().bits(), lo.abs().max(hi.abs()).to_integer().bits());
+        let target = below.saturating_add(above).saturating_add(*steps as u64);
+        let narrowed = self.refine_newton(target) && {
+            let (lo, hi) = self.interval();
+            (hi - lo) * rat(2) <= width
+        };
+        if !narrowed {
+            self.bisect_times(*steps);
+        }
+        *steps = steps.saturating_mul(2);
+    }
+
     /// The sign of `q(x)` for this number `x` (`q` in power form), exactly: zero when `q` and
     /// the number's polynomial share a root in its interval, otherwise the sign on an interval
     /// refined until `q` has no root in it.
@@ -67,16 +89,18 @@ impl RealAlgebraic {
                 return Ordering::Equal;
             }
         }
+        // each round narrows twice as far as the last (`refine_faster`)
+        let qr = Poly::new(qi.iter().map(|c| BigRational::from_integer(c.clone())).collect());
+        let mut steps = 1usize;
         loop {
             if let Some(r) = x.to_rational() {
                 return adjust(sign_at(&qi, r));
             }
             let (lo, hi) = x.interval();
-            let qr = Poly::new(qi.iter().map(|c| BigRational::from_integer(c.clone())).collect());
             if Self::roots_in(&qr, &lo, &hi).is_empty() {
                 return adjust(sign_at(&qi, &lo));
             }
-            x.bisect();
+            x.refine_faster(&mut steps);
         }
     }
 
@@ -149,6 +173,7 @@ impl RealAlgebraic {
         };
         let (num_d, den_d) = (pad(num), pad(den));
         let mut x = self.clone();
+        let mut steps = 1usize;
         loop {
             let (lo, hi) = x.interval();
             if let Some(xr) = x.to_rational() {
@@ -167,7 +192,7 @@ impl RealAlgebraic {
                     return roots.into_iter().next().expect("one root");
                 }
             }
-            x.bisect();
+            x.refine_faster(&mut steps);
         }
     }
 

@@ -316,6 +316,16 @@ impl RealAlgebraic {
         }
     }
 
+    /// Bisects `times` times (stopping early when the number turns out rational).
+    pub(crate) fn bisect_times(&mut self, times: usize) {
+        for _ in 0..times {
+            if self.to_rational().is_some() {
+                return;
+            }
+            self.bisect();
+        }
+    }
+
     /// Narrows the interval below `width` (`width > 0`).
     pub fn refine(&mut self, width: &BigRational) {
         while let Repr::Root { lo, hi, .. } = &self.0 {
