@@ -177,7 +177,7 @@ fn rewrite(
     };
     // the written contours by (component, contour) of their origin, anchors kept at theirs
     let mut keyed: Vec<((usize, usize), GridContour, Vec<usize>)> = vec![];
-    for (w, c) in plan.write(&choice).into_iter().zip(&plan.contours) {
+    for (w, c) in as_lines(&plan, plan.write(&choice), &straight).into_iter().zip(&plan.contours) {
         let (i, contour) = exact[c.exact].origin;
         let (_, index, component) = &shapes[i];
         keyed.push(((*component, index.get(contour).copied().unwrap_or(contour)), w.contour, w.source));
@@ -209,9 +209,11 @@ fn rewrite(
         }
     }
     for (k, i) in straight {
-        let first = plan.contours[k].pieces[i].controls[0];
-        if let Some((ci, (_, _, source))) = keyed.iter().enumerate().find(|(_, e)| e.2.contains(&first)) {
-            let point = source.iter().position(|&s| s == first).unwrap_or(0);
+        // reported at its start when that is written, else at its first control point
+        let piece = &plan.contours[k].pieces[i];
+        let at = if piece.implied { piece.controls[0] } else { piece.start };
+        if let Some((ci, (_, _, source))) = keyed.iter().enumerate().find(|(_, e)| e.2.contains(&at)) {
+            let point = source.iter().position(|&s| s == at).unwrap_or(0);
             repairs.push(Repair::Straightened { contour: ci, point });
         }
     }
@@ -234,6 +236,31 @@ fn rewrite(
         repairs,
     };
     Ok(GlyphDecision::Rewritten { contours, report })
+}
+
+/// The curves certified straight (their rounded control points in order on the line between
+/// their ends) written as lines where both ends are written on-curve points: the same trace,
+/// so the same region, boundary and certificate, and no curve collapsed onto a line. A TrueType
+/// curve whose end is implied by its neighbour's control point keeps its own, on the line.
+fn as_lines(
+    plan: &Plan,
+    mut written: Vec<super::round::Written>,
+    straight: &[(usize, usize)],
+) -> Vec<super::round::Written> {
+    for &(k, i) in straight {
+        let pieces = &plan.contours[k].pieces;
+        let end_implied = pieces[(i + 1) % pieces.len()].implied;
+        if pieces[i].implied || end_implied {
+            continue;
+        }
+        let w = &mut written[k];
+        let keep: Vec<bool> = w.source.iter().map(|s| !pieces[i].controls.contains(s)).collect();
+        let mut it = keep.iter();
+        w.contour.points.retain(|_| *it.next().expect("one flag per point"));
+        let mut it = keep.iter();
+        w.source.retain(|_| *it.next().expect("one flag per point"));
+    }
+    written
 }
 
 fn uncertified(reason: String) -> GlyphDecision {

@@ -108,8 +108,9 @@ pub enum Repair {
         point: usize,
     },
     /// A curve of the exact region that no grid candidate within one unit keeps curved,
-    /// written with its control points in order on the straight piece between its ends (it
-    /// lies within `distance_bound` of that piece).
+    /// written as the line between its rounded ends (it lies within `distance_bound` of that
+    /// line). A TrueType curve whose end is an implied point keeps its control points, in order
+    /// on that line. `point` is the line's start.
     Straightened {
         /// The contour (output numbering).
         contour: usize,

@@ -371,3 +371,24 @@ fn overlaps_tuffy_glyphs_are_all_certified() {
     let Repair::DroppedSliver { area } = &repairs[1] else { unreachable!() };
     assert_eq!(area.to_string(), "-551/200000"); // an irrational area: the bound 10⁻⁶ beyond it
 }
+
+#[test]
+fn overlaps_a_curve_no_grid_point_keeps_curved_is_written_as_a_line() {
+    // DejaVu Serif's Ccedilla (a composite: the C and the cedilla, as fontTools draws them):
+    // the cedilla's top crosses the C's bottom curve at two points about 5 units apart, and
+    // the piece of that curve between them bulges by less than a unit: no grid placement of
+    // its control point keeps it curved, so it is written as the line between its ends, not
+    // as a curve collapsed onto that line
+    let c = "M1444 395Q1378 186 1222.5 78.5Q1067 -29 829 -29Q683 -29 558.0 21.0Q433 71 336 168Q224 280 169.5 \
+             422.5Q115 565 115 745Q115 1093 316.0 1306.5Q517 1520 846 1520Q968 1520 1106.0 1488.0Q1244 1456 1403 \
+             1391V1047H1290Q1253 1235 1141.5 1324.0Q1030 1413 829 1413Q590 1413 467.0 1243.5Q344 1074 344 745Q344 \
+             417 467.0 247.5Q590 78 829 78Q996 78 1104.0 157.5Q1212 237 1260 395Z";
+    let cedilla = "M910 0Q974 -64 1005.5 -120.0Q1037 -176 1037 -225Q1037 -306 974.0 -350.5Q911 -395 799 -395Q757 \
+                   -395 713.0 -389.0Q669 -383 623 -371V-240Q664 -257 703.5 -265.5Q743 -274 778 -274Q835 -274 868.0 \
+                   -247.5Q901 -221 901 -176Q901 -148 879.0 -104.0Q857 -60 813 0Z";
+    let (out, report) = rewritten(&[c, cedilla], Flavour::Quadratic, Orientation::Cw);
+    assert_eq!(report.repairs, [Repair::Straightened { contour: 0, point: 25 }], "{out}");
+    let points: Vec<&str> = out.split(" | ").next().unwrap().split(' ').collect();
+    assert_eq!(&points[25..27], ["834,-29", "829,-29"], "{out}");
+    assert!(report.distance_bound <= rat(1));
+}
