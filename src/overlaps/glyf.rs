@@ -23,7 +23,7 @@
 //!   `minRightSideBearing`, `xMaxExtent`.
 
 use super::sfnt::{Tables, assemble, i16_at, u16_at, u32_at};
-use super::{GridContour, Written};
+use super::{GridContour, GridPoint, Written};
 use crate::error::{Error, Result};
 use crate::format::Font;
 use std::collections::BTreeMap;
@@ -365,11 +365,31 @@ fn metrics(hmtx: &[u8], long_count: usize, num_glyphs: usize) -> Vec<(u16, i16)>
 /// The rewritten TrueType font (see the module documentation).
 pub(super) fn write(tables: &Tables<'_>, num_glyphs: usize, written: &Written) -> Result<Vec<u8>> {
     let records = glyph_records(tables, num_glyphs)?;
+    let long_count = u16_at(tables.need(b"hhea", 36)?, 34) as usize;
+    let stored = metrics(tables.need(b"hmtx", 0)?, long_count, num_glyphs);
     let mut glyphs: Vec<Vec<u8>> = Vec::with_capacity(num_glyphs);
     let mut changed_box: BTreeMap<u32, Option<[i16; 4]>> = BTreeMap::new();
     for (gid, record) in records.iter().enumerate() {
         let gid = gid as u32;
         if let Some(contours) = written.changed.get(&gid) {
+            // a glyph whose stored left side bearing is not its xMin is drawn shifted by their
+            // difference (FreeType places the origin at xMin − lsb; fontTools' glyph set draws
+            // so): its rewrite carries that shift, so it draws where it did (its lsb becomes
+            // its xMin below)
+            let shift =
+                if record.len() >= 10 { i32::from(stored[gid as usize].1) - i32::from(i16_at(record, 2)) } else { 0 };
+            let moved: Vec<GridContour>;
+            let contours = if shift == 0 {
+                contours
+            } else {
+                moved = contours
+                    .iter()
+                    .map(|c| GridContour {
+                        points: c.points.iter().map(|p| GridPoint { x: p.x + shift, ..*p }).collect(),
+                    })
+                    .collect();
+                &moved
+            };
             let (bytes, bbox) = encode_simple(contours, gid)?;
             changed_box.insert(gid, bbox);
             glyphs.push(bytes);

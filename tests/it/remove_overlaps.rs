@@ -189,8 +189,8 @@ fn tt_test_font(extra: &[(&[u8; 4], Vec<u8>)]) -> Vec<u8> {
         &[
             (".notdef", Rec::Simple(vec![], vec![]), None),
             ("square", Rec::Simple(vec![sq(0, 0, 400, 400)], vec![0xb0, 0x05]), None),
-            ("overlap", Rec::Simple(vec![sq(0, 0, 300, 300), sq(200, 200, 500, 500)], vec![]), Some(7)),
-            ("pair", Rec::Composite(vec![(1, 0, 0), (1, 300, 0)], vec![0xb0, 0x01, 0x1d]), Some(3)),
+            ("overlap", Rec::Simple(vec![sq(0, 0, 300, 300), sq(200, 200, 500, 500)], vec![]), None),
+            ("pair", Rec::Composite(vec![(1, 0, 0), (1, 300, 0)], vec![0xb0, 0x01, 0x1d]), None),
             ("shifted", Rec::Composite(vec![(2, 1000, 0)], vec![]), None),
             (
                 "curve",
@@ -346,6 +346,29 @@ fn truetype_unchanged_glyphs_keep_their_bytes_and_lose_only_their_instructions()
             String::from_utf8_lossy(tag)
         );
     }
+}
+
+#[test]
+fn truetype_a_glyph_whose_lsb_is_not_its_xmin_is_written_where_it_draws() {
+    // stored lsb 7 for xMin 0: FreeType and fontTools draw the glyph 7 units to the right (the
+    // origin at xMin − lsb); the rewrite carries the shift and its lsb becomes its xMin, as
+    // fontTools' removeOverlaps writes it
+    let sq = |x0, y0, x1, y1| tt_poly(&[(x0, y0), (x0, y1), (x1, y1), (x1, y0)]);
+    let input = tt_font(
+        &[
+            (".notdef", Rec::Simple(vec![], vec![]), None),
+            ("overlap", Rec::Simple(vec![sq(0, 0, 300, 300), sq(200, 200, 500, 500)], vec![]), Some(7)),
+        ],
+        &[],
+    );
+    let out = write_font(&input, &WriteOptions::default(), &tt_decisions()).unwrap();
+    let moved: Vec<(i16, i16)> = OVERLAP_UNION.iter().map(|&(x, y)| (x + 7, y)).collect();
+    let expected = tt_expected(&[tt_poly(&moved)]);
+    assert_eq!(outline(&out.data, 1), expected);
+    let f = FontRef::new(&out.data).unwrap();
+    let lsb = f.hmtx().unwrap().side_bearing(read_fonts::types::GlyphId::new(1)).unwrap();
+    let glyph = records(&out.data)[1].clone();
+    assert_eq!((lsb, i16::from_be_bytes([glyph[2], glyph[3]])), (7, 7));
 }
 
 #[test]
