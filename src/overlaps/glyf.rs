@@ -378,19 +378,15 @@ pub(super) fn write(tables: &Tables<'_>, num_glyphs: usize, written: &Written) -
             // its xMin below)
             let shift =
                 if record.len() >= 10 { i32::from(stored[gid as usize].1) - i32::from(i16_at(record, 2)) } else { 0 };
-            let moved: Vec<GridContour>;
-            let contours = if shift == 0 {
-                contours
+            let contours: std::borrow::Cow<'_, [GridContour]> = if shift == 0 {
+                contours.into()
             } else {
-                moved = contours
-                    .iter()
-                    .map(|c| GridContour {
-                        points: c.points.iter().map(|p| GridPoint { x: p.x + shift, ..*p }).collect(),
-                    })
-                    .collect();
-                &moved
+                let moved = |c: &GridContour| GridContour {
+                    points: c.points.iter().map(|p| GridPoint { x: p.x + shift, ..*p }).collect(),
+                };
+                contours.iter().map(moved).collect::<Vec<_>>().into()
             };
-            let (bytes, bbox) = encode_simple(contours, gid)?;
+            let (bytes, bbox) = encode_simple(&contours, gid)?;
             changed_box.insert(gid, bbox);
             glyphs.push(bytes);
         } else if written.strip_instructions(gid) {

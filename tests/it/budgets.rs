@@ -13,18 +13,7 @@ fn refused_for_work(o: &std::process::Output) -> bool {
     o.status.code() == Some(2) && all.contains("estimated work") && all.contains("--max-work")
 }
 
-/// Whether the text has a float that is not finite as Rust writes it (`inf`, `NaN`), in words
-/// or path data (`Linf`), not inside a word (`inflection`).
-fn has_non_finite(text: &str) -> bool {
-    let b = text.as_bytes();
-    ["inf", "NaN"].iter().any(|w| {
-        text.match_indices(w).any(|(i, _)| {
-            let before = i.checked_sub(1).map(|j| b[j]);
-            let after = b.get(i + w.len()).copied();
-            !before.is_some_and(|c| c.is_ascii_lowercase()) && !after.is_some_and(|c| c.is_ascii_alphanumeric())
-        })
-    })
-}
+use crate::fuzz::has_non_finite;
 
 /// Runs the binary under an address-space limit (`ulimit -v`, KiB).
 fn run_limited(kb: u64, args: &[&str]) -> std::process::Output {

@@ -288,7 +288,7 @@ fn shapes(r: &mut Rng) -> (Vec<String>, Option<String>) {
 
 /// Whether the output has a float that is not finite as Rust writes it (`inf`, `NaN`), in
 /// words or path data (`Linf`), not inside a word (`inflection`).
-fn has_non_finite(text: &str) -> bool {
+pub(crate) fn has_non_finite(text: &str) -> bool {
     // error lines quote the input's token (`bad number "inf"`): only answers count
     text.lines().filter(|l| !l.contains("\"error\"") && !l.contains("error:")).any(non_finite_in_line)
 }
