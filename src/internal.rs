@@ -12,7 +12,7 @@ pub use crate::classify::{classify_in, loop_blinn};
 pub use crate::curve::casteljau::subdivision_intervals;
 pub use crate::curve::fraction_free::{IntegerCurve, eval_integer};
 #[cfg(feature = "svg")]
-pub use crate::format::svg::parse_transform;
+pub use crate::format::svg_element::parse_transform;
 pub use crate::num::CheckedRing;
 pub use crate::num::parse::{integer_cubic, parse_points_small, parse_points_small_in, small_cubic};
 pub use crate::num::small::{SmallRational, checked};

@@ -13,6 +13,8 @@ pub(crate) mod font;
 pub(crate) mod scan;
 #[cfg(feature = "svg")]
 pub(crate) mod svg;
+#[cfg(feature = "svg")]
+pub(crate) mod svg_element;
 pub(crate) mod svg_path;
 #[cfg(feature = "svg")]
 pub(crate) mod svg_tree;
@@ -21,7 +23,9 @@ pub(crate) mod svg_tree;
 pub use font::Font;
 pub use scan::{Element, ScanRecord, Source};
 #[cfg(feature = "svg")]
-pub use svg::{ShapeProblem, SvgShape, fill_svg, read_svg};
+pub use svg::{fill_svg, read_svg};
+#[cfg(feature = "svg")]
+pub use svg_element::{ShapeProblem, SvgShape};
 pub use svg_path::{fill_path, parse_path};
 
 /// Per segment of a contour, per control point, the index of that point among the contour's

@@ -25,7 +25,7 @@
 //! depth). At most 200,000 segments are drawn through `<use>` in one document
 //! (`MAX_USE_SEGMENTS`): copies of copies would otherwise grow exponentially.
 
-use super::svg::{ShapeProblem, SvgShape, length, parse_transform, shape};
+use super::svg_element::{ShapeProblem, SvgShape, length, parse_transform, shape};
 use crate::error::{Error, Result};
 use crate::format::{Affine, Contour, Segment};
 use crate::num::parse::NumberMode;

@@ -126,7 +126,7 @@ pub(super) fn check(g: &Glyph, o: &LintOptions) -> Result<Vec<Finding>> {
     }
 
     // per pair (and per contour with itself): shared edges; per ordered pair: what each sees
-    let inputs_on = |e: &crate::shape::arrangement::EdgeData| -> Vec<usize> {
+    let inputs_on = |e: &crate::shape::graph::EdgeData| -> Vec<usize> {
         let mut v: Vec<usize> = e.carriers.iter().map(|c| arr.segs[c.0].input).collect();
         v.sort_unstable();
         v

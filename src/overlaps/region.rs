@@ -16,7 +16,7 @@
 use crate::error::Result;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::shape::Orientation;
-use crate::shape::arrangement::{Arrangement, HalfEdge};
+use crate::shape::graph::{Arrangement, HalfEdge};
 use std::collections::HashMap;
 
 /// A piece of an input segment on an output contour: segment `seg` of the arrangement from

@@ -30,7 +30,7 @@ use super::{Flavour, GridContour, GridPoint};
 use crate::error::{Error, Result};
 use crate::num::point::Point2;
 use crate::num::scalar::rat;
-use crate::shape::arrangement::Arrangement;
+use crate::shape::graph::Arrangement;
 use num_rational::BigRational;
 use std::collections::HashMap;
 

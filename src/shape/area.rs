@@ -9,8 +9,8 @@
 //! exact area is itself a rounding boundary, which an enclosure of width `2^-4096` times the
 //! area's size still straddling is refused as, never guessed).
 
-use super::arrangement::Arrangement;
-use super::run::Run;
+use super::graph::Arrangement;
+use super::runs::Run;
 use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::num::scalar::{rat, ratio_to_f64};

@@ -19,9 +19,9 @@
 //! its least piece (by input, contour, segment and parameter), contours in that order too.
 
 use super::area::{contour_area, total_area};
-use super::arrangement::{Arrangement, HalfEdge, InputPiece};
+use super::graph::{Arrangement, HalfEdge, InputPiece};
 use super::render::svg_path;
-use super::run::{Run, runs};
+use super::runs::{Run, runs};
 use super::segment::Seg;
 use crate::error::{Error, Result};
 use crate::num::point::Point2;

@@ -2,7 +2,7 @@
 //! by the records that produced them (a union–find with parity), overlapping pieces merged into
 //! one edge, and the winding numbers on both sides of every edge, one ray per chain of edges.
 
-use super::arrangement::{Arrangement, EdgeData, HalfEdge};
+use super::graph::{Arrangement, EdgeData, HalfEdge};
 use super::ray::{Origin, Piece, RayWinding, whole, winding};
 use super::segment::Seg;
 use crate::error::{Error, Result};

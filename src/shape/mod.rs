@@ -30,16 +30,17 @@ mod build;
 mod changed;
 mod estimate;
 mod germ;
+pub(crate) mod graph;
 mod hermite;
 pub(crate) mod pairs;
 mod ray;
 mod render;
-mod run;
+mod runs;
 pub(crate) mod segment;
 
-pub use arrangement::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, Vertex};
 pub(crate) use boolean::ExactRun;
 pub use boolean::{BooleanOp, BooleanOptions, BooleanResult, Orientation, boolean};
+pub use graph::{Arrangement, Edge, Face, HalfEdge, InputPiece, Location, Vertex};
 
 use crate::error::Result;
 use crate::num::point::Point2;

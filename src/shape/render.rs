@@ -3,7 +3,7 @@
 //! ends are rational), its control points rounded to the nearest `f64`; rational pieces through
 //! [`super::hermite`]. The exact answer is the result's `pieces`; this is its float picture.
 
-use super::arrangement::{Arrangement, InputPiece};
+use super::graph::{Arrangement, InputPiece};
 use super::hermite::hermite;
 use super::segment::Seg;
 use crate::num::scalar::{rat, ratio_to_f64};

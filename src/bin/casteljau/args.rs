@@ -1,5 +1,6 @@
 //! The command line's arguments: clap-derived plain structs, one per command or shared group.
 
+use crate::work_option::parse_work;
 use clap::{Args, Parser, Subcommand};
 
 pub const AFTER_HELP: &str = "\
@@ -544,14 +545,6 @@ impl CurveArgs {
     /// The `--max-work` budget.
     pub fn budget(&self) -> casteljau::work::Budget {
         casteljau::work::Budget::new(self.max_work, "--max-work")
-    }
-}
-
-/// A positive work budget (`1e12`, `5000000000`).
-pub fn parse_work(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(x) if x > 0.0 => Ok(x),
-        _ => Err(format!("{s:?} is not a positive number of work units (e.g. 1e12)")),
     }
 }
 

@@ -41,6 +41,7 @@ mod scan;
 mod shapes;
 mod splines;
 mod verdicts;
+mod work_option;
 
 use args::{Cli, Command};
 use clap::Parser;

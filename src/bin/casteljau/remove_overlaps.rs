@@ -14,6 +14,7 @@
 //! not be read; else 1 when a glyph could not be certified; 0 otherwise. `--ignore-errors`
 //! makes per-glyph failures exit 0 (as fontTools' option of that name).
 
+use crate::remove_overlaps_html::Summary;
 use casteljau::format::Font;
 use casteljau::overlaps::{GlyphDecision, GlyphReport, WriteOptions, decide_glyph, write_font};
 use casteljau::work::Budget;
@@ -50,7 +51,7 @@ pub struct RemoveOverlapsArgs {
     pub html: Option<PathBuf>,
     /// Work budget per glyph, in work units (about 1 ns each): a glyph estimated to cost more
     /// is left unchanged and reported as not certified.
-    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = crate::args::parse_work)]
+    #[arg(long, default_value_t = casteljau::work::DEFAULT_MAX_WORK, value_parser = crate::work_option::parse_work)]
     pub max_work: f64,
     /// Threads (0: all cores).
     #[arg(long, default_value_t = 0)]
@@ -74,15 +75,6 @@ struct Failed<'a> {
     glyph: Option<&'a str>,
     glyph_id: u32,
     error: String,
-}
-
-/// Counts of the run.
-#[derive(Default)]
-pub struct Summary {
-    pub considered: usize,
-    pub rewritten: usize,
-    pub uncertified: usize,
-    pub failed: usize,
 }
 
 /// Runs `remove-overlaps`; returns the exit code.

@@ -13,12 +13,20 @@
 use crate::lint_draw::{drawing, esc};
 use crate::lint_html::{MAX_DRAWN, STYLE, finding_item};
 use crate::lint_units::Unit;
-use crate::remove_overlaps::Summary;
 use casteljau::format::{Font, Source};
 use casteljau::lint::{Finding, Glyph, Kind, LintOptions, lint};
 use casteljau::overlaps::{FontOutcome, GlyphDecision, GlyphReport, Repair};
 use casteljau::work::Budget;
 use std::fmt::Write as _;
+
+/// Counts of the run (the summary line, and the head of the report).
+#[derive(Default)]
+pub struct Summary {
+    pub considered: usize,
+    pub rewritten: usize,
+    pub uncertified: usize,
+    pub failed: usize,
+}
 
 /// The kinds marked on the input's drawing: what overlap removal removes.
 const MARKED: [Kind; 4] = [Kind::Overlap, Kind::SelfIntersection, Kind::OverlappingSegments, Kind::Direction];

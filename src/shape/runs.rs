@@ -1,7 +1,7 @@
 //! Runs: a boundary cycle's edges joined into maximal stretches on one input segment, the unit
 //! in which boolean results are written (`boolean`) and their areas summed (`area`).
 
-use super::arrangement::{Arrangement, HalfEdge, InputPiece};
+use super::graph::{Arrangement, HalfEdge, InputPiece};
 use crate::poly::algebraic::RealAlgebraic;
 
 /// A maximal run of boundary edges on one segment: parameters `from → to`.
