@@ -134,7 +134,7 @@ impl ClaimResult {
 ///
 /// # Errors
 /// [`Error::ClaimFile`] for a path that cannot be read.
-pub fn claim_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
+pub(crate) fn claim_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
     let mut out = Vec::new();
     for p in paths {
         let err =

@@ -22,7 +22,7 @@ pub(crate) mod parse;
 pub(crate) mod point;
 pub(crate) mod quadratic_field;
 pub(crate) mod scalar;
-pub mod serial;
+pub(crate) mod serial;
 pub(crate) mod small;
 pub(crate) mod word;
 
