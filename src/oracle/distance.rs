@@ -134,9 +134,36 @@ impl Curve {
         [self.seg.x().eval_f64(t) / w, self.seg.y().eval_f64(t) / w]
     }
 
-    /// The parameter in `[lo, hi]` of the point nearest to `q` found by 17 samples and a golden
-    /// section search around the best (a search: nothing is certified by it; robust where the
-    /// curve is stationary, as at a control point doubling an end).
+    /// The point at `t` and the first two derivatives there, binary64, by de Casteljau's
+    /// levels (polynomial curves of at most 8 control points; `None` otherwise).
+    fn eval_derivatives(&self, t: f64) -> Option<[[f64; 2]; 3]> {
+        let n = self.mids.len();
+        if self.pts.is_none() || !(2..=8).contains(&n) {
+            return None;
+        }
+        let mut q = [[0.0; 2]; 8];
+        q[..n].copy_from_slice(&self.mids);
+        let mut second = [0.0; 2];
+        for level in 1..n - 1 {
+            for i in 0..n - level {
+                q[i] = [q[i][0] + t * (q[i + 1][0] - q[i][0]), q[i][1] + t * (q[i + 1][1] - q[i][1])];
+            }
+            if level == n - 3 {
+                // three points left: the second derivative is n(n−1)·(q2 − 2q1 + q0)
+                let k = ((n - 1) * (n - 2)) as f64;
+                second = [k * (q[2][0] - 2.0 * q[1][0] + q[0][0]), k * (q[2][1] - 2.0 * q[1][1] + q[0][1])];
+            }
+        }
+        let k = (n - 1) as f64;
+        let first = [k * (q[1][0] - q[0][0]), k * (q[1][1] - q[0][1])];
+        let point = [q[0][0] + t * (q[1][0] - q[0][0]), q[0][1] + t * (q[1][1] - q[0][1])];
+        Some([point, first, second])
+    }
+
+    /// The parameter in `[lo, hi]` of the point nearest to `q` found by 17 samples and, around
+    /// the best, Newton's method on `(C(t) − q)·C'(t) = 0` while each step brings the point
+    /// nearer, else a golden section search (a search: nothing is certified by it; robust where
+    /// the curve is stationary, as at a control point doubling an end).
     fn nearest(&self, q: [f64; 2], lo: f64, hi: f64) -> f64 {
         let f = |t: f64| {
             let p = self.eval(t);
@@ -152,6 +179,9 @@ impl Curve {
         }
         let step = (hi - lo) / 16.0;
         let (mut a, mut b) = ((best.1 - step).max(lo), (best.1 + step).min(hi));
+        if let Some(t) = self.newton(q, best, a, b) {
+            return t;
+        }
         const G: f64 = 0.618_033_988_749_894_8;
         let (mut c, mut d) = (b - G * (b - a), a + G * (b - a));
         let (mut fc, mut fd) = (f(c), f(d));
@@ -175,6 +205,47 @@ impl Curve {
         }
         let t = if fc < fd { c } else { d };
         if f(t) <= best.0 { t } else { best.1 }
+    }
+
+    /// Newton's method for [`Curve::nearest`] from `start = (squared distance, t)` inside
+    /// `[a, b]`: the parameter where the steps stop moving, or `None` when a step leaves the
+    /// bracket, does not bring the point nearer, or the curvature term makes it no descent.
+    fn newton(&self, q: [f64; 2], start: (f64, f64), a: f64, b: f64) -> Option<f64> {
+        let (mut d, mut t) = start;
+        // near a stationary point of the curve the distance is flat in `t` to fourth order and
+        // the steps stall: left to the golden section search
+        let diameter =
+            self.mids.iter().map(|m| (m[0] - self.mids[0][0]).hypot(m[1] - self.mids[0][1])).fold(0.0, f64::max);
+        let slow = 1e-3 * diameter;
+        for _ in 0..12 {
+            let [p, d1, d2] = self.eval_derivatives(t)?;
+            if d1[0].hypot(d1[1]) <= slow {
+                return None;
+            }
+            let r = [p[0] - q[0], p[1] - q[1]];
+            let g = r[0] * d1[0] + r[1] * d1[1];
+            let h = d1[0] * d1[0] + d1[1] * d1[1] + r[0] * d2[0] + r[1] * d2[1];
+            if g == 0.0 {
+                return Some(t);
+            }
+            if h.is_nan() || h <= 0.0 {
+                return None;
+            }
+            let next = t - g / h;
+            if !(next >= a && next <= b) {
+                return None;
+            }
+            let p = self.eval(next);
+            let dn = (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2);
+            if dn > d {
+                return None;
+            }
+            if (next - t).abs() <= 4.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
+                return Some(next);
+            }
+            (d, t) = (dn, next);
+        }
+        None
     }
 
     /// Control points whose hull holds the curve on `[a, b]` (`None`: a rational piece whose
@@ -739,13 +810,20 @@ impl<'a> Decider<'a> {
         keys.sort_by(f64::total_cmp);
         keys.dedup();
         let forward = self.runs[i].forward;
+        // a stretch `lo → hi` covers the windows between consecutive keys from `lo` to `hi`:
+        // ±1 added at `lo`'s index and taken off at `hi`'s, summed along the keys
+        let index = |k: f64| keys.binary_search_by(|x| x.total_cmp(&k)).expect("a key");
+        let mut step = vec![0i64; keys.len()];
+        for (a, b) in travs {
+            let (lo, hi) = if a.key() <= b.key() { (a.key(), b.key()) } else { (b.key(), a.key()) };
+            let sign = if (b.key() > a.key()) == forward { 1 } else { -1 };
+            step[index(lo)] += sign;
+            step[index(hi)] -= sign;
+        }
         let mut count = None;
-        for w in keys.windows(2) {
-            let net: i64 = travs
-                .iter()
-                .filter(|(a, b)| a.key().min(b.key()) <= w[0] && a.key().max(b.key()) >= w[1])
-                .map(|(a, b)| if (b.key() > a.key()) == forward { 1 } else { -1 })
-                .sum();
+        let mut net = 0i64;
+        for s in &step[..keys.len() - 1] {
+            net += s;
             if count.is_some_and(|c| c != net) {
                 return None;
             }

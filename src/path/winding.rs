@@ -110,6 +110,14 @@ pub(crate) fn winding_number_rational(
     let (qx, qy) = (&q.x, &q.y);
     let mut events: Vec<Event> = vec![];
     for (i, s) in path.iter().enumerate() {
+        // Y(t) − q_y W(t) = Σ B_i(t) (Y_i − q_y W_i): when every control point's term has one
+        // strict sign, so has the polynomial on [0, 1] — the segment does not meet the ray's
+        // line, and its only event is that sign (what the general route below finds, without
+        // its power form and root isolation).
+        if let Some(sign) = one_side(s, qy) {
+            events.push(Event::Sign(sign));
+            continue;
+        }
         let [x, y, w]: [Poly<BigRational>; 3] =
             s.homogeneous().coordinate_polynomials().try_into().expect("planar: X, Y, W");
         let (fx, fy) = (&x - &w.scale(qx), &y - &w.scale(qy));
@@ -154,6 +162,22 @@ pub(crate) fn winding_number_rational(
         }
     }
     Ok(Winding::Inside(count_crossings(&events)))
+}
+
+/// The common strict sign of `Y_i − q_y W_i` over the homogeneous control points of `s`, if
+/// they have one (each compared exactly; `Y_i` against `q_y` directly where `W_i = 1`).
+fn one_side(s: &RationalBezier<BigRational>, qy: &BigRational) -> Option<Ordering> {
+    let one = rat(1);
+    let mut common = None;
+    for p in s.homogeneous().points() {
+        let (y, w) = (&p.coords[1], &p.coords[2]);
+        let side = if *w == one { y.cmp(qy) } else { y.cmp(&(qy * w)) };
+        if side == Ordering::Equal || common.is_some_and(|c| c != side) {
+            return None;
+        }
+        common = Some(side);
+    }
+    common
 }
 
 /// The crossings beyond the origin along one closed cycle of events: each run of zeros between
