@@ -20,8 +20,7 @@ import logging
 from typing import Any, List, Optional
 
 from .. import _core
-from ..pathops._exact import exchange
-from ..pathops._path import Path
+from ..pathops._path import Path, exchange
 
 log = logging.getLogger(__name__)
 

@@ -10,233 +10,33 @@ where Skia compares within ``SK_ScalarNearlyZero``.
 
 from __future__ import annotations
 
-import enum
 import itertools
-import struct
 from fractions import Fraction
 from typing import Any, Iterator, List, Optional, Sequence, Tuple
 
-from .. import _core
-from ..numbers import exact
+from . import _exact
+from ._base import (
+    _POINTS_IN_VERB,
+    _VERB_METHODS,
+    FillType,
+    NumberOfPointsError,
+    OpenPathError,
+    PathVerb,
+    Point,
+    UnsupportedVerbError,
+    _halves,
+    _is_middle,
+    _mid,
+    _num,
+    _pt,
+    _q,
+    _same,
+    decompose_quadratic_segment,
+    fill_rule,
+    float2bits,
+)
 
-__all__ = [
-    "Path",
-    "PathPen",
-    "PathVerb",
-    "PathOp",
-    "FillType",
-    "LineCap",
-    "LineJoin",
-    "ArcSize",
-    "Direction",
-    "PathOpsError",
-    "UnsupportedVerbError",
-    "OpenPathError",
-    "NumberOfPointsError",
-    "bits2float",
-    "float2bits",
-    "decompose_quadratic_segment",
-]
-
-Point = Tuple[Any, Any]
-
-
-class PathOpsError(Exception):
-    """An operation on paths failed (skia-pathops' base class)."""
-
-
-class UnsupportedVerbError(PathOpsError):
-    """A verb the operation does not handle."""
-
-
-class OpenPathError(PathOpsError):
-    """An open contour where closed ones are required (``getPen(allow_open_paths=False)``)."""
-
-
-class NumberOfPointsError(PathOpsError):
-    """A pen segment with the wrong number of points."""
-
-
-class PathVerb(enum.IntEnum):
-    """Skia's path verbs."""
-
-    MOVE = 0
-    LINE = 1
-    QUAD = 2
-    CONIC = 3
-    CUBIC = 4
-    CLOSE = 5
-
-
-class PathOp(enum.IntEnum):
-    """Skia's boolean operations."""
-
-    DIFFERENCE = 0
-    INTERSECTION = 1
-    UNION = 2
-    XOR = 3
-    REVERSE_DIFFERENCE = 4
-
-
-class FillType(enum.IntEnum):
-    """Skia's fill types."""
-
-    WINDING = 0
-    EVEN_ODD = 1
-    INVERSE_WINDING = 2
-    INVERSE_EVEN_ODD = 3
-
-
-class LineCap(enum.IntEnum):
-    """Stroke caps (stroking is not supported: ``Path.stroke`` raises)."""
-
-    BUTT_CAP = 0
-    ROUND_CAP = 1
-    SQUARE_CAP = 2
-
-
-class LineJoin(enum.IntEnum):
-    """Stroke joins (stroking is not supported)."""
-
-    MITER_JOIN = 0
-    ROUND_JOIN = 1
-    BEVEL_JOIN = 2
-
-
-class ArcSize(enum.IntEnum):
-    """SVG arc size flag (``arcTo`` is not supported: its conics have irrational weights)."""
-
-    SMALL = 0
-    LARGE = 1
-
-
-class Direction(enum.IntEnum):
-    """SVG arc sweep direction."""
-
-    CW = 0
-    CCW = 1
-
-
-_POINTS_IN_VERB = {
-    PathVerb.MOVE: 1,
-    PathVerb.LINE: 1,
-    PathVerb.QUAD: 2,
-    PathVerb.CONIC: 2,
-    PathVerb.CUBIC: 3,
-    PathVerb.CLOSE: 0,
-}
-
-_VERB_METHODS = {
-    PathVerb.MOVE: "moveTo",
-    PathVerb.LINE: "lineTo",
-    PathVerb.QUAD: "quadTo",
-    PathVerb.CONIC: "conicTo",
-    PathVerb.CUBIC: "cubicTo",
-    PathVerb.CLOSE: "close",
-}
-
-
-def float2bits(x: float) -> int:
-    """The bits of ``x`` rounded to float32, unsigned (as skia-pathops).
-
-    >>> hex(float2bits(17.5))
-    '0x418c0000'
-    >>> hex(float2bits(-10.0))
-    '0xc1200000'
-    """
-    return struct.unpack("<I", struct.pack("<f", x))[0]
-
-
-def bits2float(float_as_bits: int) -> float:
-    """The float32 with these bits (negative ints as their two's complement).
-
-    >>> bits2float(0x418c0000)
-    17.5
-    >>> bits2float(-0x3ee00000)
-    -10.0
-    """
-    return struct.unpack("<f", struct.pack("<I", float_as_bits & 0xFFFFFFFF))[0]
-
-
-def _num(v: Any) -> Any:
-    """A coordinate kept exactly: int, float and Fraction as they are, others read exactly."""
-    t = type(v)
-    if t is int or t is Fraction:
-        return v
-    if t is float:
-        if v != v or v in (float("inf"), float("-inf")):
-            raise _core.CasteljauError("not a finite number: %r" % v)
-        return v
-    if isinstance(v, bool):
-        return int(v)
-    return exact(v)
-
-
-def _pt(p: Sequence[Any]) -> Point:
-    return (_num(p[0]), _num(p[1]))
-
-
-def _half(a: Any, b: Any) -> Any:
-    """The exact midpoint of two coordinates (an int when it is one)."""
-    if type(a) is int and type(b) is int:
-        s = a + b
-        return s >> 1 if not s & 1 else Fraction(s, 2)
-    m = (Fraction(a) + Fraction(b)) / 2
-    return m.numerator if m.denominator == 1 else m
-
-
-_HALVES: dict = {}
-
-
-def _halves(s: int) -> Fraction:
-    """``Fraction(s, 2)`` for an odd ``s``, made once per value (TrueType's implied points)."""
-    f = _HALVES.get(s)
-    if f is None:
-        f = _HALVES[s] = Fraction(s, 2)
-        if len(_HALVES) > 1 << 16:
-            _HALVES.clear()
-            _HALVES[s] = f
-    return f
-
-
-def _mid(p: Point, q: Point) -> Point:
-    return (_half(p[0], q[0]), _half(p[1], q[1]))
-
-
-def decompose_quadratic_segment(points: Sequence[Point]) -> List[Tuple[Point, Point]]:
-    """A TrueType quadratic spline as quadratic segments ``(off, on)``, the implied on-curve
-    points the exact midpoints of consecutive off-curve points.
-
-    >>> decompose_quadratic_segment(((0, 0), (1, 1), (2, 1)))
-    [((0, 0), (Fraction(1, 2), Fraction(1, 2))), ((1, 1), (2, 1))]
-    """
-    points = tuple(points)
-    n = len(points) - 1
-    assert n > 0
-    quads = []
-    for i in range(n - 1):
-        quads.append((points[i], _mid(points[i], points[i + 1])))
-    quads.append((points[-2], points[-1]))
-    return quads
-
-
-def _same(p: Point, q: Point) -> bool:
-    return p[0] == q[0] and p[1] == q[1]
-
-
-def _q(v: Any) -> Any:
-    """An int or Fraction (exact arithmetic), a float as its exact Fraction."""
-    return Fraction(v) if type(v) is float else v
-
-
-def _is_middle(p1: Point, p2: Point, p3: Point) -> bool:
-    """``p2`` is exactly the midpoint of ``p1`` and ``p3``."""
-    return 2 * _q(p2[0]) == _q(p1[0]) + _q(p3[0]) and 2 * _q(p2[1]) == _q(p1[1]) + _q(p3[1])
-
-
-def _collinear(p1: Point, p2: Point, p3: Point) -> bool:
-    x1, y1, x2, y2, x3, y3 = (Fraction(c) for c in (p1[0], p1[1], p2[0], p2[1], p3[0], p3[1]))
-    return x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2) == 0
+__all__ = ["Path", "PathPen", "exchange", "from_contours", "simplify"]
 
 
 class Path:
@@ -280,6 +80,17 @@ class Path:
     def copy(self) -> "Path":
         """A copy."""
         return Path(self)
+
+    @classmethod
+    def _from_records(cls, fill: FillType, contours: Sequence[_exact.Records]) -> "Path":
+        """A path of closed contours given as their verbs, points and conic weights."""
+        out = cls(fillType=fill)
+        for verbs, points, weights in contours:
+            out._verbs += verbs
+            out._points += points
+            out._weights += weights
+            out._last_move = points[0]
+        return out
 
     # -- building ---------------------------------------------------------------------------
 
@@ -542,9 +353,7 @@ class Path:
     def bounds(self) -> Tuple[Any, Any, Any, Any]:
         """The exact tight bounds ``(xMin, yMin, xMax, yMax)``: curve extrema included, each a
         number as stored, a ``Fraction`` or an ``Algebraic``."""
-        from ._exact import tight_bounds
-
-        return tight_bounds(self)
+        return _exact.tight_bounds(self._records(), self._weights)
 
     @property
     def controlPointBounds(self) -> Tuple[Any, Any, Any, Any]:
@@ -560,16 +369,12 @@ class Path:
     def isConvex(self) -> bool:
         """Whether the path is one convex contour of lines (exact turns; curves are decided by
         their control polygons, as Skia does)."""
-        from ._exact import is_convex
-
-        return is_convex(self)
+        return _exact.is_convex(exchange(self))
 
     def contains(self, pt: Tuple[Any, Any]) -> bool:
         """Whether the point is inside the path's fill (exact; a point on the boundary counts as
         inside, as Skia's ``contains``)."""
-        from ._exact import contains
-
-        return contains(self, pt)
+        return _exact.contains(exchange(self), self._fill, pt)
 
     def reverse(self) -> None:
         """Reverses every contour in place (the last point becomes the first)."""
@@ -582,8 +387,6 @@ class Path:
 
     def simplify(self, fix_winding: bool = True, keep_starting_points: bool = True, clockwise: bool = False) -> None:
         """Removes overlaps in place (the exact region; see ``casteljau.pathops.simplify``)."""
-        from ._exact import simplify
-
         self._copy_from(
             simplify(self, fix_winding=fix_winding, keep_starting_points=keep_starting_points, clockwise=clockwise)
         )
@@ -640,6 +443,46 @@ class Path:
         return out
 
 
+def exchange(path: Path) -> _exact.Contours:
+    """A path's contours as casteljau's exchange form: each contour closed by a line when its
+    last point is not its first (Skia fills open contours closed)."""
+    return _exact.contours_of(path._verbs, path._points, path._weights)
+
+
+def from_contours(contours: _exact.Contours, fill: FillType = FillType.WINDING) -> Path:
+    """Closed contours in exchange form as a path (their numbers as they are)."""
+    return Path._from_records(fill, [_exact.records_of(c) for c in contours if c])
+
+
+def finish(contours: _exact.Contours, areas: List[Any], fix_winding: bool, keep_starting_points: bool, first_points: List[Any]) -> Path:
+    """An operation's result as skia-pathops gives it (see ``_exact.result_records``)."""
+    fill, records = _exact.result_records(contours, areas, fix_winding, keep_starting_points, first_points)
+    return Path._from_records(fill, records)
+
+
+def simplify(
+    path: Path,
+    fix_winding: bool = True,
+    keep_starting_points: bool = True,
+    clockwise: bool = False,
+    *,
+    max_work: Optional[float] = None,
+) -> Path:
+    """The exact boundary of the path's fill (overlaps removed); see ``op``.
+
+    >>> from casteljau.pathops import Path, simplify
+    >>> p = Path()
+    >>> for x, y in ((0, 0), (5, 5)):
+    ...     p.moveTo(x, y); p.lineTo(x + 10, y); p.lineTo(x + 10, y + 10); p.lineTo(x, y + 10); p.close()
+    >>> [pts for _, pts in simplify(p)][:3]
+    [((0, 0),), ((10, 0),), ((Fraction(10, 1), Fraction(5, 1)),)]
+    """
+    first = path.firstPoints if keep_starting_points else []
+    inputs = [(exchange(path), fill_rule(path.fillType))]
+    contours, areas = _exact.boolean("simplify", inputs, "cw" if clockwise else "ccw", max_work)
+    return finish(contours, areas, fix_winding, keep_starting_points, first)
+
+
 def _triplewise(iterable: Any) -> Iterator[Tuple[Any, Any, Any]]:
     a, b, c = itertools.tee(iterable, 3)
     next(b, None)
@@ -653,15 +496,12 @@ def _segment_pen_calls(path: Path) -> Iterator[Tuple[str, tuple]]:
     records = list(path._records())
     n = len(records)
     closed = True
-    move_pt: Point = (0, 0)
     k = 0
     while k < n:
         verb, pts = records[k]
-        nxt = records[k + 1][0] if k + 1 < n else None
         if verb == PathVerb.MOVE:
             if not closed:
                 yield ("endPath", ())
-            move_pt = pts[0]
             closed = False
             yield ("moveTo", (pts[0],))
         elif verb == PathVerb.CLOSE:
