@@ -229,7 +229,9 @@ def _is_middle(p1: Point, p2: Point, p3: Point) -> bool:
 
 
 def _collinear(p1: Point, p2: Point, p3: Point) -> bool:
-    x1, y1, x2, y2, x3, y3 = (Fraction(c) for c in (p1[0], p1[1], p2[0], p2[1], p3[0], p3[1]))
+    """The three points lie on one line, exactly (ints and Fractions as they are, floats as their
+    exact Fractions)."""
+    x1, y1, x2, y2, x3, y3 = _q(p1[0]), _q(p1[1]), _q(p2[0]), _q(p2[1]), _q(p3[0]), _q(p3[1])
     return x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2) == 0
 
 

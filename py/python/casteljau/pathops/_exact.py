@@ -16,7 +16,6 @@ from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
 from .. import _core
 from .._contours import resolve
 from ._base import (
-    _POINTS_IN_VERB,
     ExactOperationError,
     FillType,
     PathVerb,
@@ -100,10 +99,12 @@ def _conic_weight(ws: Sequence[Any]) -> Any:
 def records_of(c: List[Tuple[list, Optional[list]]]) -> Records:
     """One closed contour in exchange form as a path's records, its numbers used as they are (a
     last line back to the start is left to ``CLOSE``)."""
-    verbs: List[PathVerb] = [PathVerb.MOVE]
     start = tuple(c[0][0][0])
+    verbs: List[PathVerb] = [PathVerb.MOVE]
     points: List[Point] = [start]  # type: ignore[list-item]
     weights: List[Any] = []
+    add_verb, add_points = verbs.append, points.extend
+    LINE, QUAD, CUBIC = PathVerb.LINE, PathVerb.QUAD, PathVerb.CUBIC
     last = len(c) - 1
     for k, (pts, ws) in enumerate(c):
         n = len(pts)
@@ -112,29 +113,22 @@ def records_of(c: List[Tuple[list, Optional[list]]]) -> Records:
                 raise UnsupportedVerbError("a rational segment of degree %d" % (n - 1))
             w = _conic_weight(ws)
             if w == 1:
-                verbs.append(PathVerb.QUAD)
+                add_verb(QUAD)
             else:
-                verbs.append(PathVerb.CONIC)
+                add_verb(PathVerb.CONIC)
                 weights.append(w)
-            points.append(tuple(pts[1]))  # type: ignore[arg-type]
-            points.append(tuple(pts[2]))  # type: ignore[arg-type]
         elif n == 2:
-            end = tuple(pts[1])
-            if k == last and _same(end, start):  # type: ignore[arg-type]
+            if k == last and _same(pts[1], start):
                 continue
-            verbs.append(PathVerb.LINE)
-            points.append(end)  # type: ignore[arg-type]
+            add_verb(LINE)
         elif n == 3:
-            verbs.append(PathVerb.QUAD)
-            points.append(tuple(pts[1]))  # type: ignore[arg-type]
-            points.append(tuple(pts[2]))  # type: ignore[arg-type]
+            add_verb(QUAD)
         elif n == 4:
-            verbs.append(PathVerb.CUBIC)
-            points.append(tuple(pts[1]))  # type: ignore[arg-type]
-            points.append(tuple(pts[2]))  # type: ignore[arg-type]
-            points.append(tuple(pts[3]))  # type: ignore[arg-type]
+            add_verb(CUBIC)
         else:
             raise UnsupportedVerbError("a segment of degree %d" % (n - 1))
+        rest = pts[1:]
+        add_points(rest if type(rest[0]) is tuple else [tuple(p) for p in rest])
     verbs.append(PathVerb.CLOSE)
     return verbs, points, weights
 
@@ -172,118 +166,42 @@ def result_records(
     if fix_winding and len(items) > 1 and all(a is not None for _, a in items):
         # by decreasing absolute area, stable (skia-pathops' winding_from_even_odd)
         items.sort(key=lambda ca: -abs(ca[1]))
-    out = [records_of(c) for c, _ in items]
-    if keep_starting_points and first_points:
-        points = list(first_points)
-        for k, this in enumerate(out):
-            # skia-pathops tries each point in turn; only an on-curve point of the contour other
-            # than its first can move the start (the first one leaves it as it is)
-            oncurve = set(_oncurve_points(this))
-            first = this[1][0]
+    out = []
+    points = list(first_points) if keep_starting_points else []
+    for c, _ in items:
+        if points:
+            # skia-pathops tries each point in turn: the first that is an on-curve point of the
+            # contour other than its start moves the start there
+            ends: Dict[Any, int] = {}
+            for k in range(len(c) - 2, -1, -1):
+                ends[tuple(c[k][0][-1])] = k
             for j, pt in enumerate(points):
-                if pt not in oncurve or _same(pt, first):
-                    continue
-                moved = _with_start_point(this, pt)
-                if moved is not None:
-                    out[k] = moved
+                k = ends.get(tuple(pt))
+                if k is not None and not _same(pt, c[0][0][0]):
+                    c = _started_after(c, k)
                     del points[j]
                     break
+        out.append(records_of(c))
     return fill, out
 
 
-def _oncurve_points(records: Records) -> List[Any]:
-    """The last point of each verb (the on-curve points), in order."""
-    verbs, points, _ = records
-    out = []
-    i = 0
-    for v in verbs:
-        n = _POINTS_IN_VERB[v]
-        if n:
-            i += n
-            out.append(points[i - 1])
-    return out
-
-
-def _with_start_point(records: Records, pt: Any) -> Optional[Records]:
-    """skia-pathops' set_contour_start_point for a closed contour, with exact comparisons: the
-    contour started at its on-curve point ``pt``, or ``None`` when ``pt`` is none of its
-    on-curve points other than the first."""
-    verbs, pts, ws = records
-    vc, pc = len(verbs), len(pts)
-    if vc == 0 or PathVerb.CLOSE not in verbs[1:]:
-        return None
-    # conic weights by verb index
-    weights: Dict[int, Any] = {}
-    wi = iter(ws)
-    for i, v in enumerate(verbs):
-        if v == PathVerb.CONIC:
-            weights[i] = next(wi)
-    pt_index = verb_index = -1
-    seen = 0
-    for i, v in enumerate(verbs):
-        n = _POINTS_IN_VERB[v]
-        if n == 0:
-            continue
-        j = seen + n - 1
-        if _same(pts[j], pt):
-            pt_index, verb_index = j, i
-            break
-        seen += n
-    if pt_index <= 0:
-        return None
-    # the contour rebuilt from the new start
-    out_verbs: List[PathVerb] = [PathVerb.MOVE]
-    first_verb = verbs[verb_index]
-    first_pt = pts[pt_index]
-    out_pts: List[Any] = [first_pt]
-    out_weights: List[Any] = []
-    vi = (verb_index + 1) % vc
-    pi = (pt_index + 1) % pc
-    last = first_pt
-    MOVE, LINE, QUAD, CONIC, CUBIC, CLOSE = (
-        PathVerb.MOVE, PathVerb.LINE, PathVerb.QUAD, PathVerb.CONIC, PathVerb.CUBIC, PathVerb.CLOSE,
-    )
-    for _ in range(1, vc):
-        v = verbs[vi]
-        n = _POINTS_IN_VERB[v]
-        if v == MOVE:
-            # the old start becomes a lineTo, unless it repeats the last point or lies between it
-            # and the next line on one line (skia-pathops #12)
-            if not (
-                _same(last, pts[pi])
-                or (verbs[(vi + 1) % vc] == LINE and _collinear(last, pts[pi], pts[(pi + 1) % pc]))
-            ):
-                out_verbs.append(LINE)
-                out_pts.append(pts[pi])
-                last = pts[pi]
-        elif v == LINE:
-            # the original contour's last line back to its old start is left to close
-            if not (verbs[(vi + 1) % vc] == CLOSE and _same(pts[pi], pts[(pi + 1) % pc])):
-                out_verbs.append(LINE)
-                out_pts.append(pts[pi])
-                last = pts[pi]
-        elif v == QUAD or v == CONIC:
-            out_verbs.append(v)
-            out_pts += (pts[pi], pts[pi + 1])
-            if v == CONIC:
-                out_weights.append(weights[vi])
-            last = pts[pi + 1]
-        elif v == CUBIC:
-            out_verbs.append(v)
-            out_pts += (pts[pi], pts[pi + 1], pts[pi + 2])
-            last = pts[pi + 2]
-        vi = (vi + 1) % vc
-        pi = (pi + n) % pc
-    if first_verb in (QUAD, CONIC):
-        out_verbs.append(first_verb)
-        out_pts += (pts[pi], pts[pi + 1])
-        if first_verb == CONIC:
-            out_weights.append(weights[verb_index])
-    elif first_verb == CUBIC:
-        out_verbs.append(first_verb)
-        out_pts += (pts[pi], pts[pi + 1], pts[pi + 2])
-    out_verbs.append(CLOSE)
-    return out_verbs, out_pts, out_weights
+def _started_after(c: List[Tuple[list, Optional[list]]], k: int) -> List[Tuple[list, Optional[list]]]:
+    """A closed contour (exchange form) started at the end of its segment ``k``, as skia-pathops'
+    ``set_contour_start_point`` does it: the old start stays a corner, unless the lines on both
+    sides of it lie on one line, which become one line (skia-pathops #12)."""
+    last, first = c[-1], c[0]
+    if (
+        last[1] is None
+        and first[1] is None
+        and len(last[0]) == 2
+        and len(first[0]) == 2
+        and _collinear(last[0][0], first[0][0], first[0][1])
+    ):
+        joined = ([last[0][0], first[0][1]], None)
+        if k == 0:
+            return c[1:-1] + [joined]
+        return c[k + 1 : -1] + [joined] + c[1 : k + 1]
+    return c[k + 1 :] + c[: k + 1]
 
 
 def tight_bounds(records: Iterable[Tuple[PathVerb, Tuple[Point, ...]]], weights: Sequence[Any]) -> Tuple[Any, Any, Any, Any]:

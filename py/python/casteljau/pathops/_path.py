@@ -186,13 +186,25 @@ class Path:
             raise UnsupportedVerbError(verb)
 
     def addPath(self, path: "Path") -> None:
-        """Appends the contours of ``path``."""
-        w = iter(path._weights)
-        for verb, pts in path._records():
-            if verb == PathVerb.CONIC:
-                self.conicTo(*pts[0], *pts[1], next(w))
-            else:
-                self.add(verb, *pts)
+        """Appends the contours of ``path`` (its numbers are exact already: taken as they are)."""
+        verbs, points = path._verbs, path._points
+        if verbs and verbs[-1] == PathVerb.MOVE:  # a trailing moveTo draws nothing
+            verbs, points = verbs[:-1], points[:-1]
+        if not verbs:
+            return
+        if self._verbs and self._verbs[-1] == PathVerb.MOVE:  # consecutive moveTo collapse
+            self._verbs.pop()
+            self._points.pop()
+        self._verbs += verbs
+        self._points += points
+        self._weights += path._weights
+        i = len(points)
+        for v in reversed(verbs):
+            i -= _POINTS_IN_VERB[v]
+            if v == PathVerb.MOVE:
+                self._last_move = points[i]
+                break
+        self._needs_move = verbs[-1] == PathVerb.CLOSE
 
     # -- reading ----------------------------------------------------------------------------
 
@@ -308,24 +320,20 @@ class Path:
         """The path as fontTools segment-pen calls: TrueType quadratic splines joined where the
         on-curve point is exactly the midpoint, ``endPath`` for open contours, and an
         on-curve-less closed spline as ``qCurveTo(..., None)``."""
-        result: List[Tuple[str, tuple]] = []
-        it = itertools.chain([None], _segment_pen_calls(self), [None])
-        for previous, current, next_ in _triplewise(it):
-            if (
-                previous is not None
-                and previous[0] == "moveTo"
-                and current[0] == "qCurveTo"
-                and next_ is not None
-                and next_[0] == "closePath"
-                and _same(previous[1][0], current[1][-1])
-                and len(current[1]) > 2
-                and _is_middle(current[1][-2], current[1][-1], current[1][0])
-            ):
-                del result[-1]
-                result.append((current[0], current[1][:-1] + (None,)))
-                continue
-            result.append(current)  # type: ignore[arg-type]
-        yield from result
+        calls = list(_segment_pen_calls(self))
+        n = len(calls)
+        k = 0
+        while k < n:
+            call = calls[k]
+            if call[0] == "moveTo" and k + 2 < n and calls[k + 1][0] == "qCurveTo" and calls[k + 2][0] == "closePath":
+                q = calls[k + 1][1]
+                if len(q) > 2 and _same(call[1][0], q[-1]) and _is_middle(q[-2], q[-1], q[0]):
+                    # the moveTo is the spline's implied on-curve point: drawn as fontTools does
+                    yield ("qCurveTo", q[:-1] + (None,))
+                    k += 2
+                    continue
+            yield call
+            k += 1
 
     def draw(self, pen: Any) -> None:
         """Draws the path with a fontTools segment pen."""
@@ -483,47 +491,46 @@ def simplify(
     return finish(contours, areas, fix_winding, keep_starting_points, first)
 
 
-def _triplewise(iterable: Any) -> Iterator[Tuple[Any, Any, Any]]:
-    a, b, c = itertools.tee(iterable, 3)
-    next(b, None)
-    next(c, None)
-    next(c, None)
-    return zip(a, b, c)
-
-
 def _segment_pen_calls(path: Path) -> Iterator[Tuple[str, tuple]]:
     """skia-pathops' SegmentPenIterator, with exact comparisons."""
-    records = list(path._records())
-    n = len(records)
+    verbs, pts = path._verbs, path._points
+    n = len(verbs)
+    if n and verbs[-1] == PathVerb.MOVE:  # a trailing moveTo draws nothing
+        n -= 1
+    MOVE, LINE, QUAD, CUBIC, CLOSE = PathVerb.MOVE, PathVerb.LINE, PathVerb.QUAD, PathVerb.CUBIC, PathVerb.CLOSE
     closed = True
-    k = 0
+    i = k = 0
     while k < n:
-        verb, pts = records[k]
-        if verb == PathVerb.MOVE:
+        verb = verbs[k]
+        if verb == LINE:
+            yield ("lineTo", (pts[i],))
+            i += 1
+        elif verb == QUAD:
+            # join a TrueType spline: the next quad continues it when this quad's on-curve
+            # point is exactly the midpoint of the two off-curve points
+            off, on = pts[i], pts[i + 1]
+            i += 2
+            points = [off]
+            while k + 1 < n and verbs[k + 1] == QUAD and _is_middle(off, on, pts[i]):
+                k += 1
+                off, on = pts[i], pts[i + 1]
+                i += 2
+                points.append(off)
+            points.append(on)
+            yield ("qCurveTo", tuple(points))
+        elif verb == CUBIC:
+            yield ("curveTo", (pts[i], pts[i + 1], pts[i + 2]))
+            i += 3
+        elif verb == MOVE:
             if not closed:
                 yield ("endPath", ())
             closed = False
-            yield ("moveTo", (pts[0],))
-        elif verb == PathVerb.CLOSE:
+            yield ("moveTo", (pts[i],))
+            i += 1
+        elif verb == CLOSE:
             closed = True
             yield ("closePath", ())
-        elif verb == PathVerb.LINE:
-            yield ("lineTo", (pts[0],))
-        elif verb == PathVerb.CUBIC:
-            yield ("curveTo", pts)
-        elif verb == PathVerb.QUAD:
-            # join a TrueType spline: the next quad continues it when this quad's on-curve
-            # point is exactly the midpoint of the two off-curve points
-            points = [pts[0]]
-            on = pts[1]
-            while k + 1 < n and records[k + 1][0] == PathVerb.QUAD and _is_middle(pts[0], on, records[k + 1][1][0]):
-                k += 1
-                pts = records[k][1]
-                points.append(pts[0])
-                on = pts[1]
-            points.append(on)
-            yield ("qCurveTo", tuple(points))
-        elif verb == PathVerb.CONIC:
+        else:
             raise UnsupportedVerbError("CONIC")
         k += 1
     if not closed:
@@ -609,6 +616,13 @@ def _signed_area(path: Path) -> Fraction:
     return value
 
 
+def _all_int(points: Sequence[Any]) -> bool:
+    for x, y in points:
+        if type(x) is not int or type(y) is not int:
+            return False
+    return True
+
+
 class PathPen:
     """A fontTools segment pen drawing into a ``Path`` (skia-pathops' ``PathPen``), with the
     implied on-curve points of TrueType splines at their exact midpoints."""
@@ -644,7 +658,7 @@ class PathPen:
 
     def qCurveTo(self, *points: Any) -> None:
         n = len(points) - 1
-        if n > 0 and points[-1] is not None and all(type(c) is int for p in points for c in p):
+        if n > 0 and points[-1] is not None and _all_int(points):
             # integer points (TrueType): the implied on-curve points straight into the path
             path = self.path
             path._ensure_move()
@@ -688,7 +702,9 @@ class PathPen:
         base = self.glyphSet[glyphName]
         base_path = Path()
         base.draw(base_path.getPen(glyphSet=self.glyphSet))
-        self.path.addPath(base_path.transform(*transformation))
+        if tuple(transformation) != (1, 0, 0, 1, 0, 0):
+            base_path = base_path.transform(*transformation)
+        self.path.addPath(base_path)
 
     def addVarComponent(self, glyphName: str, transformation: Any, location: Any) -> None:
         raise TypeError("variable components are not supported")
