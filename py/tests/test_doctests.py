@@ -51,6 +51,8 @@ def test_the_readme_example(repo, monkeypatch):
     monkeypatch.chdir(repo)
     failures, tried = doctest.testfile(str(repo / "README.md"), module_relative=False, encoding="utf-8")
     assert tried >= 2 and failures == 0
+    failures, tried = doctest.testfile(str(repo / "py" / "README.md"), module_relative=False, encoding="utf-8")
+    assert tried >= 2 and failures == 0
 
 
 def test_the_python_chapter(repo, monkeypatch):
