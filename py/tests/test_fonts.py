@@ -189,6 +189,27 @@ def test_ufo2ft_filter_removes_the_overlap():
     assert not casteljau.lint({"square": ufo["square"], "rings": ufo["rings"]}, kinds=["overlap"])
 
 
+def test_ufo2ft_filter_keeps_a_quadratic_glyph_quadratic():
+    import ufoLib2
+
+    from casteljau.filters.removeOverlaps import RemoveOverlapsFilter
+
+    ufo = ufoLib2.Font()
+    g = ufo.newGlyph("rings")
+    pen = g.getPen()
+    for cx in (250, 400):  # two overlapping TrueType rings, on-curve points at the extrema
+        pen.moveTo((cx + 200, 350))
+        pen.qCurveTo((cx + 200, 550), (cx, 550))
+        pen.qCurveTo((cx - 200, 550), (cx - 200, 350))
+        pen.qCurveTo((cx - 200, 150), (cx, 150))
+        pen.qCurveTo((cx + 200, 150), (cx + 200, 350))
+        pen.closePath()
+    assert RemoveOverlapsFilter(pre=True, ignoreErrors=False)(ufo) == {"rings"}
+    (contour,) = g.contours
+    assert {p.segmentType for p in contour} == {None, "qcurve"}
+    assert casteljau.lint({"rings": g}) == []
+
+
 def test_fontmake_with_the_filter_option_builds_a_lint_clean_font(tmp_path):
     src = tmp_path / "Overlap.ufo"
     _overlapping_ufo().save(src)
