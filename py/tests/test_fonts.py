@@ -228,6 +228,15 @@ def test_fontmake_with_the_ufo_lib_key_builds_a_lint_clean_font(tmp_path):
     _check_built_font(out)
 
 
+def test_lint_of_a_ufo_path(tmp_path):
+    ufo = _overlapping_ufo()
+    src = tmp_path / "Overlap.ufo"
+    ufo.save(src)
+    from_path = casteljau.lint(src)
+    assert {(f.glyph, f.kind) for f in from_path} == {("square", "overlap"), ("rings", "overlap"), ("baracute", "overlap")}
+    assert [str(f) for f in from_path] == [str(f) for f in casteljau.lint(ufo)]
+
+
 def test_fontmake_without_the_filter_keeps_the_overlaps(tmp_path):
     """The control: the same UFO built with --keep-overlaps alone is not lint-clean."""
     src = tmp_path / "Overlap.ufo"
