@@ -233,7 +233,10 @@ def test_lint_of_a_ufo_path(tmp_path):
     src = tmp_path / "Overlap.ufo"
     ufo.save(src)
     from_path = casteljau.lint(src)
-    assert {(f.glyph, f.kind) for f in from_path} == {("square", "overlap"), ("rings", "overlap"), ("baracute", "overlap")}
+    # the squares run clockwise: outer contours of a UFO (PostScript) run counter-clockwise
+    assert {(f.glyph, f.kind) for f in from_path} == {
+        ("square", "overlap"), ("square", "direction"), ("rings", "overlap"), ("baracute", "overlap")
+    }
     assert [str(f) for f in from_path] == [str(f) for f in casteljau.lint(ufo)]
 
 
