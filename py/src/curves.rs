@@ -506,11 +506,43 @@ impl RationalBezier {
         })
     }
 
-    /// The control points, tuples of `Fraction`s.
+    /// From homogeneous control points `(w·x, w·y[, …], w)`, a `Bezier` or points as
+    /// `Bezier` takes them; a point whose weight is zero is a point at infinity.
+    ///
+    /// >>> from casteljau import RationalBezier
+    /// >>> RationalBezier.from_homogeneous([(1, 0, 1), (1, 1, 1), (0, 2, 2)])
+    /// RationalBezier('1 0, 1 1, 0 1', weights='1 1 2')
+    #[staticmethod]
+    fn from_homogeneous(points: &Bound<'_, PyAny>) -> PyResult<RationalBezier> {
+        guard(|| {
+            let h = match points.downcast::<Bezier>() {
+                Ok(b) => b.get().curve.points().to_vec(),
+                Err(_) => points_of(points, None)?,
+            };
+            Ok(RationalBezier { curve: RB::from_homogeneous(h).map_err(crate::error)? })
+        })
+    }
+
+    /// The control points, tuples of `Fraction`s; `None` for a point at infinity (weight zero,
+    /// as subdividing or elevating a curve whose weights change sign can give).
     #[getter]
     fn points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        let ps: Vec<Point<Q>> = self.curve.points().into_iter().map(|p| p.expect("no weight is zero")).collect();
-        points_py(py, &ps)
+        let ps = self
+            .curve
+            .points()
+            .into_iter()
+            .map(|p| match p {
+                Some(p) => Ok(point_py(py, &p)?.into_any()),
+                None => Ok(py.None().into_bound(py)),
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        PyList::new(py, ps)
+    }
+
+    /// The homogeneous control points `(w·x, w·y[, …], w)` as a `Bezier` one dimension up.
+    #[getter]
+    fn homogeneous(&self, py: Python<'_>) -> PyResult<Py<Bezier>> {
+        new_bezier(py, self.curve.homogeneous().clone())
     }
 
     /// The weights, `Fraction`s.
@@ -569,12 +601,46 @@ impl RationalBezier {
         Ok((new_rational(py, s.left)?, new_rational(py, s.right)?))
     }
 
+    /// The piece for `[a, b]`, reparametrised to `[0, 1]` (`a > b` runs backwards).
+    fn subsegment(&self, py: Python<'_>, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>) -> PyResult<Py<RationalBezier>> {
+        let (c, a, b) = (self.curve.clone(), rational(a)?, rational(b)?);
+        let s = run(py, move || c.subsegment(&a, &b))?;
+        new_rational(py, s)
+    }
+
     /// The same curve written with degree `degree + by`.
     #[pyo3(signature = (by=1, *, max_work=None))]
     fn elevate(&self, py: Python<'_>, by: usize, max_work: Option<f64>) -> PyResult<Py<RationalBezier>> {
         let (c, b) = (self.curve.clone(), budget(max_work)?);
         let e = run(py, move || RationalElevation::new(&c, by, &b))?;
         new_rational(py, e.curve)
+    }
+
+    /// The same curve written with the real degree of its homogeneous form (exact degree
+    /// reduction, the inverse of `elevate`).
+    ///
+    /// >>> from casteljau import RationalBezier
+    /// >>> RationalBezier([(1, 0), (1, 1), (0, 1)], [1, 1, 2]).elevate(2).reduce()
+    /// RationalBezier('1 0, 1 1, 0 1', weights='1 1 2')
+    #[pyo3(signature = (*, max_work=None))]
+    fn reduce(&self, py: Python<'_>, max_work: Option<f64>) -> PyResult<Py<RationalBezier>> {
+        let (c, b) = (self.curve.homogeneous().clone(), budget(max_work)?);
+        let r = run(py, move || RB::from_homogeneous(DegreeReduction::new(&c, &b)?.curve.into_points()))?;
+        new_rational(py, r)
+    }
+
+    /// The power form of the homogeneous curve: coefficient points `a_0, …, a_n` of
+    /// `Σ a_k t^k`, each `(numerator coordinates…, denominator)`; the curve is the numerator
+    /// over the denominator.
+    ///
+    /// >>> from casteljau import RationalBezier
+    /// >>> RationalBezier([(1, 0), (1, 1), (0, 1)], [1, 1, 2]).power_form()   # ((1 - t²), 2t) / (1 + t²)
+    /// [(Fraction(1, 1), Fraction(0, 1), Fraction(1, 1)), (Fraction(0, 1), Fraction(2, 1), Fraction(0, 1)), (Fraction(-1, 1), Fraction(0, 1), Fraction(1, 1))]
+    #[pyo3(signature = (*, max_work=None))]
+    fn power_form<'py>(&self, py: Python<'py>, max_work: Option<f64>) -> PyResult<Bound<'py, PyList>> {
+        let (c, b) = (self.curve.homogeneous().clone(), budget(max_work)?);
+        let p = run(py, move || PowerForm::new(&c, &b))?;
+        points_py(py, &p.coefficients)
     }
 
     /// The derivative vectors at `t` up to order `k` (`[C(t), C'(t), …]`), exact.
@@ -638,16 +704,16 @@ impl RationalBezier {
 
     fn __repr__(&self) -> String {
         let w: Vec<String> = self.curve.weights().iter().map(|w| w.to_string()).collect();
-        let p: Vec<String> = self
-            .curve
-            .points()
-            .into_iter()
-            .map(|p| {
-                let p = p.expect("no weight is zero");
-                p.coords.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" ")
-            })
-            .collect();
-        format!("RationalBezier('{}', weights='{}')", p.join(", "), w.join(" "))
+        let text = |ps: &[Point<Q>]| {
+            ps.iter().map(|p| p.coords.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" ")).collect::<Vec<_>>()
+        };
+        match self.curve.points().into_iter().collect::<Option<Vec<_>>>() {
+            Some(ps) => format!("RationalBezier('{}', weights='{}')", text(&ps).join(", "), w.join(" ")),
+            // a point at infinity (weight zero): the homogeneous points say it all
+            None => {
+                format!("RationalBezier.from_homogeneous('{}')", text(self.curve.homogeneous().points()).join(", "))
+            }
+        }
     }
 }
 

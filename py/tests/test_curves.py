@@ -89,6 +89,28 @@ def test_rational_curves():
         RationalBezier([(0, 0), (1, 1)], [1])
 
 
+def test_rational_reduction_power_form_subsegment():
+    quarter = RationalBezier([(1, 0), (1, 1), (0, 1)], [1, 1, 2])
+    assert quarter.elevate(3).reduce() == quarter
+    # x = (1 - t²)/(1 + t²), y = 2t/(1 + t²): numerator coordinates, then the denominator
+    assert quarter.power_form() == [(1, 0, 1), (0, 2, 0), (-1, 0, 1)]
+    piece = quarter.subsegment(F(1, 4), F(3, 4))
+    assert piece(F(1, 2)) == quarter(F(1, 2)) and piece(0) == quarter(F(1, 4))
+    assert quarter.homogeneous == Bezier([(1, 0, 1), (1, 1, 1), (0, 2, 2)])
+    assert RationalBezier.from_homogeneous(quarter.homogeneous) == quarter
+
+
+def test_a_point_at_infinity_is_none_not_a_panic():
+    # weights 1, -1, 1 vanish at t = 1/2: the left half ends at a point at infinity
+    left, _ = RationalBezier([(0, 0), (1, 1), (2, 0)], [1, -1, 1]).subdivide(F(1, 2))
+    assert left.weights == [1, 0, 0]
+    assert left.points == [(0, 0), None, None]
+    assert repr(left).startswith("RationalBezier.from_homogeneous(")
+    assert RationalBezier.from_homogeneous(left.homogeneous) == left
+    with pytest.raises(CasteljauError, match="zero vector"):
+        RationalBezier.from_homogeneous([(0, 0, 0), (1, 1, 1)])
+
+
 def test_work_budget_refusal_names_max_work():
     c = Bezier([(0, 0), (1, 1), (2, 0)])
     with pytest.raises(CasteljauError, match=r"max_work=\d"):

@@ -14,7 +14,9 @@ MODULES = [
     "casteljau.shape",
     "casteljau.pathops",
     "casteljau.pathops._path",
+    "casteljau.pathops._base",
     "casteljau.pathops._exact",
+    "casteljau.pathops._ops",
     "casteljau._lint",
     "casteljau._prove",
     "casteljau.oracle",
@@ -32,18 +34,24 @@ def test_module_examples(name):
 
 @pytest.mark.parametrize("cls", [casteljau.Algebraic, casteljau.Bezier, casteljau.RationalBezier])
 def test_native_class_examples(cls):
-    finder = doctest.DocTestFinder()
     globs = {"Fraction": Fraction, "casteljau": casteljau}
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
     test = doctest.DocTestParser().get_doctest(cls.__doc__ or "", globs, cls.__name__, None, 0)
     assert test.examples, "no example in the docstring"
-    result = runner.run(test)
-    assert result.failed == 0
+    assert runner.run(test).failed == 0
+    # and the examples in its methods' docstrings
+    for name in dir(cls):
+        doc = getattr(getattr(cls, name), "__doc__", None) or ""
+        if not name.startswith("__") and ">>>" in doc:
+            test = doctest.DocTestParser().get_doctest(doc, dict(globs), cls.__name__ + "." + name, None, 0)
+            assert runner.run(test).failed == 0, name
 
 
 def test_the_readme_example(repo, monkeypatch):
     monkeypatch.chdir(repo)
     failures, tried = doctest.testfile(str(repo / "README.md"), module_relative=False, encoding="utf-8")
+    assert tried >= 2 and failures == 0
+    failures, tried = doctest.testfile(str(repo / "py" / "README.md"), module_relative=False, encoding="utf-8")
     assert tried >= 2 and failures == 0
 
 

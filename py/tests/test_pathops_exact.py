@@ -98,3 +98,24 @@ def test_check_against_skia_pathops():
 def test_stroking_is_out_of_scope():
     with pytest.raises(NotImplementedError, match="stroking"):
         square(0, 0, 1).stroke(2, 0, 0, 1)
+
+
+def test_simplifies_the_path_skia_refuses():
+    """fontTools' test_pathops_simplify_bug_workaround (Noto Sans Ethiopic, google/fonts#3365):
+    skia-pathops raises PathOpsError on this path and fontTools retries with rounded
+    coordinates. The exact simplify answers it as given: the last quad crosses the square's
+    right side x = 713.229 just above the baseline, leaving a sliver of height < 0.001."""
+    path = Path()
+    path.moveTo(550.461, 0); path.lineTo(550.461, 366.308); path.lineTo(713.229, 366.308); path.lineTo(713.229, 0)
+    path.close()
+    path.moveTo(574.46, 0); path.lineTo(574.46, 276.231); path.lineTo(737.768, 276.231)
+    path.quadTo(820.075, 276.231, 859.806, 242.654); path.quadTo(899.537, 209.077, 899.537, 144.154)
+    path.quadTo(899.537, 79, 853.46, 39.5); path.quadTo(807.383, 0, 712.383, 0); path.close()
+    result = pathops.simplify(path)
+    assert len(result) == 1 and not pathops.would_remove_overlap(result)
+    sliver = [pts[0] for verb, pts in result if verb == PathVerb.LINE and pts[0][0] == 713.229 and 0 < pts[0][1] < 0.001]
+    assert len(sliver) == 1
+    # the union's area: the square, plus the bowl, less their common part
+    square_area = (Fraction(713.229) - Fraction(550.461)) * Fraction(366.308)
+    assert result.area > square_area
+    assert pathops.check_against([path], "simplify", result, Fraction(1, 10**9))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import io
 import os
 from dataclasses import dataclass, field
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
+from typing import Any, Dict, Iterable, List, Optional, Tuple
 
 from . import _core
 
@@ -86,7 +86,7 @@ def _finding(d: Dict[str, Any], glyph: Optional[str] = None, glyph_id: Optional[
 def _font_bytes(font: Any) -> Optional[bytes]:
     if isinstance(font, (bytes, bytearray, memoryview)):
         return bytes(font)
-    if isinstance(font, (str, os.PathLike)):
+    if isinstance(font, (str, os.PathLike)) and not os.path.isdir(font):
         with open(font, "rb") as f:
             return f.read()
     if hasattr(font, "reader") and hasattr(font, "save") and hasattr(font, "getGlyphOrder"):  # a TTFont
@@ -109,8 +109,9 @@ def lint(
     """Every exact finding of a font's outlines.
 
     ``font_or_path``: a font file path or its bytes, a fontTools ``TTFont`` (saved to bytes
-    first, so in-memory edits count), or a UFO font/layer or any mapping of glyph names to
-    objects with ``draw(pen)`` (outer contours counter-clockwise unless ``orientation="cw"``).
+    first, so in-memory edits count), a UFO's path (its default layer, read with fontTools'
+    ``ufoLib``), or a UFO font/layer or any mapping of glyph names to objects with
+    ``draw(pen)`` (outer contours counter-clockwise unless ``orientation="cw"``).
     ``glyphs``: names to check (all by default); ``kinds``: the kinds to decide (all by
     default); ``max_work``: the budget of each glyph's arrangement. A glyph that cannot be read
     or decided raises ``CasteljauError`` naming it.
@@ -134,6 +135,10 @@ def lint(
     from .shape import Shape
 
     glyph_set = font_or_path
+    if isinstance(glyph_set, (str, os.PathLike)):  # a UFO folder
+        from fontTools.ufoLib import UFOReader
+
+        glyph_set = UFOReader(os.fspath(glyph_set)).getGlyphSet()
     names = list(glyphs) if glyphs is not None else list(glyph_set.keys())
     for name in names:
         g = glyph_set[name]

@@ -14,7 +14,6 @@ font's grid explains is reported apart, as INFO.
 
 from __future__ import annotations
 
-import importlib.util
 from typing import Any, Dict, Iterator, List, Tuple
 
 from fontbakery.prelude import FAIL, INFO, PASS, WARN, Message, check

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import io
 import logging
-from typing import Any, Dict, Iterable, List, Optional, Tuple
+from typing import Any, Iterable, List, Optional
 
 from . import _core
 

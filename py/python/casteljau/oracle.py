@@ -15,7 +15,7 @@ missed: s = root 1 of 4563*t^6 - 14742*t^5 + 18225*t^4 - 10912*t^3 + 3306*t^2 - 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, List, Optional, Sequence, Tuple
+from typing import Any, List, Sequence, Tuple
 
 from . import _core
 

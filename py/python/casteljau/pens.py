@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .pathops._path import Path, PathPen
+from .pathops._path import Path, PathPen, exchange
+from .shape import Shape
 
 __all__ = ["ExactPen"]
 
@@ -26,7 +27,4 @@ class ExactPen(PathPen):
         super().__init__(path if path is not None else Path(), glyphSet=glyphSet)
 
     def shape(self, fill: str = "nonzero") -> Any:
-        from .pathops._exact import exchange
-        from .shape import Shape
-
         return Shape(exchange(self.path), fill)

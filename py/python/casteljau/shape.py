@@ -7,38 +7,11 @@ from fractions import Fraction
 from typing import Any, Iterable, List, Optional, Sequence, Tuple
 
 from . import _core
+from ._contours import resolve, segment_exchange
+from .pathops._base import fill_rule
+from .pathops._path import Path, exchange
 
 __all__ = ["Shape"]
-
-
-def _exchange_of_segment(seg: Any) -> Tuple[list, Optional[list]]:
-    if isinstance(seg, _core.RationalBezier):
-        return (list(seg.points), list(seg.weights))
-    if isinstance(seg, _core.Bezier):
-        return (list(seg.points), None)
-    pts, ws = seg
-    return (list(pts), None if ws is None else list(ws))
-
-
-def resolve(contours: list, inputs: Sequence[list]) -> list:
-    """The native ``boolean``'s result contours in exchange form: a whole input segment
-    ``(input, contour, segment, reversed)`` is taken from ``inputs`` (its numbers as given), a
-    part ``(points, weights)`` is used as it is."""
-    out = []
-    for c in contours:
-        segs = []
-        for item in c:
-            if len(item) == 4:
-                i, k, s, rev = item
-                pts, ws = inputs[i][k][s]
-                if rev:
-                    pts = pts[::-1]
-                    ws = ws[::-1] if ws is not None else None
-                segs.append((pts, ws))
-            else:
-                segs.append(item)
-        out.append(segs)
-    return out
 
 
 class Shape:
@@ -62,7 +35,7 @@ class Shape:
     def __init__(self, contours: Iterable[Iterable[Any]] = (), fill: str = "nonzero") -> None:
         if fill not in ("nonzero", "evenodd"):
             raise _core.CasteljauError('the fill rule is "nonzero" or "evenodd", not %r' % (fill,))
-        self._contours = [[_exchange_of_segment(s) for s in c] for c in contours]
+        self._contours = [[segment_exchange(s) for s in c] for c in contours]
         self.fill = fill
 
     # -- construction -----------------------------------------------------------------------
@@ -90,20 +63,14 @@ class Shape:
     @classmethod
     def from_path(cls, path: Any) -> "Shape":
         """A ``casteljau.pathops.Path`` (its fill type's rule; open contours closed)."""
-        from .pathops._exact import _fill_rule, exchange
-
-        return cls(exchange(path), _fill_rule(path.fillType))
+        return cls(exchange(path), fill_rule(path.fillType))
 
     @classmethod
     def from_pen_drawing(cls, draw: Any, glyph_set: Any = None, fill: str = "nonzero") -> "Shape":
         """The shape of whatever ``draw(pen)`` draws with a fontTools segment pen (implied
         on-curve points at exact midpoints, components decomposed through ``glyph_set``)."""
-        from .pathops import Path
-
         path = Path()
         draw(path.getPen(glyphSet=glyph_set))
-        from .pathops._exact import exchange
-
         return cls(exchange(path), fill)
 
     @classmethod

@@ -11,7 +11,8 @@ exact midpoints, components transformed exactly) and decided by casteljau's over
 (``casteljau::overlaps::decide_glyph``, the ``remove-overlaps`` command's route): a glyph that
 needs no change keeps its contours and components; a rewritten glyph gets the certified
 integer-grid outline, its components decomposed only where they overlap or share pieces. It
-runs on the cubic UFO outlines (before cu2qu), so the outline is decided as drawn.
+runs on the cubic UFO outlines (before cu2qu), so the outline is decided as drawn; a glyph drawn
+with quadratic curves only (a TrueType-flavoured UFO) stays quadratic.
 """
 
 from __future__ import annotations
@@ -20,8 +21,7 @@ import logging
 from typing import Any, List, Optional
 
 from .. import _core
-from ..pathops._exact import exchange
-from ..pathops._path import Path
+from ..pathops._path import Path, exchange
 
 log = logging.getLogger(__name__)
 
@@ -68,9 +68,10 @@ class RemoveOverlapsFilter(BaseFilter):  # type: ignore[misc,valid-type]
             components.append(_component_outline(comp, glyph_set))
         if not components:
             return False
+        flavour = _flavour(components)
         try:
             status, contours, report = _core.decide(
-                components, "cubic", self.options.orientation, glyph.name, 0, self.options.max_work
+                components, flavour, self.options.orientation, glyph.name, 0, self.options.max_work
             )
         except _core.CasteljauError as e:
             if not self.options.ignoreErrors:
@@ -84,13 +85,20 @@ class RemoveOverlapsFilter(BaseFilter):  # type: ignore[misc,valid-type]
                 raise _core.CasteljauError("glyph %r: %s" % (glyph.name, contours))
             log.warning("glyph %r left unchanged: %s", glyph.name, contours)
             return False
-        _write(glyph, contours)
+        _write(glyph, contours, "qcurve" if flavour == "quadratic" else "curve")
         return True
 
 
-def _write(glyph: Any, contours: list) -> None:
-    """Replaces the glyph's outline by grid contours of ``(x, y, on_curve)`` (cubic: two
-    control points between on-curve points)."""
+def _flavour(components: List[list]) -> str:
+    """``"quadratic"`` for outlines whose curves are all quadratic, ``"cubic"`` otherwise."""
+    degrees = {len(pts) for outline in components for contour in outline for pts, _ in contour}
+    return "quadratic" if 3 in degrees and 4 not in degrees else "cubic"
+
+
+def _write(glyph: Any, contours: list, curve: str) -> None:
+    """Replaces the glyph's outline by grid contours of ``(x, y, on_curve)``, an on-curve point
+    after control points starting a segment of type ``curve`` (``"curve"``: two control points
+    between on-curve points; ``"qcurve"``: TrueType's quadratic splines)."""
     glyph.clearContours()
     glyph.clearComponents()
     pen = glyph.getPointPen()
@@ -103,5 +111,5 @@ def _write(glyph: Any, contours: list) -> None:
                 pen.addPoint((x, y))
                 continue
             prev_on = c[(i - 1) % n][2]
-            pen.addPoint((x, y), segmentType="line" if prev_on else "curve")
+            pen.addPoint((x, y), segmentType="line" if prev_on else curve)
         pen.endPath()

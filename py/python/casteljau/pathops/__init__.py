@@ -18,25 +18,26 @@ from dataclasses import dataclass, field
 from typing import Any, List, Optional, Sequence, Union
 
 from .. import _core
-from ._exact import ExactOperationError, OpBuilder, exchange, op, simplify
-from ._path import (
+from ._base import (
     ArcSize,
     Direction,
+    ExactOperationError,
     FillType,
     LineCap,
     LineJoin,
     NumberOfPointsError,
     OpenPathError,
-    Path,
     PathOp,
     PathOpsError,
-    PathPen,
     PathVerb,
     UnsupportedVerbError,
     bits2float,
     decompose_quadratic_segment,
+    fill_rule,
     float2bits,
 )
+from ._ops import OpBuilder, op
+from ._path import Path, PathPen, exchange, simplify
 from .operations import difference, intersection, reverse_difference, union, xor
 
 __all__ = [
@@ -87,10 +88,8 @@ def would_remove_overlap(path: Path, *, max_work: Optional[float] = None) -> boo
     >>> would_remove_overlap(p)
     True
     """
-    from ._exact import _fill_rule
-
     try:
-        return _core.changes(exchange(path), _fill_rule(path.fillType), "ccw", max_work, ignore_direction=True)
+        return _core.changes(exchange(path), fill_rule(path.fillType), "ccw", max_work, ignore_direction=True)
     except _core.CasteljauError as e:
         raise ExactOperationError(str(e)) from e
 
@@ -153,8 +152,6 @@ def check_against(
     >>> bool(v), v.problems, v.witness
     (True, [], None)
     """
-    from ._exact import _fill_rule
-
     if op is None or op == "simplify":
         name = "simplify"
         paths = list(inputs)
@@ -164,7 +161,7 @@ def check_against(
         if o == PathOp.REVERSE_DIFFERENCE:
             o, paths = PathOp.DIFFERENCE, paths[::-1]
         name = _OP_NAMES[o]
-    fill = _fill_rule(paths[0].fillType) if paths else "nonzero"
+    fill = fill_rule(paths[0].fillType) if paths else "nonzero"
     try:
         d = _core.check_against(name, [exchange(p) for p in paths], exchange(float_result), tol, fill, max_work)
     except _core.CasteljauError as e:

@@ -10,233 +10,33 @@ where Skia compares within ``SK_ScalarNearlyZero``.
 
 from __future__ import annotations
 
-import enum
 import itertools
-import struct
 from fractions import Fraction
 from typing import Any, Iterator, List, Optional, Sequence, Tuple
 
-from .. import _core
-from ..numbers import exact
+from . import _exact
+from ._base import (
+    _POINTS_IN_VERB,
+    _VERB_METHODS,
+    FillType,
+    NumberOfPointsError,
+    OpenPathError,
+    PathVerb,
+    Point,
+    UnsupportedVerbError,
+    _halves,
+    _is_middle,
+    _mid,
+    _num,
+    _pt,
+    _q,
+    _same,
+    decompose_quadratic_segment,
+    fill_rule,
+    float2bits,
+)
 
-__all__ = [
-    "Path",
-    "PathPen",
-    "PathVerb",
-    "PathOp",
-    "FillType",
-    "LineCap",
-    "LineJoin",
-    "ArcSize",
-    "Direction",
-    "PathOpsError",
-    "UnsupportedVerbError",
-    "OpenPathError",
-    "NumberOfPointsError",
-    "bits2float",
-    "float2bits",
-    "decompose_quadratic_segment",
-]
-
-Point = Tuple[Any, Any]
-
-
-class PathOpsError(Exception):
-    """An operation on paths failed (skia-pathops' base class)."""
-
-
-class UnsupportedVerbError(PathOpsError):
-    """A verb the operation does not handle."""
-
-
-class OpenPathError(PathOpsError):
-    """An open contour where closed ones are required (``getPen(allow_open_paths=False)``)."""
-
-
-class NumberOfPointsError(PathOpsError):
-    """A pen segment with the wrong number of points."""
-
-
-class PathVerb(enum.IntEnum):
-    """Skia's path verbs."""
-
-    MOVE = 0
-    LINE = 1
-    QUAD = 2
-    CONIC = 3
-    CUBIC = 4
-    CLOSE = 5
-
-
-class PathOp(enum.IntEnum):
-    """Skia's boolean operations."""
-
-    DIFFERENCE = 0
-    INTERSECTION = 1
-    UNION = 2
-    XOR = 3
-    REVERSE_DIFFERENCE = 4
-
-
-class FillType(enum.IntEnum):
-    """Skia's fill types."""
-
-    WINDING = 0
-    EVEN_ODD = 1
-    INVERSE_WINDING = 2
-    INVERSE_EVEN_ODD = 3
-
-
-class LineCap(enum.IntEnum):
-    """Stroke caps (stroking is not supported: ``Path.stroke`` raises)."""
-
-    BUTT_CAP = 0
-    ROUND_CAP = 1
-    SQUARE_CAP = 2
-
-
-class LineJoin(enum.IntEnum):
-    """Stroke joins (stroking is not supported)."""
-
-    MITER_JOIN = 0
-    ROUND_JOIN = 1
-    BEVEL_JOIN = 2
-
-
-class ArcSize(enum.IntEnum):
-    """SVG arc size flag (``arcTo`` is not supported: its conics have irrational weights)."""
-
-    SMALL = 0
-    LARGE = 1
-
-
-class Direction(enum.IntEnum):
-    """SVG arc sweep direction."""
-
-    CW = 0
-    CCW = 1
-
-
-_POINTS_IN_VERB = {
-    PathVerb.MOVE: 1,
-    PathVerb.LINE: 1,
-    PathVerb.QUAD: 2,
-    PathVerb.CONIC: 2,
-    PathVerb.CUBIC: 3,
-    PathVerb.CLOSE: 0,
-}
-
-_VERB_METHODS = {
-    PathVerb.MOVE: "moveTo",
-    PathVerb.LINE: "lineTo",
-    PathVerb.QUAD: "quadTo",
-    PathVerb.CONIC: "conicTo",
-    PathVerb.CUBIC: "cubicTo",
-    PathVerb.CLOSE: "close",
-}
-
-
-def float2bits(x: float) -> int:
-    """The bits of ``x`` rounded to float32, unsigned (as skia-pathops).
-
-    >>> hex(float2bits(17.5))
-    '0x418c0000'
-    >>> hex(float2bits(-10.0))
-    '0xc1200000'
-    """
-    return struct.unpack("<I", struct.pack("<f", x))[0]
-
-
-def bits2float(float_as_bits: int) -> float:
-    """The float32 with these bits (negative ints as their two's complement).
-
-    >>> bits2float(0x418c0000)
-    17.5
-    >>> bits2float(-0x3ee00000)
-    -10.0
-    """
-    return struct.unpack("<f", struct.pack("<I", float_as_bits & 0xFFFFFFFF))[0]
-
-
-def _num(v: Any) -> Any:
-    """A coordinate kept exactly: int, float and Fraction as they are, others read exactly."""
-    t = type(v)
-    if t is int or t is Fraction:
-        return v
-    if t is float:
-        if v != v or v in (float("inf"), float("-inf")):
-            raise _core.CasteljauError("not a finite number: %r" % v)
-        return v
-    if isinstance(v, bool):
-        return int(v)
-    return exact(v)
-
-
-def _pt(p: Sequence[Any]) -> Point:
-    return (_num(p[0]), _num(p[1]))
-
-
-def _half(a: Any, b: Any) -> Any:
-    """The exact midpoint of two coordinates (an int when it is one)."""
-    if type(a) is int and type(b) is int:
-        s = a + b
-        return s >> 1 if not s & 1 else Fraction(s, 2)
-    m = (Fraction(a) + Fraction(b)) / 2
-    return m.numerator if m.denominator == 1 else m
-
-
-_HALVES: dict = {}
-
-
-def _halves(s: int) -> Fraction:
-    """``Fraction(s, 2)`` for an odd ``s``, made once per value (TrueType's implied points)."""
-    f = _HALVES.get(s)
-    if f is None:
-        f = _HALVES[s] = Fraction(s, 2)
-        if len(_HALVES) > 1 << 16:
-            _HALVES.clear()
-            _HALVES[s] = f
-    return f
-
-
-def _mid(p: Point, q: Point) -> Point:
-    return (_half(p[0], q[0]), _half(p[1], q[1]))
-
-
-def decompose_quadratic_segment(points: Sequence[Point]) -> List[Tuple[Point, Point]]:
-    """A TrueType quadratic spline as quadratic segments ``(off, on)``, the implied on-curve
-    points the exact midpoints of consecutive off-curve points.
-
-    >>> decompose_quadratic_segment(((0, 0), (1, 1), (2, 1)))
-    [((0, 0), (Fraction(1, 2), Fraction(1, 2))), ((1, 1), (2, 1))]
-    """
-    points = tuple(points)
-    n = len(points) - 1
-    assert n > 0
-    quads = []
-    for i in range(n - 1):
-        quads.append((points[i], _mid(points[i], points[i + 1])))
-    quads.append((points[-2], points[-1]))
-    return quads
-
-
-def _same(p: Point, q: Point) -> bool:
-    return p[0] == q[0] and p[1] == q[1]
-
-
-def _q(v: Any) -> Any:
-    """An int or Fraction (exact arithmetic), a float as its exact Fraction."""
-    return Fraction(v) if type(v) is float else v
-
-
-def _is_middle(p1: Point, p2: Point, p3: Point) -> bool:
-    """``p2`` is exactly the midpoint of ``p1`` and ``p3``."""
-    return 2 * _q(p2[0]) == _q(p1[0]) + _q(p3[0]) and 2 * _q(p2[1]) == _q(p1[1]) + _q(p3[1])
-
-
-def _collinear(p1: Point, p2: Point, p3: Point) -> bool:
-    x1, y1, x2, y2, x3, y3 = (Fraction(c) for c in (p1[0], p1[1], p2[0], p2[1], p3[0], p3[1]))
-    return x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2) == 0
+__all__ = ["Path", "PathPen", "exchange", "from_contours", "simplify"]
 
 
 class Path:
@@ -280,6 +80,17 @@ class Path:
     def copy(self) -> "Path":
         """A copy."""
         return Path(self)
+
+    @classmethod
+    def _from_records(cls, fill: FillType, contours: Sequence[_exact.Records]) -> "Path":
+        """A path of closed contours given as their verbs, points and conic weights."""
+        out = cls(fillType=fill)
+        for verbs, points, weights in contours:
+            out._verbs += verbs
+            out._points += points
+            out._weights += weights
+            out._last_move = points[0]
+        return out
 
     # -- building ---------------------------------------------------------------------------
 
@@ -375,13 +186,25 @@ class Path:
             raise UnsupportedVerbError(verb)
 
     def addPath(self, path: "Path") -> None:
-        """Appends the contours of ``path``."""
-        w = iter(path._weights)
-        for verb, pts in path._records():
-            if verb == PathVerb.CONIC:
-                self.conicTo(*pts[0], *pts[1], next(w))
-            else:
-                self.add(verb, *pts)
+        """Appends the contours of ``path`` (its numbers are exact already: taken as they are)."""
+        verbs, points = path._verbs, path._points
+        if verbs and verbs[-1] == PathVerb.MOVE:  # a trailing moveTo draws nothing
+            verbs, points = verbs[:-1], points[:-1]
+        if not verbs:
+            return
+        if self._verbs and self._verbs[-1] == PathVerb.MOVE:  # consecutive moveTo collapse
+            self._verbs.pop()
+            self._points.pop()
+        self._verbs += verbs
+        self._points += points
+        self._weights += path._weights
+        i = len(points)
+        for v in reversed(verbs):
+            i -= _POINTS_IN_VERB[v]
+            if v == PathVerb.MOVE:
+                self._last_move = points[i]
+                break
+        self._needs_move = verbs[-1] == PathVerb.CLOSE
 
     # -- reading ----------------------------------------------------------------------------
 
@@ -497,24 +320,20 @@ class Path:
         """The path as fontTools segment-pen calls: TrueType quadratic splines joined where the
         on-curve point is exactly the midpoint, ``endPath`` for open contours, and an
         on-curve-less closed spline as ``qCurveTo(..., None)``."""
-        result: List[Tuple[str, tuple]] = []
-        it = itertools.chain([None], _segment_pen_calls(self), [None])
-        for previous, current, next_ in _triplewise(it):
-            if (
-                previous is not None
-                and previous[0] == "moveTo"
-                and current[0] == "qCurveTo"
-                and next_ is not None
-                and next_[0] == "closePath"
-                and _same(previous[1][0], current[1][-1])
-                and len(current[1]) > 2
-                and _is_middle(current[1][-2], current[1][-1], current[1][0])
-            ):
-                del result[-1]
-                result.append((current[0], current[1][:-1] + (None,)))
-                continue
-            result.append(current)  # type: ignore[arg-type]
-        yield from result
+        calls = list(_segment_pen_calls(self))
+        n = len(calls)
+        k = 0
+        while k < n:
+            call = calls[k]
+            if call[0] == "moveTo" and k + 2 < n and calls[k + 1][0] == "qCurveTo" and calls[k + 2][0] == "closePath":
+                q = calls[k + 1][1]
+                if len(q) > 2 and _same(call[1][0], q[-1]) and _is_middle(q[-2], q[-1], q[0]):
+                    # the moveTo is the spline's implied on-curve point: drawn as fontTools does
+                    yield ("qCurveTo", q[:-1] + (None,))
+                    k += 2
+                    continue
+            yield call
+            k += 1
 
     def draw(self, pen: Any) -> None:
         """Draws the path with a fontTools segment pen."""
@@ -542,9 +361,7 @@ class Path:
     def bounds(self) -> Tuple[Any, Any, Any, Any]:
         """The exact tight bounds ``(xMin, yMin, xMax, yMax)``: curve extrema included, each a
         number as stored, a ``Fraction`` or an ``Algebraic``."""
-        from ._exact import tight_bounds
-
-        return tight_bounds(self)
+        return _exact.tight_bounds(self._records(), self._weights)
 
     @property
     def controlPointBounds(self) -> Tuple[Any, Any, Any, Any]:
@@ -560,16 +377,12 @@ class Path:
     def isConvex(self) -> bool:
         """Whether the path is one convex contour of lines (exact turns; curves are decided by
         their control polygons, as Skia does)."""
-        from ._exact import is_convex
-
-        return is_convex(self)
+        return _exact.is_convex(exchange(self))
 
     def contains(self, pt: Tuple[Any, Any]) -> bool:
         """Whether the point is inside the path's fill (exact; a point on the boundary counts as
         inside, as Skia's ``contains``)."""
-        from ._exact import contains
-
-        return contains(self, pt)
+        return _exact.contains(exchange(self), self._fill, pt)
 
     def reverse(self) -> None:
         """Reverses every contour in place (the last point becomes the first)."""
@@ -582,8 +395,6 @@ class Path:
 
     def simplify(self, fix_winding: bool = True, keep_starting_points: bool = True, clockwise: bool = False) -> None:
         """Removes overlaps in place (the exact region; see ``casteljau.pathops.simplify``)."""
-        from ._exact import simplify
-
         self._copy_from(
             simplify(self, fix_winding=fix_winding, keep_starting_points=keep_starting_points, clockwise=clockwise)
         )
@@ -640,50 +451,86 @@ class Path:
         return out
 
 
-def _triplewise(iterable: Any) -> Iterator[Tuple[Any, Any, Any]]:
-    a, b, c = itertools.tee(iterable, 3)
-    next(b, None)
-    next(c, None)
-    next(c, None)
-    return zip(a, b, c)
+def exchange(path: Path) -> _exact.Contours:
+    """A path's contours as casteljau's exchange form: each contour closed by a line when its
+    last point is not its first (Skia fills open contours closed)."""
+    return _exact.contours_of(path._verbs, path._points, path._weights)
+
+
+def from_contours(contours: _exact.Contours, fill: FillType = FillType.WINDING) -> Path:
+    """Closed contours in exchange form as a path (their numbers as they are)."""
+    return Path._from_records(fill, [_exact.records_of(c) for c in contours if c])
+
+
+def finish(contours: _exact.Contours, areas: List[Any], fix_winding: bool, keep_starting_points: bool, first_points: List[Any]) -> Path:
+    """An operation's result as skia-pathops gives it (see ``_exact.result_records``)."""
+    fill, records = _exact.result_records(contours, areas, fix_winding, keep_starting_points, first_points)
+    return Path._from_records(fill, records)
+
+
+def simplify(
+    path: Path,
+    fix_winding: bool = True,
+    keep_starting_points: bool = True,
+    clockwise: bool = False,
+    *,
+    max_work: Optional[float] = None,
+) -> Path:
+    """The exact boundary of the path's fill (overlaps removed); see ``op``.
+
+    >>> from casteljau.pathops import Path, simplify
+    >>> p = Path()
+    >>> for x, y in ((0, 0), (5, 5)):
+    ...     p.moveTo(x, y); p.lineTo(x + 10, y); p.lineTo(x + 10, y + 10); p.lineTo(x, y + 10); p.close()
+    >>> [pts for _, pts in simplify(p)][:3]
+    [((0, 0),), ((10, 0),), ((Fraction(10, 1), Fraction(5, 1)),)]
+    """
+    first = path.firstPoints if keep_starting_points else []
+    inputs = [(exchange(path), fill_rule(path.fillType))]
+    contours, areas = _exact.boolean("simplify", inputs, "cw" if clockwise else "ccw", max_work)
+    return finish(contours, areas, fix_winding, keep_starting_points, first)
 
 
 def _segment_pen_calls(path: Path) -> Iterator[Tuple[str, tuple]]:
     """skia-pathops' SegmentPenIterator, with exact comparisons."""
-    records = list(path._records())
-    n = len(records)
+    verbs, pts = path._verbs, path._points
+    n = len(verbs)
+    if n and verbs[-1] == PathVerb.MOVE:  # a trailing moveTo draws nothing
+        n -= 1
+    MOVE, LINE, QUAD, CUBIC, CLOSE = PathVerb.MOVE, PathVerb.LINE, PathVerb.QUAD, PathVerb.CUBIC, PathVerb.CLOSE
     closed = True
-    move_pt: Point = (0, 0)
-    k = 0
+    i = k = 0
     while k < n:
-        verb, pts = records[k]
-        nxt = records[k + 1][0] if k + 1 < n else None
-        if verb == PathVerb.MOVE:
-            if not closed:
-                yield ("endPath", ())
-            move_pt = pts[0]
-            closed = False
-            yield ("moveTo", (pts[0],))
-        elif verb == PathVerb.CLOSE:
-            closed = True
-            yield ("closePath", ())
-        elif verb == PathVerb.LINE:
-            yield ("lineTo", (pts[0],))
-        elif verb == PathVerb.CUBIC:
-            yield ("curveTo", pts)
-        elif verb == PathVerb.QUAD:
+        verb = verbs[k]
+        if verb == LINE:
+            yield ("lineTo", (pts[i],))
+            i += 1
+        elif verb == QUAD:
             # join a TrueType spline: the next quad continues it when this quad's on-curve
             # point is exactly the midpoint of the two off-curve points
-            points = [pts[0]]
-            on = pts[1]
-            while k + 1 < n and records[k + 1][0] == PathVerb.QUAD and _is_middle(pts[0], on, records[k + 1][1][0]):
+            off, on = pts[i], pts[i + 1]
+            i += 2
+            points = [off]
+            while k + 1 < n and verbs[k + 1] == QUAD and _is_middle(off, on, pts[i]):
                 k += 1
-                pts = records[k][1]
-                points.append(pts[0])
-                on = pts[1]
+                off, on = pts[i], pts[i + 1]
+                i += 2
+                points.append(off)
             points.append(on)
             yield ("qCurveTo", tuple(points))
-        elif verb == PathVerb.CONIC:
+        elif verb == CUBIC:
+            yield ("curveTo", (pts[i], pts[i + 1], pts[i + 2]))
+            i += 3
+        elif verb == MOVE:
+            if not closed:
+                yield ("endPath", ())
+            closed = False
+            yield ("moveTo", (pts[i],))
+            i += 1
+        elif verb == CLOSE:
+            closed = True
+            yield ("closePath", ())
+        else:
             raise UnsupportedVerbError("CONIC")
         k += 1
     if not closed:
@@ -769,6 +616,13 @@ def _signed_area(path: Path) -> Fraction:
     return value
 
 
+def _all_int(points: Sequence[Any]) -> bool:
+    for x, y in points:
+        if type(x) is not int or type(y) is not int:
+            return False
+    return True
+
+
 class PathPen:
     """A fontTools segment pen drawing into a ``Path`` (skia-pathops' ``PathPen``), with the
     implied on-curve points of TrueType splines at their exact midpoints."""
@@ -804,7 +658,7 @@ class PathPen:
 
     def qCurveTo(self, *points: Any) -> None:
         n = len(points) - 1
-        if n > 0 and points[-1] is not None and all(type(c) is int for p in points for c in p):
+        if n > 0 and points[-1] is not None and _all_int(points):
             # integer points (TrueType): the implied on-curve points straight into the path
             path = self.path
             path._ensure_move()
@@ -848,7 +702,9 @@ class PathPen:
         base = self.glyphSet[glyphName]
         base_path = Path()
         base.draw(base_path.getPen(glyphSet=self.glyphSet))
-        self.path.addPath(base_path.transform(*transformation))
+        if tuple(transformation) != (1, 0, 0, 1, 0, 0):
+            base_path = base_path.transform(*transformation)
+        self.path.addPath(base_path)
 
     def addVarComponent(self, glyphName: str, transformation: Any, location: Any) -> None:
         raise TypeError("variable components are not supported")

@@ -6,8 +6,9 @@ from __future__ import annotations
 from functools import partial
 from typing import Any, Iterable
 
-from ._exact import op
-from ._path import Path, PathOp
+from ._base import PathOp
+from ._ops import op
+from ._path import Path
 
 __all__ = ["difference", "intersection", "reverse_difference", "union", "xor"]
 
