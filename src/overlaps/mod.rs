@@ -86,13 +86,6 @@ pub struct GlyphInput {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Repair {
-    /// Snap rounding added an on-curve point near a meeting point.
-    HotPixel {
-        /// The grid point.
-        x: i32,
-        /// The grid point.
-        y: i32,
-    },
     /// An off-curve point moved to a neighbouring grid point.
     MovedControl {
         /// The contour (output numbering).
@@ -130,7 +123,6 @@ impl std::fmt::Display for Repair {
     /// One line per repair, as the command line's text output and HTML report print it.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Repair::HotPixel { x, y } => write!(f, "hot pixel at ({x}, {y})"),
             Repair::MovedControl { contour, point } => write!(f, "control point {point} of contour {contour} moved"),
             Repair::MovedVertex { contour, point } => write!(f, "on-curve point {point} of contour {contour} moved"),
             Repair::Straightened { contour, point } => {

@@ -392,3 +392,65 @@ fn overlaps_a_curve_no_grid_point_keeps_curved_is_written_as_a_line() {
     assert_eq!(&points[25..27], ["834,-29", "829,-29"], "{out}");
     assert!(report.distance_bound <= rat(1));
 }
+
+#[test]
+#[ignore]
+fn zz_search_moved_vertex() {
+    let square = "M20 0 L40 20 L20 40 L0 20 Z";
+    let mut seed = 12345u64;
+    let mut rnd = |n: i64| {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((seed >> 33) % n as u64) as i64
+    };
+    let mut found = 0;
+    for _ in 0..1000000 {
+        let (ax, ay, bx, by, cx, cy) = (34 + rnd(16), 20 + rnd(16), 16 + rnd(16), 34 + rnd(16), 16 + rnd(32), 16 + rnd(32));
+        let tri = format!("M{ax} {ay} L{bx} {by} L{cx} {cy} Z");
+        let tv = [(ax, ay), (bx, by), (cx, cy)];
+        let on_line = |p: (i64, i64), a: (i64, i64), b: (i64, i64)| (b.0 - a.0) * (p.1 - a.1) - (b.1 - a.1) * (p.0 - a.0) == 0;
+        let dv = [(20i64, 0i64), (40, 20), (20, 40), (0, 20)];
+        if tv.iter().any(|&p| (0..4).any(|i| on_line(p, dv[i], dv[(i + 1) % 4]))) { continue }
+        if dv.iter().any(|&c| (0..3).any(|j| on_line(c, tv[j], tv[(j + 1) % 3]))) { continue }
+        let d = match decide_glyph(&input(&[&format!("{square} {tri}")], Flavour::Cubic, Orientation::Ccw), &Budget::unlimited()) { Ok(d) => d, Err(_) => continue };
+        let GlyphDecision::Rewritten { contours, report, .. } = &d else { continue };
+        if contours.len() != 1 { continue }
+        let Some(Repair::MovedVertex { point, .. }) = report.repairs.iter().find(|r| matches!(r, Repair::MovedVertex { .. })).cloned() else { continue };
+        // the input edges' crossings near the moved point
+        let sq = [(20.0, 0.0), (40.0, 20.0), (20.0, 40.0), (0.0, 20.0)];
+        let tr = [(ax as f64, ay as f64), (bx as f64, by as f64), (cx as f64, cy as f64)];
+        let q = &contours[0].points[point];
+        let mut best: Option<(f64, f64, f64)> = None;
+        let mut roundings: Vec<(i64, i64)> = vec![];
+        for i in 0..4 { for j in 0..3 {
+            let (p1, p2) = (sq[i], sq[(i + 1) % 4]);
+            let (p3, p4) = (tr[j], tr[(j + 1) % 3]);
+            let den = (p2.0 - p1.0) * (p4.1 - p3.1) - (p2.1 - p1.1) * (p4.0 - p3.0);
+            if den == 0.0 { continue }
+            let t = ((p3.0 - p1.0) * (p4.1 - p3.1) - (p3.1 - p1.1) * (p4.0 - p3.0)) / den;
+            let u = ((p3.0 - p1.0) * (p2.1 - p1.1) - (p3.1 - p1.1) * (p2.0 - p1.0)) / den;
+            if !(0.0..=1.0).contains(&t) || !(0.0..=1.0).contains(&u) { continue }
+            let (x, y) = (p1.0 + t * (p2.0 - p1.0), p1.1 + t * (p2.1 - p1.1));
+            if (x - x.floor() - 0.5).abs() < 1e-9 || (y - y.floor() - 0.5).abs() < 1e-9 { roundings.push((i64::MAX, 0)); roundings.push((i64::MAX, 0)); }
+            roundings.push((x.round() as i64, y.round() as i64));
+            let dd = (x - q.x as f64).hypot(y - q.y as f64);
+            if best.is_none_or(|b| dd < b.0) { best = Some((dd, x, y)); }
+        }}
+        let Some((_, x, y)) = best else { continue };
+        let mut r2 = roundings.clone(); r2.sort(); r2.dedup();
+        if r2.len() != roundings.len() { continue }
+        if (x - x.floor() - 0.5).abs() < 1e-9 || (y - y.floor() - 0.5).abs() < 1e-9 { continue }
+        let (rx, ry) = (x.round() as i32, y.round() as i32);
+        let mut pts: Vec<(i32, i32)> = contours[0].points.iter().map(|p| (p.x, p.y)).collect();
+        pts[point] = (rx, ry);
+        if pts.iter().filter(|&&p| p == (rx, ry)).count() > 1 { continue } // coincidence, another test
+        let d = format!("M{}Z", pts.iter().map(|(x, y)| format!("{x} {y}")).collect::<Vec<_>>().join(" L"));
+        let c = parse_path(&d, NumberMode::Exact).unwrap();
+        let g = Glyph::new(c);
+        let kinds: Vec<Kind> = lint(&g, &LintOptions::new(Orientation::Ccw)).unwrap().iter().map(|f| f.kind()).collect();
+        if kinds.iter().any(|k| matches!(k, Kind::SelfIntersection | Kind::Overlap)) && !kinds.iter().any(|k| matches!(k, Kind::OverlappingSegments)) {
+            println!("{tri}: {} ; {:?} ; {} ; nearest ({x:.3},{y:.3}) -> {kinds:?}", text(contours), report.repairs, report.distance_bound);
+            found += 1;
+            if found > 10 { break; }
+        }
+    }
+}
