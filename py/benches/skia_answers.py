@@ -6,13 +6,17 @@
 
 One line per glyph: {"glyph": name, "path": SVG path data} (coordinates as Python's repr of
 the binary64 values Skia returns, read back exactly), or {"glyph", "error"} where Skia raises.
-Outer contours clockwise, as the command line writes a TrueType font's glyphs.
+Outer contours clockwise, as the command line writes a TrueType font's glyphs. Coordinates are
+the font's stored ones, as casteljau reads them: fontTools (like FreeType) draws a `glyf` glyph
+whose left side bearing is not its `xMin` shifted by the difference (a simple glyph; fontTools
+leaves composites as stored), which is taken off here.
 """
 
 import json
 import sys
 
 import pathops
+from fontTools.pens.transformPen import TransformPen
 from fontTools.ttLib import TTFont
 
 
@@ -38,9 +42,13 @@ def path_data(path):
 def main():
     font = TTFont(sys.argv[1])
     glyphs = font.getGlyphSet()
+    glyf = font["glyf"] if "glyf" in font else None
     for name in font.getGlyphOrder():
         path = pathops.Path()
-        glyphs[name].draw(path.getPen(glyphSet=glyphs))
+        shift = 0
+        if glyf is not None and glyf[name].numberOfContours > 0:  # composites are drawn unshifted
+            shift = font["hmtx"][name][1] - glyf[name].xMin
+        glyphs[name].draw(TransformPen(path.getPen(glyphSet=glyphs), (1, 0, 0, 1, -shift, 0)))
         try:
             result = pathops.simplify(path, fix_winding=True, clockwise=True)
             line = {"glyph": name, "path": path_data(result)}

@@ -372,12 +372,12 @@ pub(super) fn write(tables: &Tables<'_>, num_glyphs: usize, written: &Written) -
     for (gid, record) in records.iter().enumerate() {
         let gid = gid as u32;
         if let Some(contours) = written.changed.get(&gid) {
-            // a glyph whose stored left side bearing is not its xMin is drawn shifted by their
-            // difference (FreeType places the origin at xMin − lsb; fontTools' glyph set draws
-            // so): its rewrite carries that shift, so it draws where it did (its lsb becomes
-            // its xMin below)
-            let shift =
-                if record.len() >= 10 { i32::from(stored[gid as usize].1) - i32::from(i16_at(record, 2)) } else { 0 };
+            // a simple glyph whose stored left side bearing is not its xMin is drawn shifted by
+            // their difference (FreeType places the origin at xMin − lsb; fontTools' glyph set
+            // draws so, and leaves composites as their components are stored): its rewrite
+            // carries that shift, so it draws where it did (its lsb becomes its xMin below)
+            let simple = record.len() >= 10 && i16_at(record, 0) >= 0;
+            let shift = if simple { i32::from(stored[gid as usize].1) - i32::from(i16_at(record, 2)) } else { 0 };
             let contours: std::borrow::Cow<'_, [GridContour]> = if shift == 0 {
                 contours.into()
             } else {
