@@ -60,13 +60,15 @@ pub(super) fn total_area(areas: &[ContourArea]) -> Result<(Option<BigRational>, 
 }
 
 /// `r + Σ ±t`, correctly rounded: the enclosure's ends rounded until they agree, bisecting every
-/// algebraic value's interval between tries.
+/// algebraic value's interval between tries (1, 2, 4, … up to 64 times).
 fn rounded_sum(r: &BigRational, terms: &mut [(bool, RealAlgebraic)]) -> Result<f64> {
     let scale = terms.iter().fold(r.abs() + rat(1), |acc, (_, t)| {
         let (lo, hi) = t.interval();
         acc + lo.abs() + hi.abs()
     });
     let limit = scale / BigRational::from_integer(num_bigint::BigInt::from(1) << 4096u32);
+    // bits gained per round: 1, 2, 4, … up to 64 (one sum and two roundings per round)
+    let mut step = 1;
     loop {
         let (mut lo, mut hi) = (r.clone(), r.clone());
         for (plus, t) in terms.iter() {
@@ -92,8 +94,9 @@ fn rounded_sum(r: &BigRational, terms: &mut [(bool, RealAlgebraic)]) -> Result<f
             });
         }
         for (_, t) in terms.iter_mut() {
-            t.bisect();
+            t.bisect_times(step);
         }
+        step = (step * 2).min(64);
     }
 }
 

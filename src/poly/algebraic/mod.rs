@@ -304,35 +304,43 @@ impl RealAlgebraic {
 
     /// Halves the interval once (it may become the rational midpoint itself).
     pub fn bisect(&mut self) {
-        let Repr::Root { poly, lo, hi } = &mut self.0 else { return };
-        let mid = (lo.clone() + &*hi) / rat(2);
-        let s = sign_at(poly, &mid);
-        if s == Ordering::Equal {
-            self.0 = Repr::Rational(mid);
-        } else if s == sign_at(poly, lo) {
-            *lo = mid;
-        } else {
-            *hi = mid;
-        }
+        self.bisect_while(|_, _| true, 1);
     }
 
     /// Bisects `times` times (stopping early when the number turns out rational).
     pub(crate) fn bisect_times(&mut self, times: usize) {
-        for _ in 0..times {
-            if self.to_rational().is_some() {
-                return;
-            }
-            self.bisect();
-        }
+        self.bisect_while(|_, _| true, times);
     }
 
     /// Narrows the interval below `width` (`width > 0`).
     pub fn refine(&mut self, width: &BigRational) {
-        while let Repr::Root { lo, hi, .. } = &self.0 {
-            if hi.clone() - lo < *width {
-                return;
+        self.bisect_while(|lo, hi| hi.clone() - lo >= *width, usize::MAX);
+    }
+
+    /// Bisects while `go(lo, hi)` holds, at most `times` times, stopping when the number turns
+    /// out rational. The sign at `lo` is the same at every step (the interval isolates one
+    /// root of the square-free polynomial, and `lo` never passes it), so it is computed once.
+    fn bisect_while(&mut self, go: impl Fn(&BigRational, &BigRational) -> bool, times: usize) {
+        let Repr::Root { poly, lo, hi } = &mut self.0 else { return };
+        let lo_sign = sign_at(poly, lo);
+        let mut exact = None;
+        for _ in 0..times {
+            if !go(lo, hi) {
+                break;
             }
-            self.bisect();
+            let mid = (lo.clone() + &*hi) / rat(2);
+            let s = sign_at(poly, &mid);
+            if s == Ordering::Equal {
+                exact = Some(mid);
+                break;
+            } else if s == lo_sign {
+                *lo = mid;
+            } else {
+                *hi = mid;
+            }
+        }
+        if let Some(mid) = exact {
+            self.0 = Repr::Rational(mid);
         }
     }
 
