@@ -277,11 +277,16 @@ pub fn boolean(
         });
     }
     let arr = Arrangement::new(inputs, budget)?;
-    result_of(&arr, op, options)
+    result_of(&arr, op, options, budget)
 }
 
 /// The result of `op` on an arrangement of its inputs.
-pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOptions) -> Result<BooleanResult> {
+pub(crate) fn result_of(
+    arr: &Arrangement,
+    op: BooleanOp,
+    options: BooleanOptions,
+    budget: &Budget,
+) -> Result<BooleanResult> {
     let fill = options.fill;
     let inside = |w: &[i64]| op.apply(fill.contains(w[0]), w.len() > 1 && fill.contains(w[1]));
     let keep = |h: HalfEdge| {
@@ -290,6 +295,16 @@ pub(crate) fn result_of(arr: &Arrangement, op: BooleanOp, options: BooleanOption
     };
     let mut cycles = arr.cycles(&keep)?;
     let mut contours: Vec<Vec<Run>> = cycles.iter().map(|c| runs(arr, c)).collect();
+    // 4. the exact areas and the rounded path, priced by the runs' irrational ends
+    let runs_count: usize = contours.iter().map(Vec::len).sum();
+    let ends: f64 = contours
+        .iter()
+        .flatten()
+        .map(|r| {
+            super::estimate::run_end(&arr.segs[r.seg], &r.from) + super::estimate::run_end(&arr.segs[r.seg], &r.to)
+        })
+        .sum();
+    budget.check(format!("the exact areas and path of the result ({runs_count} runs)"), ends)?;
     // canonical order: each contour from its least run, contours by their first run
     for (c, cyc) in contours.iter_mut().zip(cycles.iter_mut()) {
         let start = (0..c.len()).min_by(|&i, &j| c[i].key().cmp(&c[j].key())).unwrap_or(0);

@@ -17,6 +17,7 @@
 use super::pairs::{Visit, sweep_pairs};
 use super::segment::Seg;
 use crate::error::Result;
+use crate::poly::algebraic::RealAlgebraic;
 use crate::work::{Budget, intersection, limbs, winding_piece};
 use std::sync::Arc;
 
@@ -125,4 +126,17 @@ pub(super) fn ray(segs: &[Arc<Seg>]) -> f64 {
             RAY_BOX + p * winding_piece(s.degree(), s.sizes.bits)
         })
         .sum()
+}
+
+/// The result's exact areas and rounded path (stage 4, after the arrangement), per irrational
+/// end of a run: `7000·(d·n)²` for a parameter of degree `d` on a segment of degree `n` (the
+/// images of the point and of the area's antiderivative there, bisected until their binary64
+/// values are decided). Fitted on a union at a cusp (12 irrational ends of degrees 1 to 24: 9.7 ms
+/// measured, 9.8 ms estimated) and on two rings of cubics (8 ends of degree 12: 8.3 ms, 8.1 ms).
+pub(super) fn run_end(s: &Seg, t: &RealAlgebraic) -> f64 {
+    if t.to_rational().is_some() {
+        return 0.0;
+    }
+    let image = (t.polynomial().len().saturating_sub(1) * s.degree()) as f64;
+    7000.0 * image * image
 }
