@@ -392,3 +392,22 @@ fn overlaps_a_curve_no_grid_point_keeps_curved_is_written_as_a_line() {
     assert_eq!(&points[25..27], ["834,-29", "829,-29"], "{out}");
     assert!(report.distance_bound <= rat(1));
 }
+
+#[test]
+fn overlaps_a_crossing_rounded_past_an_edge_is_written_beside_it() {
+    // a thin wedge over a slanted edge (x = 40 + y/2): it crosses the edge at (320/7, 80/7) ≈
+    // (45.71, 11.43) and (591/13, 142/13) ≈ (45.46, 10.92). The first one's nearest grid point
+    // (46, 11) lies beyond the wedge's lower edge, from (42, 9) to (69, 24): written there the
+    // outline would cross itself, so it is written at (46, 12)
+    let slanted = "M0 0 L40 0 L60 40 L0 40 Z";
+    let wedge = "M68 26 L42 9 L69 24 Z";
+    let (out, report) = rewritten(&[&format!("{slanted} {wedge}")], Flavour::Cubic, Orientation::Ccw);
+    assert_eq!(
+        format!("{out}; {:?}; {}", report.repairs, report.distance_bound),
+        "0,0 40,0 45,11 69,24 68,26 46,12 60,40 0,40; [MovedVertex { contour: 0, point: 5 }]; 638877/1000000"
+    );
+    // plain rounding: the same outline with the crossing at its nearest grid point
+    let plain = parse_path("M0 0 L40 0 L45 11 L69 24 L68 26 L46 11 L60 40 L0 40 Z", NumberMode::Exact).unwrap();
+    let found = lint(&Glyph::new(plain), &LintOptions::new(Orientation::Ccw)).unwrap();
+    assert!(found.iter().any(|f| f.kind() == Kind::SelfIntersection), "{found:?}");
+}
