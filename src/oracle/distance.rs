@@ -114,16 +114,11 @@ impl Curve {
     /// The point at `t`, binary64 (for searches).
     fn eval(&self, t: f64) -> [f64; 2] {
         if self.pts.is_some() {
-            let mut q = [[0.0; 2]; 8];
-            let n = self.mids.len();
-            if n <= 8 {
-                q[..n].copy_from_slice(&self.mids);
-                for level in 1..n {
-                    for i in 0..n - level {
-                        q[i] = [q[i][0] + t * (q[i + 1][0] - q[i][0]), q[i][1] + t * (q[i + 1][1] - q[i][1])];
-                    }
-                }
-                return q[0];
+            if let Some([point, ..]) = self.eval_derivatives(t) {
+                return point;
+            }
+            if let [only] = self.mids[..] {
+                return only;
             }
             let c =
                 BezierCurve::new(self.mids.iter().map(|q| Point::new(q.to_vec())).collect()).expect("a control point");
@@ -135,7 +130,9 @@ impl Curve {
     }
 
     /// The point at `t` and the first two derivatives there, binary64, by de Casteljau's
-    /// levels (polynomial curves of at most 8 control points; `None` otherwise).
+    /// levels: with `m` points left at a level of a curve of `n` control points, the second
+    /// derivative is `(n−1)(n−2)·(q2 − 2q1 + q0)` when `m = 3`, the first `(n−1)·(q1 − q0)` when
+    /// `m = 2` (polynomial curves of 2 to 8 control points; `None` otherwise).
     fn eval_derivatives(&self, t: f64) -> Option<[[f64; 2]; 3]> {
         let n = self.mids.len();
         if self.pts.is_none() || !(2..=8).contains(&n) {
@@ -144,14 +141,13 @@ impl Curve {
         let mut q = [[0.0; 2]; 8];
         q[..n].copy_from_slice(&self.mids);
         let mut second = [0.0; 2];
-        for level in 1..n - 1 {
-            for i in 0..n - level {
-                q[i] = [q[i][0] + t * (q[i + 1][0] - q[i][0]), q[i][1] + t * (q[i + 1][1] - q[i][1])];
-            }
-            if level == n - 3 {
-                // three points left: the second derivative is n(n−1)·(q2 − 2q1 + q0)
+        for m in (3..=n).rev() {
+            if m == 3 {
                 let k = ((n - 1) * (n - 2)) as f64;
                 second = [k * (q[2][0] - 2.0 * q[1][0] + q[0][0]), k * (q[2][1] - 2.0 * q[1][1] + q[0][1])];
+            }
+            for i in 0..m - 1 {
+                q[i] = [q[i][0] + t * (q[i + 1][0] - q[i][0]), q[i][1] + t * (q[i + 1][1] - q[i][1])];
             }
         }
         let k = (n - 1) as f64;
@@ -954,4 +950,36 @@ pub(super) fn far_from(pieces: &[(&Seg, BigRational, BigRational)], q: &Point2<B
         }
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rational::RationalBezier;
+
+    fn curve(points: &[(i64, i64)]) -> Curve {
+        let ps = points.iter().map(|&(x, y)| Point::new(vec![rat(x), rat(y)])).collect();
+        let c = RationalBezier::new(ps, vec![rat(1); points.len()]).unwrap();
+        Curve::new(Arc::new(Seg::new(0, 0, 0, c).unwrap()))
+    }
+
+    #[test]
+    fn derivatives_of_a_quadratic_and_a_cubic_are_exact_at_dyadic_parameters() {
+        // (0,0) (0,1) (2,2): C(t) = (2t², 2t), C' = (4t, 2), C'' = (4, 0)
+        let q = curve(&[(0, 0), (0, 1), (2, 2)]);
+        assert_eq!(q.eval_derivatives(0.5), Some([[0.5, 1.0], [2.0, 2.0], [4.0, 0.0]]));
+        // (0,0) (1,0) (2,0) (3,6): x = 3t, y = 6t³: C' = (3, 18t²), C'' = (0, 36t)
+        let c = curve(&[(0, 0), (1, 0), (2, 0), (3, 6)]);
+        assert_eq!(c.eval_derivatives(0.5), Some([[1.5, 0.75], [3.0, 4.5], [0.0, 18.0]]));
+        assert_eq!(c.eval(0.25), [0.75, 6.0 / 64.0]);
+    }
+
+    #[test]
+    fn nearest_finds_the_foot_of_the_perpendicular() {
+        // the parabola (2t², 2t) and the point (0, 1): the squared distance 4t⁴ + (2t − 1)² is
+        // least where its derivative 16t³ + 8t − 4 vanishes
+        let q = curve(&[(0, 0), (0, 1), (2, 2)]);
+        let t = q.nearest([0.0, 1.0], 0.0, 1.0);
+        assert!((16.0 * t * t * t + 8.0 * t - 4.0).abs() < 1e-12, "{t}");
+    }
 }
