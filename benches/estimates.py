@@ -48,12 +48,34 @@ CUSP_B = "M7 1 C6.5 2 4.5 0.5 5 0 L5.5 3.75 L4 1.25 L5 0 Z"
 RING_A = "M0 0 C10 20 30 20 40 0 C30 -20 10 -20 0 0 Z M15 0 C17 5 23 5 25 0 C23 -5 17 -5 15 0 Z"
 RING_B = "M20 -30 C40 -10 40 10 20 30 C0 10 0 -10 20 -30 Z M20 -8 C24 -4 24 4 20 8 C16 4 16 -4 20 -8 Z"
 
+def near_cubic(points, bits, seed):
+    """`points` scaled by 2^bits, each coordinate moved by a pseudo-random (bits − 8)-bit amount."""
+    state = seed
+    out = []
+    for x, y in points:
+        coords = []
+        for v in (x, y):
+            state = (state * 6364136223846793005 + 1442695040888963407) % 2**64
+            coords.append(v * 2**bits + (state << (bits - 72)) % 2 ** (bits - 8))
+        out.append(f"{coords[0]} {coords[1]}")
+    return ", ".join(out)
+
+
 # (name, arguments; "{found}" is replaced by the command's own answer without --against)
 CASES = [
     ("intersect, two cubics (small integers)", ["intersect", "0 0, 1 3, 3 -1, 4 2", "0 2, 2 -2, 3 4, 4 0"]),
     ("intersect, degree 7 × 7", ["intersect", curve(7, 13, 97, 41), curve(7, 29, 89, 61)]),
     ("intersect --self, degree 8 (a parameter of degree 42)", ["intersect", "--self", curve(8, 13, 97, 41)]),
     ("intersect --self, degree 8 (another curve)", ["intersect", "--self", curve(8, 29, 89, 61)]),
+    (
+        "intersect, two cubics of 1000-bit integers",
+        [
+            "intersect",
+            near_cubic([(0, 0), (1, 3), (3, -1), (4, 2)], 1000, 1),
+            near_cubic([(0, 2), (2, -2), (3, 4), (4, 0)], 1000, 2),
+        ],
+    ),
+    ("intersect, a cubic and a line 10^±300 (exact route)", ["intersect", "0 0, 1 1, 2 1, 3 0", "1e300 1e-300, -1e300 0"]),
     ("elevate --by 1000, 1000-digit cubic", ["elevate", "--by", "1000", BIG_CUBIC]),
     ("elevate --by 2000, small cubic", ["elevate", "--by", "2000", "0 0, 1 2, 3 1, 4 0"]),
     (

@@ -44,7 +44,8 @@ pub(super) fn solved_in_boxes(
     // without rational roots the cells' roots are irrational; else each is checked
     let no_rational = crate::poly::algebraic::no_rational_roots;
     let (s_irrational, t_irrational) = (no_rational(&ps), no_rational(&pt));
-    let (dpsc, dptc) = (filter::Coeffs::derivative_of(&ps), filter::Coeffs::derivative_of(&pt));
+    let derivative = |p: &[BigInt]| filter::Coeffs::derivative_of(p, filter::range_shift(p));
+    let (dpsc, dptc) = (derivative(&ps), derivative(&pt));
     // the exact derivatives, for the exact cells (made on first need)
     let (mut dps, mut dpt) = (None, None);
     let (side_a, side_b) = (Side::new(fa), Side::new(fb));

@@ -32,6 +32,13 @@ impl Enclosure {
         let f = num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN);
         Enclosure(f.next_down().next_down(), f.next_up().next_up())
     }
+    /// `c·2^−shift`: `⌊c/2^shift⌋` enclosed, widened by the one unit the floor dropped.
+    fn of_scaled_integer(c: &BigInt, shift: u64) -> Self {
+        if shift == 0 {
+            return Self::of_integer(c);
+        }
+        Self::of_integer(&(c >> shift)).add(Enclosure(0.0, 1.0))
+    }
     /// `[lo, hi]` (the caller knows it holds the value).
     pub(super) fn new(lo: f64, hi: f64) -> Self {
         Enclosure(lo, hi)
@@ -402,6 +409,16 @@ pub(super) enum Regions {
 /// [`HANDOFF_DEPTH`]) hold every one. Boxes that touch do not count as disjoint, so hits at ends
 /// are never filtered out.
 pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) -> Regions {
+    // the plane scaled by a power of two (the parameters of the common points unchanged) when
+    // the coordinates lie far outside f64's comfortable range (10^±180, about)
+    let shift = plane_shift(a.iter().chain(b).flat_map(|row| &row[..2]));
+    let scale = |x: &BigRational| -> BigRational {
+        match shift {
+            0 => x.clone(),
+            k if k > 0 => x * BigRational::from_integer(BigInt::from(1) << k),
+            k => x / BigRational::from_integer(BigInt::from(1) << k.unsigned_abs()),
+        }
+    };
     let enclosed = |rows: &[[BigRational; 3]]| -> Option<Polygon> {
         if rows.is_empty() || rows.len() > MAX_POINTS {
             return None;
@@ -410,16 +427,23 @@ pub(super) fn candidate_regions(a: &[[BigRational; 3]], b: &[[BigRational; 3]]) 
         for (q, row) in p.points.iter_mut().zip(rows) {
             for k in 0..3 {
                 // an integer below 2^53 converts exactly (and without num-rational's general route)
-                let small = row[k].is_integer().then(|| num_traits::ToPrimitive::to_i64(row[k].numer())).flatten();
+                let scaled;
+                let x = if k < 2 && shift != 0 {
+                    scaled = scale(&row[k]);
+                    &scaled
+                } else {
+                    &row[k]
+                };
+                let small = x.is_integer().then(|| num_traits::ToPrimitive::to_i64(x.numer())).flatten();
                 let f = match small {
                     Some(v) if v.unsigned_abs() < 1 << 53 => v as f64,
-                    _ => crate::num::scalar::ratio_to_f64(&row[k]),
+                    _ => crate::num::scalar::ratio_to_f64(x),
                 };
                 if !f.is_finite() {
                     return None;
                 }
                 // nearest: within half an ulp; exact for integers below 2^53
-                let exact = row[k].is_integer() && f.abs() < 9007199254740992.0;
+                let exact = x.is_integer() && f.abs() < 9007199254740992.0;
                 let err = if exact { 0.0 } else { midpoint_error(f.abs()) };
                 if k < 2 {
                     p.r = p.r.max(err);
@@ -528,10 +552,15 @@ impl Coeffs {
         Coeffs(p.iter().map(enclose).collect())
     }
 
-    /// The enclosed coefficients of `p′` (`k·c_k`), without forming it.
-    pub(super) fn derivative_of(p: &[BigInt]) -> Self {
+    /// The enclosed coefficients of `p·2^−shift`.
+    pub(super) fn scaled(p: &[BigInt], shift: u64) -> Self {
+        Coeffs(p.iter().map(|c| Enclosure::of_scaled_integer(c, shift)).collect())
+    }
+
+    /// The enclosed coefficients of `p′·2^−shift` (`k·c_k·2^−shift`), without forming it.
+    pub(super) fn derivative_of(p: &[BigInt], shift: u64) -> Self {
         let k = |k: usize| Enclosure(k as f64, k as f64);
-        Coeffs(p.iter().enumerate().skip(1).map(|(i, c)| Enclosure::of_integer(c).mul(k(i))).collect())
+        Coeffs(p.iter().enumerate().skip(1).map(|(i, c)| Enclosure::of_scaled_integer(c, shift).mul(k(i))).collect())
     }
 
     /// An enclosure of the polynomial over `x` (Horner).
@@ -556,6 +585,31 @@ pub(super) struct System {
     d: [Coeffs; 4],
 }
 
+/// The bit length of the largest coefficient of [`System`]'s polynomials once scaled: far
+/// inside `f64`'s range (`2^±1022`) both ways, so that Newton's matrix (about the inverse of
+/// the coefficients) and the products of Krawczyk's operator neither overflow nor underflow.
+const SYSTEM_BITS: u64 = 400;
+
+/// The power of two (an exponent) that brings the largest of `coordinates` to about `2^400`
+/// when it lies beyond `2^±600` (else 0): a uniform scaling of the plane.
+fn plane_shift<'a>(coordinates: impl IntoIterator<Item = &'a BigRational>) -> i64 {
+    let top = coordinates
+        .into_iter()
+        .filter(|x| !num_traits::Zero::is_zero(*x))
+        .map(|x| x.numer().bits() as i64 - x.denom().bits() as i64)
+        .max();
+    match top {
+        Some(e) if !(-600..=600).contains(&e) => 400 - e,
+        _ => 0,
+    }
+}
+
+/// The power of two that brings the largest of `coefficients` to about [`SYSTEM_BITS`] bits
+/// (0 when it is smaller): a positive factor changes no zero and no sign.
+pub(super) fn range_shift<'a>(coefficients: impl IntoIterator<Item = &'a BigInt>) -> u64 {
+    coefficients.into_iter().map(BigInt::bits).max().unwrap_or(0).saturating_sub(SYSTEM_BITS)
+}
+
 /// A box `[σ, τ]`.
 pub(super) type Box2 = [Enclosure; 2];
 
@@ -572,9 +626,14 @@ impl System {
         } else {
             [scaled(&fa[0], wb), scaled(&fa[1], wb), scaled(&fb[0], wa), scaled(&fb[1], wa)]
         };
+        // each equation of F scaled by a power of two (same zeros, the same proofs) so that its
+        // largest coefficient has about SYSTEM_BITS bits: curves far from 1 in size (coordinates
+        // near 10^±300 or beyond, 1000-bit integers, or x and y of very different sizes) stay
+        // inside f64's range
+        let shifts = [0, 1].map(|e| range_shift(polys[e].iter().chain(&polys[e + 2])));
         Some(System {
-            p: std::array::from_fn(|k| Coeffs::new(&polys[k])),
-            d: std::array::from_fn(|k| Coeffs::derivative_of(&polys[k])),
+            p: std::array::from_fn(|k| Coeffs::scaled(&polys[k], shifts[k % 2])),
+            d: std::array::from_fn(|k| Coeffs::derivative_of(&polys[k], shifts[k % 2])),
         })
     }
 

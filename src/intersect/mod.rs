@@ -43,6 +43,7 @@ use crate::num::point::Point;
 use crate::num::scalar::rat;
 use crate::poly::algebraic::RealAlgebraic;
 use crate::rational::RationalBezier;
+use num_bigint::BigInt;
 use num_rational::BigRational;
 
 /// Largest degree of either curve [`intersect`] accepts.
@@ -186,7 +187,8 @@ fn check(c: &RationalBezier<BigRational>, domain: Domain) -> Result<()> {
 /// line (an improper parametrization, such as `(s², s⁴)` on `y = x²`), or, with
 /// [`Domain::All`], when a weight vanishes on `[0, 1]` where the arcs are sought;
 /// [`Error::WorkLimit`] when the estimated work exceeds `budget` (checked before any work
-/// starts; [`Budget::unlimited`](crate::work::Budget::unlimited) for no limit).
+/// starts, and again with the cost of writing the irrational parameters found, before they
+/// are written; [`Budget::unlimited`](crate::work::Budget::unlimited) for no limit).
 pub fn intersect(
     a: &RationalBezier<BigRational>,
     b: &RationalBezier<BigRational>,
@@ -197,7 +199,27 @@ pub fn intersect(
     check(b, domain)?;
     let estimated = estimate(a, b);
     budget.check(format!("intersecting degree {} with degree {}", a.degree(), b.degree()), estimated)?;
-    crate::work::metered(budget, estimated, || intersect_checked(a, b, domain))
+    crate::work::metered(budget, estimated, || described(intersect_checked(a, b, domain)?))
+}
+
+/// `found`, once writing its irrational parameters exactly is charged
+/// ([`crate::work::description`]: their canonical form is what `Display` and the JSON print).
+fn described(found: Intersections) -> Result<Intersections> {
+    let numbers = found
+        .intersections
+        .iter()
+        .flat_map(|i| [&i.s, &i.t])
+        .chain(found.overlaps.iter().flat_map(|o| o.s.iter().chain(&o.t)));
+    let units: f64 = numbers
+        .filter(|x| x.to_rational().is_none())
+        .map(|x| {
+            let p = x.polynomial();
+            crate::work::description(p.len().saturating_sub(1), p.iter().map(BigInt::bits).max().unwrap_or(0))
+        })
+        .sum();
+    let count = found.intersections.len() + found.overlaps.len();
+    crate::work::charge(|| format!("writing the exact parameters of {count} common points and arcs"), units)?;
+    Ok(found)
 }
 
 /// [`intersect`] once the curves and the estimate are checked.
@@ -237,5 +259,7 @@ pub fn self_intersect(
     check(a, domain)?;
     let estimated = estimate(a, a);
     budget.check(format!("self-intersecting degree {}", a.degree()), estimated)?;
-    crate::work::metered(budget, estimated, || overlap::self_intersections(&forms::integer_forms(a), domain))
+    crate::work::metered(budget, estimated, || {
+        described(overlap::self_intersections(&forms::integer_forms(a), domain)?)
+    })
 }

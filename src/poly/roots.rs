@@ -123,7 +123,7 @@ fn isolate_square_free_within(ints: Vec<BigInt>, allowance: f64) -> std::result:
         out.push(Root::Exact(rat(0)));
     }
     let last_zero = ints.last().expect("coefficients").is_zero();
-    split(ints, rat(0), rat(1), &mut out, allowance)?;
+    split(ints, &mut out, allowance)?;
     if last_zero {
         out.push(Root::Exact(rat(1)));
     }
@@ -185,39 +185,40 @@ pub(crate) fn power_to_bernstein_integer(c: &[BigInt]) -> Vec<BigInt> {
         .collect()
 }
 
-/// Roots in the open interval `(a, b)` of a square-free polynomial whose Bernstein
-/// coefficients on `[a, b]` are a positive multiple of `c`, ascending. `V` sign changes bound
-/// the roots in `(a, b)` with the same parity (Descartes' rule; zero coefficients are skipped),
-/// so `V = 1` certifies exactly one. Terminates by Vincent's theorem (module docs); the pending
-/// pieces are kept on an explicit stack, right halves below left ones, so roots come out in
-/// order. The halves come from [`split_integer`] at `1/2`: integers only. Each split is
-/// charged [`crate::work::root_split`] against `allowance`; past it, `Err((splits, work spent))`.
-fn split(
-    c: Vec<BigInt>,
-    a: BigRational,
-    b: BigRational,
-    out: &mut Vec<Root>,
-    allowance: f64,
-) -> std::result::Result<(), (usize, f64)> {
+/// Roots in the open interval `(0, 1)` of a square-free polynomial whose Bernstein
+/// coefficients on `[0, 1]` are a positive multiple of `c`, ascending. `V` sign changes bound
+/// the roots in an interval with the same parity (Descartes' rule; zero coefficients are
+/// skipped), so `V = 1` certifies exactly one. Terminates by Vincent's theorem (module docs);
+/// the pending pieces are kept on an explicit stack, right halves below left ones, so roots come
+/// out in order. The halves come from [`split_integer`] at `1/2`: integers only, each half
+/// divided by the power of two its coefficients share (signs and roots unchanged). A piece is
+/// the dyadic interval `[k/2^j, (k + 1)/2^j]`, held as the integer `k` and the level `j`, so a
+/// root near an end (`2^−1000` from it, say: a thousand levels) costs no fraction arithmetic on
+/// the way down; fractions are made only for the answer. Each split is charged
+/// [`crate::work::root_split`] against `allowance`; past it, `Err((splits, work spent))`.
+fn split(c: Vec<BigInt>, out: &mut Vec<Root>, allowance: f64) -> std::result::Result<(), (usize, f64)> {
     let mut spent = 0.0;
     let mut splits = 0usize;
     enum Task {
-        Piece(Vec<BigInt>, BigRational, BigRational),
-        Exact(BigRational),
+        Piece(Vec<BigInt>, BigInt, u64),
+        Exact(BigInt, u64),
     }
     let (one, two) = (BigInt::from(1), BigInt::from(2));
-    let mut stack = vec![Task::Piece(c, a, b)];
+    let mut stack = vec![Task::Piece(c, BigInt::zero(), 0)];
     while let Some(task) = stack.pop() {
-        let (c, a, b) = match task {
-            Task::Exact(m) => {
-                out.push(Root::Exact(m));
+        let (c, k, j) = match task {
+            Task::Exact(k, j) => {
+                out.push(Root::Exact(dyadic(k, j)));
                 continue;
             }
-            Task::Piece(c, a, b) => (c, a, b),
+            Task::Piece(c, k, j) => (c, k, j),
         };
         match sign_changes(&c) {
             0 => {}
-            1 => out.push(Root::Isolated(a, b)),
+            1 => {
+                let next = &k + 1;
+                out.push(Root::Isolated(dyadic(k, j), dyadic(next, j)));
+            }
             _ => {
                 let bits = c.iter().map(BigInt::bits).max().unwrap_or(0);
                 spent += crate::work::root_split(c.len() - 1, bits);
@@ -226,17 +227,35 @@ fn split(
                 }
                 splits += 1;
                 let (lc, rc) = split_integer(&c, &one, &two);
-                let m = (a.clone() + &b) / rat(2);
+                let (lc, rc) = (without_shared_twos(lc), without_shared_twos(rc));
+                let left: BigInt = &k << 1u8;
+                let right: BigInt = &left + 1;
                 let exact_mid = rc[0].is_zero();
-                stack.push(Task::Piece(rc, m.clone(), b));
                 if exact_mid {
-                    stack.push(Task::Exact(m.clone()));
+                    stack.push(Task::Piece(rc, right.clone(), j + 1));
+                    stack.push(Task::Exact(right, j + 1));
+                } else {
+                    stack.push(Task::Piece(rc, right, j + 1));
                 }
-                stack.push(Task::Piece(lc, a, m));
+                stack.push(Task::Piece(lc, left, j + 1));
             }
         }
     }
     Ok(())
+}
+
+/// `k / 2^j` as a reduced fraction (the power of two cancelled by shifts, no gcd).
+fn dyadic(k: BigInt, j: u64) -> BigRational {
+    let z = k.trailing_zeros().unwrap_or(j).min(j);
+    BigRational::new_raw(k >> z, BigInt::from(1) << (j - z))
+}
+
+/// `c` divided by the largest power of two that divides every coefficient.
+fn without_shared_twos(c: Vec<BigInt>) -> Vec<BigInt> {
+    match c.iter().filter_map(BigInt::trailing_zeros).min() {
+        Some(z) if z > 0 => c.into_iter().map(|x| x >> z).collect(),
+        _ => c,
+    }
 }
 
 /// Bernstein coefficients of the same polynomial on `[a, b]` (`0 ≤ a < b ≤ 1`), by two

@@ -191,3 +191,27 @@ fn cli_bbox_text_json_and_errors() {
     assert_eq!(run(&["bbox", "--weights", "1 -2 1", "1 0, 1 1, 0 1"], None).status.code(), Some(2));
     assert_eq!(run(&["bbox", "0 0, 1"], None).status.code(), Some(2));
 }
+
+/// Roots a thousand binary places from an end of `[0, 1]` and close together (the
+/// subdivision goes a thousand levels down, its pieces held as dyadic integers): the rational
+/// roots `2^−1000` and `3·2^−1000` of `(2^1000·t − 1)(2^1000·t − 3)` come out exactly; the
+/// irrational root `2^−1000.5` of `(2^2001·t² − 1)(2^999·t − 1)` is isolated from `2^−999` by
+/// an interval that holds it, and its float is correctly rounded.
+#[test]
+fn algebraic_roots_near_an_end_of_the_interval_are_isolated_exactly() {
+    let big = |k: usize| BigRational::from_integer(num_bigint::BigInt::from(1) << k);
+    let tiny = rat(1) / big(1000);
+    let p = Poly::new(vec![rat(3), -big(1000) * rat(4), big(2000)]);
+    let roots = RealAlgebraic::roots_in(&p, &rat(0), &rat(1));
+    let found: Vec<Option<BigRational>> = roots.iter().map(|r| r.to_rational().cloned()).collect();
+    assert_eq!(found, [Some(tiny.clone()), Some(tiny.clone() * rat(3))]);
+    let q = Poly::new(vec![rat(1), -big(999), -big(2001), big(3000)]);
+    let roots = RealAlgebraic::roots_in(&q, &rat(0), &rat(1));
+    assert_eq!(roots.len(), 2);
+    assert_eq!(roots[1].to_rational(), Some(&(tiny.clone() * rat(2))));
+    let (lo, hi) = roots[0].interval();
+    let at = |x: &BigRational| x.clone() * x * big(2001) - rat(1);
+    assert!(at(&lo) < rat(0) && at(&hi) > rat(0), "[{lo}, {hi}] does not hold the root");
+    assert!(hi <= tiny * rat(2), "[{lo}, {hi}] is not a thousand levels down");
+    assert_eq!(roots[0].to_f64(), 0.5f64.sqrt() * 2f64.powi(-1000));
+}

@@ -147,6 +147,41 @@ proptest! {
         }
     }
 
+    /// Scaling the plane changes no common point's parameters: the pair scaled by `2^k` for
+    /// `k` = 700, −700, 1500, by `10^400` in x alone, or translated by `2^600` (each beyond the
+    /// range where the `f64` filters take the coordinates as they are, so they scale them, and
+    /// the translation makes the exact route decide) gives the parameters and contact orders
+    /// of the unscaled pair, compared with `==`.
+    #[test]
+    fn intersect_parameters_do_not_depend_on_the_plane_s_scale(a in quadratic(), b in cubic(), which in 0usize..5) {
+        let plain = match intersect_polynomial(&a, &b, Domain::Unit) {
+            Ok(x) => x,
+            Err(e) => { prop_assert!(e.to_string().contains("share a component")); return Ok(()); }
+        };
+        let two = |k: i32| if k >= 0 { rat(1) * BigRational::from_integer(num_bigint::BigInt::from(1) << k) }
+            else { BigRational::new(1.into(), num_bigint::BigInt::from(1) << -k) };
+        let map = |c: &BezierCurve<BigRational>| {
+            let pts = c.points().iter().map(|p| {
+                let (x, y) = (p.coords[0].clone(), p.coords[1].clone());
+                let (x, y) = match which {
+                    0 => (x * two(700), y * two(700)),
+                    1 => (x * two(-700), y * two(-700)),
+                    2 => (x * two(1500), y * two(1500)),
+                    3 => (x * BigRational::from_integer(num_bigint::BigInt::from(10).pow(400)), y),
+                    _ => (x + two(600), y - two(600)),
+                };
+                Point::new(vec![x, y])
+            }).collect();
+            BezierCurve::new(pts).unwrap()
+        };
+        let scaled = intersect_polynomial(&map(&a), &map(&b), Domain::Unit).unwrap();
+        let key = |r: &casteljau::intersect::Intersections| -> Vec<(RealAlgebraic, RealAlgebraic, usize)> {
+            r.intersections.iter().map(|i| (i.s.clone(), i.t.clone(), i.contact_order)).collect()
+        };
+        prop_assert_eq!(key(&plain), key(&scaled));
+        prop_assert_eq!(plain.overlaps.len(), scaled.overlaps.len());
+    }
+
     /// The self-intersection of a cubic is classify's double point (a crunode with both
     /// parameters on [0, 1]), and nothing else.
     #[test]
