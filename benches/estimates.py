@@ -51,14 +51,16 @@ RING_B = "M20 -30 C40 -10 40 10 20 30 C0 10 0 -10 20 -30 Z M20 -8 C24 -4 24 4 20
 def near_cubic(points, bits, seed):
     """`points` scaled by 2^bits, each coordinate moved by a pseudo-random (bits − 8)-bit amount."""
     state = seed
-    out = []
-    for x, y in points:
-        coords = []
-        for v in (x, y):
+
+    def noise():
+        nonlocal state
+        n = 0
+        for _ in range(bits // 64 + 1):
             state = (state * 6364136223846793005 + 1442695040888963407) % 2**64
-            coords.append(v * 2**bits + (state << (bits - 72)) % 2 ** (bits - 8))
-        out.append(f"{coords[0]} {coords[1]}")
-    return ", ".join(out)
+            n = (n << 64) | (state >> 32)
+        return n % 2 ** (bits - 8)
+
+    return ", ".join(f"{x * 2**bits + noise()} {y * 2**bits + noise()}" for x, y in points)
 
 
 # (name, arguments; "{found}" is replaced by the command's own answer without --against)

@@ -36,9 +36,9 @@
 //! | derivative of order `k` | `100·d·n·k·L(β + k·log₂ n)` |
 //! | degree elevation by `r` (`m = n + r`, `g = β + m`) | `d·(m + 1)·(5000 + 12·L(g)² + 15·(n + 1)·L(g)·L(β))` |
 //! | denominator root isolation | `250·n²·L(β + n)` up front, then `n²·L(b)` per split (`b`: current bits) |
-//! | intersection of degrees `n`, `m` (`d = nm`), binary exponents spread over `s ≤ 1000` | `2·10⁴ + (1.5·10⁴ + 9·d^3.6)·L(β)²` |
+//! | intersection of degrees `n`, `m` (`d = nm`), binary exponents spread over `s ≤ 1000` | `2·10⁴ + (1.5·10⁴ + 9·d^3.6)·L(β)^1.5` |
 //! | … beyond (the exact route) | `(3500 + 17·d⁴)·L((n + m)·(β + 4 + s/2))²` |
-//! | writing an irrational parameter of degree `d`, `b`-bit coefficients | `1.3·10⁴ + 1500·(d + 1)^1.5·L(b)^1.6` |
+//! | writing an irrational parameter of degree `d`, `b`-bit coefficients | `1.3·10⁴ + 7800·L(b)^1.6` for `d = 2`, else `1.3·10⁴ + 350·(d + 1)^1.8·L(b)^0.75` |
 //! | a power or product with a `b`-bit result (the expression language) | `2·L(b)^1.6` |
 //!
 //! An arrangement (`shape::Arrangement`) is priced stage by stage from its segments' counts,
@@ -343,8 +343,9 @@ const FILTERED_SPREAD: u64 = 1000;
 ///
 /// - `s ≤ 1000` (the certified `f64` filters and the box solver decide, the plane scaled by a
 ///   power of two when the coordinates lie far from 1):
-///   `2·10⁴ + (1.5·10⁴ + 9·d^3.6)·L²` (cubic pairs: 10-bit coordinates 45 µs measured per
-///   pair, 60 µs estimated; 1000-bit 2.3 ms, 10 ms; degree 7, 300-bit: 0.3 s, 0.27 s);
+///   `2·10⁴ + (1.5·10⁴ + 9·d^3.6)·L^1.5` (cubic pairs: 10-bit coordinates 45 µs measured per
+///   pair, 60 µs estimated; 500-bit 1.3 ms, 0.9 ms; 1000-bit 2.3 ms, 2.6 ms; degree 7: 10-bit
+///   2.5 ms, 11 ms; 60-bit 22 ms, 31 ms; 150-bit 56 ms, 57 ms; 300-bit 165 ms, 123 ms);
 /// - beyond (the resultants' roots isolated and mapped exactly): `(3500 + 17·d⁴)·l²` with
 ///   `l = L((n + m)·(β + 4 + s/2))`, the resultant's coefficients being sums of products of
 ///   `m` coordinates of one curve and `n` of the other (a line with coordinates `±10³⁰⁰` and
@@ -356,7 +357,7 @@ pub(crate) fn intersection(n: usize, m: usize, sizes: Magnitudes) -> f64 {
     let d = (n.max(1) * m.max(1)) as f64;
     let l = limbs(sizes.bits);
     if sizes.spread() <= FILTERED_SPREAD {
-        return 2e4 + (1.5e4 + 9.0 * d.powf(3.6)) * l * l;
+        return 2e4 + (1.5e4 + 9.0 * d.powf(3.6)) * l.powf(1.5);
     }
     let spread = sizes.spread();
     let grown = ((n.max(1) + m.max(1)) as u64).saturating_mul(sizes.bits.saturating_add(4).saturating_add(spread / 2));
@@ -364,15 +365,19 @@ pub(crate) fn intersection(n: usize, m: usize, sizes: Magnitudes) -> f64 {
     (3500.0 + 17.0 * d * d * d * d) * l * l
 }
 
-/// Writing one irrational parameter exactly (`Display`: the canonical isolating interval
-/// and the root's index, or `a + b*sqrt(d)` for a quadratic's root), a root of a degree-`d`
-/// polynomial with `b`-bit coefficients: `1.3·10⁴ + 1500·(d + 1)^1.5·L(b)^1.6` (degree 9,
-/// 21-bit: 35 µs measured, 60 µs estimated; degree 48, 66-bit: 0.96 ms, 1.6 ms; degree 2,
-/// 5-bit: 15 µs, 21 µs; 1066-bit: 0.8–1.0 ms, 0.7 ms; 2000-bit: 1.9–2.4 ms, 2.0 ms; 3000-bit:
-/// 3.7 ms, 3.7 ms).
+/// Writing one irrational parameter exactly, a root of a degree-`d` polynomial with `b`-bit
+/// coefficients (`Display`): for a quadratic's root `a + b*sqrt(d)`, the square factors of
+/// the discriminant taken out, `1.3·10⁴ + 7800·L(b)^1.6` (5-bit: 15 µs measured, 21 µs
+/// estimated; 1066-bit: 0.8–1.0 ms, 0.7 ms; 2000-bit: 1.9–2.4 ms, 2.0 ms; 3000-bit: 3.7 ms,
+/// 3.7 ms); otherwise the canonical isolating interval and the root's index, a few isolations
+/// on cells near the root, `1.3·10⁴ + 350·(d + 1)^1.8·L(b)^0.75` (degree 9, 21-bit: 35 µs,
+/// 35 µs; degree 9, 6000-bit: 0.9 ms, 0.7 ms; degree 48, 66-bit: 0.96 ms, 0.66 ms).
 pub(crate) fn description(d: usize, b: u64) -> f64 {
-    let nf = d as f64 + 1.0;
-    1.3e4 + 1500.0 * nf.powf(1.5) * limbs(b).powf(1.6)
+    let l = limbs(b);
+    if d == 2 {
+        return 1.3e4 + 7800.0 * l.powf(1.6);
+    }
+    1.3e4 + 350.0 * (d as f64 + 1.0).powf(1.8) * l.powf(0.75)
 }
 
 /// The exact bounding box of a degree-`n` (rational) curve with `beta`-bit homogeneous
