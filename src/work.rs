@@ -298,8 +298,8 @@ impl Magnitudes {
     /// The sizes of `points`' homogeneous coordinates `(wx, wy, w)`.
     pub(crate) fn of(points: &[Point<BigRational>]) -> Magnitudes {
         let mut m = Magnitudes { bits: 0, min_exp: i64::MAX, max_exp: i64::MIN };
-        let weight = |p: &Point<BigRational>| p.coords.last().cloned();
-        let same_weights = points.iter().all(|p| weight(p) == points.first().and_then(weight));
+        let first = points.first().and_then(|p| p.coords.last());
+        let same_weights = points.iter().all(|p| p.coords.last() == first);
         for p in points {
             let spread_of = if same_weights { p.coords.len().saturating_sub(1) } else { p.coords.len() };
             for (k, x) in p.coords.iter().enumerate() {

@@ -244,8 +244,9 @@ fn split(c: Vec<BigInt>, out: &mut Vec<Root>, allowance: f64) -> std::result::Re
     Ok(())
 }
 
-/// `k / 2^j` as a reduced fraction (the power of two cancelled by shifts, no gcd).
-fn dyadic(k: BigInt, j: u64) -> BigRational {
+/// `k / 2^j` as a reduced fraction (the power of two cancelled by shifts, no gcd; `0/1` for
+/// `k = 0`).
+pub(crate) fn dyadic(k: BigInt, j: u64) -> BigRational {
     let z = k.trailing_zeros().unwrap_or(j).min(j);
     BigRational::new_raw(k >> z, BigInt::from(1) << (j - z))
 }

@@ -4,10 +4,9 @@
 //! because `Ratio`'s own comparison and construction divide and take gcds, which cost more than
 //! shifts on these sizes.
 
-use crate::num::scalar::rat;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::Zero;
 use std::cmp::Ordering;
 
 /// `(m, k)` with `r = m / 2^k`, when the denominator of `r` is a power of two.
@@ -50,14 +49,8 @@ pub(super) fn dyadic_parts_f64(x: f64) -> (u64, i64) {
     (m, i64::from(e))
 }
 
-/// `m / 2^k` as a reduced ratio, by trailing zeros (no gcd).
-pub(super) fn dyadic(m: BigInt, k: u64) -> BigRational {
-    if m.is_zero() {
-        return rat(0);
-    }
-    let tz = m.trailing_zeros().unwrap_or(0).min(k);
-    BigRational::new_raw(m >> tz, BigInt::one() << (k - tz))
-}
+/// `m / 2^k` as a reduced ratio, by trailing zeros (no gcd): the one root isolation uses.
+pub(super) use crate::poly::roots::dyadic;
 
 /// A finite `f64` as an exact reduced ratio, without a gcd (its denominator is a power of two).
 pub(super) fn exact_f64(f: f64) -> Option<BigRational> {
